@@ -1,0 +1,38 @@
+// The one interface every intersection method implements (manual 3.1). A coarse, run-time choice,
+// so it is virtual; the ray-polygon test inside is not.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+
+#include "rt/geometry/ray.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+struct Hit {
+    double t = 0.0;
+    std::uint32_t polygon = 0;
+};
+
+/// Per-thread counters; summed at the end of a run.
+struct TraceCounters {
+    std::uint64_t rays = 0;
+    std::uint64_t polygon_tests = 0;
+    std::uint64_t hits = 0;
+};
+
+class Accelerator {
+public:
+    virtual ~Accelerator() = default;
+    virtual std::string_view name() const = 0;
+    /// The nearest hit with t strictly inside the interval; equal t goes to the lowest polygon id.
+    virtual std::optional<Hit> closest_hit(const Ray& ray, Interval t,
+                                           TraceCounters& counters) const = 0;
+    /// Whether any polygon is hit with t inside the interval (shadow feelers that stop dead).
+    virtual bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const = 0;
+};
+
+}  // namespace rt

@@ -1,0 +1,73 @@
+// The rendered picture: linear RGB per pixel of the output window, plus what made it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rt/core/rgb.h"
+
+namespace rt {
+
+/// Inclusive window in view-area pixels, row 0 at the top (the .scn output matrix).
+struct FilmWindow {
+    int left = 0;
+    int top = 0;
+    int right = 0;
+    int bottom = 0;
+    int width() const { return right - left + 1; }
+    int height() const { return bottom - top + 1; }
+    friend bool operator==(const FilmWindow&, const FilmWindow&) = default;
+};
+
+/// How linear intensities become 8-bit display values (-m, -c; manual Appendix).
+struct DisplayMapping {
+    double multiplier = 1.0;  ///< -m: display value = intensity * 255 * multiplier
+    bool clip = true;         ///< scale overflowing pixels down to keep their hue; -c turns it off
+};
+
+/// What rendered a film; written into the .gro header and shown by `show --info`.
+struct FilmProvenance {
+    std::string scene;      ///< the scene file as given
+    std::string switches;   ///< the switches, space-separated
+    std::string program;    ///< "rt 0.1.0"
+    std::string created;    ///< UTC time, ISO 8601
+};
+
+class Film {
+public:
+    Film() = default;
+    /// view_width x view_height is the whole view area; only window's pixels are stored.
+    Film(int view_width, int view_height, FilmWindow window);
+
+    int view_width() const { return view_width_; }
+    int view_height() const { return view_height_; }
+    const FilmWindow& window() const { return window_; }
+    int width() const { return window_.width(); }
+    int height() const { return window_.height(); }
+
+    /// x, y in view-area pixels (row 0 at the top), inside the window.
+    Rgb pixel(int x, int y) const;
+    void set_pixel(int x, int y, const Rgb& value);
+
+    /// Rows are finished from the bottom up; rows y >= first_finished_row are done.
+    int first_finished_row() const { return first_finished_row_; }
+    void set_first_finished_row(int y) { first_finished_row_ = y; }
+    bool complete() const { return first_finished_row_ <= window_.top; }
+
+    DisplayMapping mapping;
+    FilmProvenance provenance;
+
+    /// Window pixels, row-major from the window's top row, three floats each.
+    const std::vector<float>& data() const { return data_; }
+    std::vector<float>& data() { return data_; }
+
+private:
+    int view_width_ = 0;
+    int view_height_ = 0;
+    FilmWindow window_;
+    int first_finished_row_ = 0;
+    std::vector<float> data_;
+};
+
+}  // namespace rt
