@@ -1,0 +1,34 @@
+// `rt SCENE [switches]` as a function: load, build, render, write. The program's main() only
+// parses the command line, calls this and turns errors into messages and exit codes.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "rt/app/options.h"
+
+namespace rt {
+
+/// Where the run reports what a user should see; main() points these at stderr.
+struct RunConsole {
+    std::function<void(const std::string&)> warning;  ///< "rt: warning: ..."
+    std::function<void(const std::string&)> note;     ///< informational lines
+    std::function<void(const std::string&)> trace;    ///< -df parse trace, -dc columns
+    std::function<void(int rows_done, int rows_total)> progress;  ///< may be empty
+    std::function<bool()> should_stop;                ///< Ctrl-C; may be empty
+};
+
+enum class RunOutcome { Finished, Interrupted };
+
+/// The scene file a SCENE argument names: SCENE itself if it ends in ".scn", else SCENE.scn if
+/// that exists, else SCENE as given.
+std::filesystem::path resolve_scene_path(const std::string& scene_argument);
+
+/// The default output: the scene's name with ".gro", in the current folder.
+std::filesystem::path default_gro_path(const std::string& scene_argument);
+
+/// Renders as the options say and writes the outputs. Throws rt::Error subclasses.
+RunOutcome run(const Options& options, const RunConsole& console);
+
+}  // namespace rt

@@ -1,0 +1,72 @@
+#include "rt/shading/illumination.h"
+
+#include <cmath>
+
+#include "rt/shading/optics.h"
+#include "rt/shading/shadow_feeler.h"
+
+namespace rt {
+
+namespace {
+
+double cos_power(double cosine, double exponent) {
+    return cosine > 0.0 ? std::pow(cosine, exponent) : 0.0;
+}
+
+// Diffuse and specular reflection of one light on the viewer's side of the polygon.
+Rgb reflected_light(const SurfacePoint& s, const Vec3& view, const Vec3& to_light,
+                    const Rgb& received) {
+    const Attribute& a = *s.attribute;
+    const double lambert = std::fmax(0.0, dot(s.shading_normal, to_light));
+    const Vec3 mirrored = reflect(-to_light, s.shading_normal);
+    const double phong = cos_power(dot(mirrored, view), a.specular_exponent);
+    return received * a.color * (a.diffuse * lambert) + received * (a.specular * phong);
+}
+
+// -T: a light behind a non-opaque polygon shines through it, in a cos^tpow lobe around the
+// refracted continuation of the viewing ray.
+Rgb transmitted_light(const SurfacePoint& s, const Vec3& view, const Vec3& to_light,
+                      const Rgb& received) {
+    const Attribute& a = *s.attribute;
+    const double n_out = a.refraction_index.g;
+    const double n1 = s.front ? 1.0 : n_out;
+    const double n2 = s.front ? n_out : 1.0;
+    const std::optional<Vec3> through = refract(-view, s.shading_normal, n1, n2);
+    if (!through) {
+        return {};
+    }
+    const double lobe = cos_power(dot(normalize(*through), to_light), a.transmit_exponent);
+    return received * a.color * (s.transmission * lobe);
+}
+
+}  // namespace
+
+Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s,
+                       const Vec3& view, TraceCounters& counters) {
+    const Attribute& a = *s.attribute;
+    const ShadingSettings& settings = context.settings;
+    Rgb result = a.color * (a.ambient * settings.ambient_light);
+    if (s.front || settings.both_sides_emit) {
+        result += a.color * a.emission;
+    }
+    for (const PointLight& light : context.lights) {
+        if (light.polygon == s.polygon) {
+            continue;  // an emitter does not light itself
+        }
+        const Vec3 to_light = normalize(light.position - s.position);
+        const bool viewer_side = dot(to_light, s.facing_normal) > 0.0;
+        if (!viewer_side && !(settings.far_side_feelers && s.transmission > 0.0)) {
+            continue;
+        }
+        const Rgb received = feel_light(context.scene, context.accel, settings, s.position,
+                                        light, context.epsilon, counters);
+        if (max_component(received) <= 0.0) {
+            continue;
+        }
+        result += viewer_side ? reflected_light(s, view, to_light, received)
+                              : transmitted_light(s, view, to_light, received);
+    }
+    return result;
+}
+
+}  // namespace rt

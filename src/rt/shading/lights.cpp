@@ -1,0 +1,41 @@
+#include "rt/shading/lights.h"
+
+namespace rt {
+
+namespace {
+
+Vec3 polygon_centre(const Scene& scene, const Polygon& p) {
+    Vec3 sum;
+    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+        sum += scene.corner_position(p, k);
+    }
+    return sum / static_cast<double>(p.corner_count);
+}
+
+}  // namespace
+
+std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick) {
+    std::vector<PointLight> lights;
+    if (lghtick != 1 && lghtick != 2) {
+        return lights;
+    }
+    for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
+        const Polygon& p = scene.polygons[id];
+        const Attribute& a = scene.attribute_of(p);
+        if (!a.is_emissive()) {
+            continue;
+        }
+        const Rgb total = a.color * a.emission;
+        if (lghtick == 2) {
+            lights.push_back({polygon_centre(scene, p), total, id});
+            continue;
+        }
+        const Rgb share = total * (1.0 / static_cast<double>(p.corner_count));
+        for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+            lights.push_back({scene.corner_position(p, k), share, id});
+        }
+    }
+    return lights;
+}
+
+}  // namespace rt
