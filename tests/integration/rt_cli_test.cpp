@@ -1,0 +1,113 @@
+// The rt program as a user meets it: arguments, messages, exit codes, the files it writes.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "support/run_program.h"
+#include "support/temp_dir.h"
+
+namespace rt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A copy of the shipped scenes in a temporary folder, so tests can write beside them.
+class RtProgram : public ::testing::Test {
+protected:
+    void SetUp() override {
+        fs::copy(source_dir() / "scenes", dir_.path() / "scenes", fs::copy_options::recursive);
+    }
+    ProgramResult rt(const std::vector<std::string>& args) {
+        return run_program("rt", args, dir_.path());
+    }
+    fs::path at(const std::string& name) const { return dir_.path() / name; }
+    // A small window of twocubes, so that the tests stay quick.
+    void write_small_scene(const std::string& name, const std::string& window) {
+        std::string scene = read_text(at("scenes/twocubes.scn"));
+        const std::string whole = "$ 0 0 511 399";
+        scene.replace(scene.find(whole), whole.size(), "$ " + window);
+        dir_.write("scenes/" + name, scene);
+    }
+
+    TempDir dir_;
+};
+
+TEST_F(RtProgram, NoArgumentsPrintsTheSwitches) {
+    const ProgramResult r = rt({});
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("-Dd"), std::string::npos);
+    EXPECT_NE(r.out.find("-Stg"), std::string::npos);
+}
+
+TEST_F(RtProgram, HelpAndVersion) {
+    const ProgramResult help = rt({"--help"});
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.out.find("--output"), std::string::npos);
+    const ProgramResult version = rt({"--version"});
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_NE(version.out.find("rt "), std::string::npos);
+}
+
+TEST_F(RtProgram, UnknownSwitchIsAUsageError) {
+    const ProgramResult r = rt({"scenes/twocubes", "-Q"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("-Q"), std::string::npos);
+}
+
+TEST_F(RtProgram, SwitchNotDoneYetFailsClearly) {
+    const ProgramResult r = rt({"scenes/twocubes", "-Sg"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("not implemented yet"), std::string::npos);
+    EXPECT_FALSE(fs::exists(at("twocubes.gro")));
+}
+
+TEST_F(RtProgram, MissingSceneNamesTheFile) {
+    const ProgramResult r = rt({"scenes/nothere"});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("nothere"), std::string::npos);
+}
+
+TEST_F(RtProgram, WritesGroInTheCurrentFolderWithOrWithoutScn) {
+    write_small_scene("small.scn", "200 300 209 309");
+    EXPECT_EQ(rt({"scenes/small"}).exit_code, 0);
+    EXPECT_TRUE(fs::exists(at("small.gro")));
+    fs::remove(at("small.gro"));
+    EXPECT_EQ(rt({"scenes/small.scn"}).exit_code, 0);
+    EXPECT_TRUE(fs::exists(at("small.gro")));
+}
+
+TEST_F(RtProgram, NoGroWithDashNButOtherOutputsStill) {
+    write_small_scene("small.scn", "200 300 209 309");
+    const ProgramResult r = rt({"scenes/small", "-n", "--output", "a.png", "--output", "b.ppm"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_FALSE(fs::exists(at("small.gro")));
+    EXPECT_TRUE(fs::exists(at("a.png")));
+    EXPECT_TRUE(fs::exists(at("b.ppm")));
+}
+
+TEST_F(RtProgram, UnknownOutputFormatIsRefusedBeforeRendering) {
+    write_small_scene("small.scn", "200 300 209 309");
+    const ProgramResult r = rt({"scenes/small", "--output", "a.jpg"});
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(".jpg"), std::string::npos);
+}
+
+TEST_F(RtProgram, BadSceneLeavesAnExistingOutputAlone) {
+    dir_.write("broken.gro", "precious");
+    dir_.write("broken.scn", "$ 0 2 0 0 3 .5 2 1\n$ 1 2 x\n");
+    const ProgramResult r = rt({"broken"});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("broken.scn:2:"), std::string::npos) << r.err;
+    EXPECT_EQ(read_text(at("broken.gro")), "precious");
+}
+
+TEST_F(RtProgram, ParseTraceWithDf) {
+    write_small_scene("small.scn", "200 300 201 301");
+    const ProgramResult r = rt({"scenes/small", "-n", "-df"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("small.scn:"), std::string::npos);
+    EXPECT_NE(r.err.find("cube:"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rt::test

@@ -1,0 +1,41 @@
+#include "support/run_program.h"
+
+#include <cstdlib>
+#include <sys/wait.h>
+
+#include "support/temp_dir.h"
+
+namespace rt::test {
+
+namespace {
+
+std::string shell_quote(const std::string& word) {
+    std::string quoted = "'";
+    for (char c : word) {
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return quoted + "'";
+}
+
+}  // namespace
+
+ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
+                          const std::filesystem::path& cwd) {
+    const TempDir capture;
+    std::string command = "cd " + shell_quote(cwd.string()) + " && " +
+                          shell_quote((bin_dir() / program).string());
+    for (const std::string& a : args) {
+        command += " " + shell_quote(a);
+    }
+    const std::filesystem::path out = capture.path() / "out";
+    const std::filesystem::path err = capture.path() / "err";
+    command += " </dev/null >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+    const int status = std::system(command.c_str());  // NOLINT(concurrency-mt-unsafe)
+    ProgramResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_text(out);
+    result.err = read_text(err);
+    return result;
+}
+
+}  // namespace rt::test

@@ -1,0 +1,20 @@
+// Runs one of the built programs as a user would, capturing its exit status and output.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rt::test {
+
+struct ProgramResult {
+    int exit_code = -1;
+    std::string out;  ///< standard output
+    std::string err;  ///< standard error
+};
+
+/// Runs bin_dir()/program with args in the folder cwd (stdin from /dev/null).
+ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
+                          const std::filesystem::path& cwd);
+
+}  // namespace rt::test
