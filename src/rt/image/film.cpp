@@ -1,6 +1,9 @@
 #include "rt/image/film.h"
 
 #include <cstddef>
+#include <string>
+
+#include "rt/core/error.h"
 
 namespace rt {
 
@@ -9,9 +12,9 @@ Film::Film(int view_width, int view_height, FilmWindow window)
       view_height_(view_height),
       window_(window),
       first_finished_row_(window.bottom + 1),
-      data_(static_cast<std::size_t>(window.width()) * static_cast<std::size_t>(window.height()) *
-                3,
-            0.0F) {}
+      data_(
+          static_cast<std::size_t>(window.width()) * static_cast<std::size_t>(window.height()) * 3,
+          0.0F) {}
 
 namespace {
 std::size_t offset_of(const FilmWindow& w, int x, int y) {
@@ -31,6 +34,18 @@ void Film::set_pixel(int x, int y, const Rgb& value) {
     data_[i] = static_cast<float>(value.r);
     data_[i + 1] = static_cast<float>(value.g);
     data_[i + 2] = static_cast<float>(value.b);
+}
+
+void Film::check_consistent() const {
+    if (window_.width() <= 0 || window_.height() <= 0) {
+        throw Error("the film's window is empty");
+    }
+    const std::size_t expected =
+        static_cast<std::size_t>(window_.width()) * static_cast<std::size_t>(window_.height()) * 3;
+    if (data_.size() != expected) {
+        throw Error("the film holds " + std::to_string(data_.size()) +
+                    " values, but its window needs " + std::to_string(expected));
+    }
 }
 
 }  // namespace rt

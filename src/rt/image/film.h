@@ -28,10 +28,10 @@ struct DisplayMapping {
 
 /// What rendered a film; written into the .gro header and shown by `show --info`.
 struct FilmProvenance {
-    std::string scene;      ///< the scene file as given
-    std::string switches;   ///< the switches, space-separated
-    std::string program;    ///< "rt 0.1.0"
-    std::string created;    ///< UTC time, ISO 8601
+    std::string scene;     ///< the scene file as given
+    std::string switches;  ///< the switches, space-separated
+    std::string program;   ///< "rt 0.1.0"
+    std::string created;   ///< UTC time, ISO 8601
 };
 
 class Film {
@@ -57,6 +57,10 @@ public:
 
     DisplayMapping mapping;
     FilmProvenance provenance;
+
+    /// Throws rt::Error unless the window is non-empty and data() holds exactly its pixels; writers
+    /// call it so a program bug never becomes a broken file.
+    void check_consistent() const;
 
     /// Window pixels, row-major from the window's top row, three floats each.
     const std::vector<float>& data() const { return data_; }

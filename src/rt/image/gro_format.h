@@ -1,0 +1,27 @@
+// The .gro picture file `rt` writes and `show` reads (manual 1.2). The manual never gives its
+// layout, so this one is ours: a text header, then the window's pixels as little-endian float32
+// RGB. docs/gro.md describes it in full.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "rt/image/film.h"
+
+namespace rt {
+
+/// The first line of every .gro file; the number is the format version.
+inline constexpr std::string_view kGroMagic = "GRO rt 1";
+/// The only pixel encoding so far: linear RGB intensities, IEEE float32, little-endian.
+inline constexpr std::string_view kGroPixelEncoding = "rgb-float32-le";
+
+/// Writes film (every window pixel, finished or not, plus its header) to path, atomically: an
+/// existing file is replaced only by a complete one. Throws rt::Error if the film cannot be
+/// represented (window outside the view, a non-finite pixel, ...) and rt::IoError on I/O failure.
+void write_gro(const Film& film, const std::filesystem::path& path);
+
+/// Reads a .gro file, validating it strictly. Throws rt::InputError ("file:line: expected ...,
+/// found ...") for a malformed file and rt::IoError if it cannot be read.
+Film read_gro(const std::filesystem::path& path);
+
+}  // namespace rt
