@@ -111,7 +111,7 @@ void check_pixel_bytes(const GroHeader& h, std::uint64_t file_size, const std::s
     if (found > expected) {
         throw expected_found(
             after_end, fmt::format("the end of the file after {} bytes of pixel data", expected),
-            fmt::format("{} more bytes", found - expected));
+            fmt::format("{} more byte{}", found - expected, found - expected == 1 ? "" : "s"));
     }
 }
 

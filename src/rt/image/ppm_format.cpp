@@ -57,6 +57,7 @@ public:
                 c == std::char_traits<char>::eof() ? "the end of the file" : "binary data");
         }
         ++bytes_;
+        line_ += c == '\n' ? 1 : 0;
     }
 
     SourceLocation location() const { return {file_, line_, 0}; }

@@ -1,0 +1,128 @@
+// The show program end to end: exit codes, messages and files (skipped until show is built).
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "rt/image/display_mapping.h"
+#include "rt/image/gro_format.h"
+#include "rt/image/png_format.h"
+#include "rt/image/ppm_format.h"
+
+#include <gtest/gtest.h>
+
+#include "support/temp_dir.h"
+#include <sys/wait.h>
+
+namespace rt {
+namespace {
+
+struct Outcome {
+    int code = -1;
+    std::string out;
+    std::string err;
+};
+
+class ShowProgram : public testing::Test {
+protected:
+    void SetUp() override {
+        show_ = test::bin_dir() / "show";
+        if (!std::filesystem::exists(show_)) {
+            GTEST_SKIP() << "show is not built: " << show_;
+        }
+        Film film(5, 4, FilmWindow{0, 0, 4, 3});
+        for (int y = 0; y <= 3; ++y) {
+            for (int x = 0; x <= 4; ++x) {
+                film.set_pixel(x, y, Rgb{0.2 * x, 0.1 * y, 0.5});
+            }
+        }
+        film.set_first_finished_row(1);
+        film.provenance = {"twocubes", "-Dd -m2", "rt 0.1.0", "2024-01-02T03:04:05Z"};
+        film.mapping.multiplier = 2.0;
+        write_gro(film, dir_.path() / "pic.gro");
+        film_ = film;
+    }
+
+    // Runs show in the temp folder with args (already quoted where needed).
+    Outcome run(const std::string& args) const {
+        const std::filesystem::path out = dir_.path() / "stdout.txt";
+        const std::filesystem::path err = dir_.path() / "stderr.txt";
+        const std::string command = "cd '" + dir_.path().string() + "' && '" + show_.string() +
+                                    "' " + args + " >'" + out.string() + "' 2>'" + err.string() +
+                                    "'";
+        const int status = std::system(command.c_str());  // NOLINT(concurrency-mt-unsafe)
+        Outcome o;
+        o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        o.out = test::read_text(out);
+        o.err = test::read_text(err);
+        return o;
+    }
+
+    test::TempDir dir_;
+    std::filesystem::path show_;
+    Film film_;
+};
+
+TEST_F(ShowProgram, InfoDescribesThePicture) {
+    const Outcome o = run("pic --info");
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.out.find("5 x 4 pixels"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("0 0 4 3"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("3 of 4 finished"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("multiplier 2, clipping on"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("twocubes"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("-Dd -m2"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("rt 0.1.0"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("2024-01-02T03:04:05Z"), std::string::npos) << o.out;
+}
+
+TEST_F(ShowProgram, OutputConvertsWithTheStoredMapping) {
+    const Outcome o = run("pic.gro --output a.png --output b.ppm");
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(read_png(dir_.path() / "a.png"), to_display(film_));
+    EXPECT_EQ(read_ppm(dir_.path() / "b.ppm"), to_display(film_));
+}
+
+TEST_F(ShowProgram, MultiplierAndClipOverrideTheStoredMapping) {
+    const Outcome o = run("pic -m4 -c --output a.png");
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(read_png(dir_.path() / "a.png"), to_display(film_, DisplayMapping{4.0, false}));
+    const Outcome separate = run("pic -m 0.5 --output b.png");
+    EXPECT_EQ(separate.code, 0) << separate.err;
+    EXPECT_EQ(read_png(dir_.path() / "b.png"), to_display(film_, DisplayMapping{0.5, true}));
+}
+
+TEST_F(ShowProgram, WithoutOutputOrInfoExplainsThatThereIsNoWindowYet) {
+    const Outcome o = run("pic");
+    EXPECT_EQ(o.code, 2);
+    EXPECT_EQ(o.err,
+              "show: displaying in a window is not implemented yet; use --output NAME.png or "
+              "--info\n");
+}
+
+TEST_F(ShowProgram, NoArgumentsOrHelpPrintUsage) {
+    for (const char* args : {"", "--help"}) {
+        const Outcome o = run(args);
+        EXPECT_EQ(o.code, 0) << args;
+        EXPECT_EQ(o.out.rfind("usage: show NAME", 0), 0U) << o.out;
+    }
+}
+
+TEST_F(ShowProgram, ErrorsMapToExitCodes) {
+    EXPECT_EQ(run("missing --info").code, 3);
+    dir_.write("bad.gro", "GRO rt 9\n");
+    const Outcome bad = run("bad --info");
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_EQ(bad.err, "show: bad.gro:1: expected .gro format version 1, found version '9'\n");
+    const Outcome jpg = run("pic --output x.jpg");
+    EXPECT_EQ(jpg.code, 2);
+    EXPECT_EQ(jpg.err.rfind("show: cannot write 'x.jpg': unknown image format '.jpg'", 0), 0U)
+        << jpg.err;
+    EXPECT_FALSE(std::filesystem::exists(dir_.path() / "x.jpg"));
+    EXPECT_EQ(run("pic --bogus").code, 2);
+    EXPECT_EQ(run("pic -mx --info").code, 2);
+    EXPECT_EQ(run("pic other --info").code, 2);
+    EXPECT_EQ(run("pic --output").code, 2);
+}
+
+}  // namespace
+}  // namespace rt
