@@ -45,10 +45,13 @@ std::optional<std::int64_t> parse_integer(std::string_view text) {
 
 std::string quote_token(std::string_view token) {
     constexpr std::size_t kMaxShown = 40;
+    std::string quoted(1, '\'');
+    quoted.append(token.substr(0, kMaxShown));
     if (token.size() > kMaxShown) {
-        return "'" + std::string(token.substr(0, kMaxShown)) + "...'";
+        quoted.append("...");
     }
-    return "'" + std::string(token) + "'";
+    quoted.push_back('\'');
+    return quoted;
 }
 
 }  // namespace rt
