@@ -7,14 +7,14 @@
 namespace rt {
 
 struct Attribute {
-    Rgb color;                        ///< red, green, blue intensities, 0..1
-    double specular_exponent = 2.0;   ///< "pow": cos^n law for specular reflection
-    double transmit_exponent = 2.0;   ///< "tpow": cos^n law for specular refraction
-    double emission = 0.0;            ///< weights: emitted,
-    double ambient = 0.0;             ///<   ambient,
-    double diffuse = 0.0;             ///<   diffusely reflected,
-    double specular = 0.0;            ///<   specularly reflected,
-    double transmission = 0.0;        ///<   transmitted
+    Rgb color;                            ///< red, green, blue intensities, 0..1
+    double specular_exponent = 2.0;       ///< "pow": cos^n law for specular reflection
+    double transmit_exponent = 2.0;       ///< "tpow": cos^n law for specular refraction
+    double emission = 0.0;                ///< weights: emitted,
+    double ambient = 0.0;                 ///<   ambient,
+    double diffuse = 0.0;                 ///<   diffusely reflected,
+    double specular = 0.0;                ///<   specularly reflected,
+    double transmission = 0.0;            ///<   transmitted
     Rgb refraction_index{1.0, 1.0, 1.0};  ///< one index repeated, or three with -R
     double reflect_cone_degrees = 0.0;    ///< distributed reflection: cone angle theta
     double reflect_cone_exponent = 0.0;   ///<   and its cos^n exponent

@@ -15,14 +15,14 @@ namespace rt {
 
 /// The first $ line of a .scn file (manual 2.2).
 struct SceneHeader {
-    int center = 0;            ///< 1: auto-centre the look point on the objects
-    int lghtick = 0;           ///< shadow feelers: 0 none, 1 emitter vertices, 2 emitter centres
-    int sptncde = 0;           ///< 0 brute force, 1 octree, N>1 SEADS with N voxels a side
-    int octr = 0;              ///< octree depth (with sptncde 1)
-    int graphmode = 0;         ///< unused (was the output device)
-    double normallength = 0.0; ///< length of the wireframe's normals
-    int maxdepth = 1;          ///< maximum depth of the ray tree
-    double maxdist = 0.0;      ///< depth down to which rays are distributed
+    int center = 0;             ///< 1: auto-centre the look point on the objects
+    int lghtick = 0;            ///< shadow feelers: 0 none, 1 emitter vertices, 2 emitter centres
+    int sptncde = 0;            ///< 0 brute force, 1 octree, N>1 SEADS with N voxels a side
+    int octr = 0;               ///< octree depth (with sptncde 1)
+    int graphmode = 0;          ///< unused (was the output device)
+    double normallength = 0.0;  ///< length of the wireframe's normals
+    int maxdepth = 1;           ///< maximum depth of the ray tree
+    double maxdist = 0.0;       ///< depth down to which rays are distributed
 };
 
 /// Inclusive pixel window of the view area to render: left, top, right, bottom; row 0 at the top.
@@ -44,7 +44,7 @@ struct SceneView {
     double view_angle_y_degrees = 30.0;  ///< full angle subtended vertically
     int sample_resolution_x = 1;         ///< at most x*y samples per pixel
     int sample_resolution_y = 1;
-    int width = 0;   ///< view area in pixels
+    int width = 0;  ///< view area in pixels
     int height = 0;
     PixelWindow window;  ///< the output matrix
 };
@@ -60,22 +60,22 @@ enum class PolygonMark : std::uint8_t {
 
 /// A shape of the shape file (manual 2.4): seven numbers whose meaning the polygon's mark picks.
 struct Shape {
-    Vec3 first;       ///< sphere centre, a point on a cylinder's axis, a cone's apex
+    Vec3 first;                    ///< sphere centre, a point on a cylinder's axis, a cone's apex
     double radius_or_angle = 0.0;  ///< radius, or the cone's half-angle at the apex in degrees
-    Vec3 second;      ///< another point on the axis (ignored for spheres)
-    long index = 0;   ///< the number polygons use to refer to it
+    Vec3 second;                   ///< another point on the axis (ignored for spheres)
+    long index = 0;                ///< the number polygons use to refer to it
     SourceLocation where;
 };
 
 struct Polygon {
-    std::uint32_t first_corner = 0;   ///< into Scene::corners
-    std::uint32_t corner_count = 0;   ///< at least 3
-    Vec3 normal;                      ///< unit geometric normal, pointing outward
-    std::uint32_t attribute = 0;      ///< into Scene::attributes
-    std::uint32_t surface = 0;        ///< into Scene::surfaces
+    std::uint32_t first_corner = 0;  ///< into Scene::corners
+    std::uint32_t corner_count = 0;  ///< at least 3
+    Vec3 normal;                     ///< unit geometric normal, pointing outward
+    std::uint32_t attribute = 0;     ///< into Scene::attributes
+    std::uint32_t surface = 0;       ///< into Scene::surfaces
     PolygonMark mark = PolygonMark::Ordinary;
-    std::int32_t shape = -1;          ///< into Scene::shapes, or -1
-    bool smooth = false;              ///< interpolate vertex normals (smooth-shade field or mark 1)
+    std::int32_t shape = -1;  ///< into Scene::shapes, or -1
+    bool smooth = false;      ///< interpolate vertex normals (smooth-shade field or mark 1)
 };
 
 /// Where a polygon came from, so that every later complaint can name a line.
@@ -86,9 +86,9 @@ struct SourceRef {
 
 /// One optical surface of an entity as the .scn names it.
 struct OpticalSurface {
-    std::string file;        ///< as written in the .scn
-    int entity = 0;          ///< 1-based entity number
-    int filetype = 0;        ///< 0, 1 (Phigs+) or 2 (Prinz polygonizer)
+    std::string file;  ///< as written in the .scn
+    int entity = 0;    ///< 1-based entity number
+    int filetype = 0;  ///< 0, 1 (Phigs+) or 2 (Prinz polygonizer)
     bool smooth_shaded = false;
     long attribute_number = 0;
     SourceLocation where;
@@ -101,9 +101,9 @@ struct Scene {
     std::vector<Attribute> attributes;
     std::vector<Shape> shapes;
     std::vector<OpticalSurface> surfaces;
-    std::vector<Vec3> positions;            ///< world-space vertices, shared by neighbours
-    std::vector<Vec3> vertex_normals;       ///< per position: averaged over its smooth polygons
-    std::vector<std::uint32_t> corners;     ///< polygon corners in loop order, into positions
+    std::vector<Vec3> positions;         ///< world-space vertices, shared by neighbours
+    std::vector<Vec3> vertex_normals;    ///< per position: averaged over its smooth polygons
+    std::vector<std::uint32_t> corners;  ///< polygon corners in loop order, into positions
     std::vector<Polygon> polygons;
     std::vector<SourceRef> polygon_origin;  ///< per polygon
     std::vector<std::string> source_files;  ///< files read, for SourceRef

@@ -1,0 +1,24 @@
+// Sane limits every scene reader checks before it trusts a count or allocates (docs/formats.md).
+#pragma once
+
+#include <cstdint>
+
+namespace rt {
+
+/// Input files larger than this are refused before they are read.
+inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{1} << 30;
+/// Vertices, edges, polygons, attributes or shapes in one file.
+inline constexpr std::int64_t kMaxItemsPerFile = 50'000'000;
+/// Edges of one filetype-0 polygon, corners of one Phigs+ fill area.
+inline constexpr std::int64_t kMaxEdgesPerPolygon = 100'000;
+inline constexpr std::int64_t kMaxEntities = 1'000'000;
+inline constexpr std::int64_t kMaxSurfacesPerEntity = 1'000'000;
+/// Each side of the view area, in pixels.
+inline constexpr int kMaxViewSide = 16384;
+inline constexpr int kMaxSampleResolution = 64;
+inline constexpr int kMaxRayDepth = 64;
+/// SEADS voxels a side (header sptncde) and octree depth (header octr).
+inline constexpr int kMaxSeadsVoxels = 1024;
+inline constexpr int kMaxOctreeDepth = 20;
+
+}  // namespace rt

@@ -1,0 +1,38 @@
+// An optical surface file as read, before placement: what the three filetypes (manual 2.5) have
+// in common. Object-space coordinates; polygons are loops of vertex indices.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "rt/core/vec3.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+struct MeshPolygon {
+    std::uint32_t first_corner = 0;  ///< into SurfaceMesh::corners
+    std::uint32_t corner_count = 0;
+    Vec3 outward;               ///< the file's outward direction; zero: the loop's own
+    long attribute_offset = 0;  ///< added to the surface's attribute number
+    PolygonMark mark = PolygonMark::Ordinary;
+    long shape_number = -1;  ///< with marks 2, 3, 4: the shape's place in the shape file
+    long number = 0;         ///< as messages name it (the file's index, or the order)
+    int line = 0;            ///< where it is defined
+};
+
+struct SurfaceMesh {
+    std::vector<Vec3> vertices;
+    std::vector<std::uint32_t> corners;  ///< into vertices, loop order
+    std::vector<MeshPolygon> polygons;
+
+    /// Appends a polygon whose corners are the given vertex indices.
+    void add_polygon(MeshPolygon polygon, const std::vector<std::uint32_t>& loop) {
+        polygon.first_corner = static_cast<std::uint32_t>(corners.size());
+        polygon.corner_count = static_cast<std::uint32_t>(loop.size());
+        corners.insert(corners.end(), loop.begin(), loop.end());
+        polygons.push_back(polygon);
+    }
+};
+
+}  // namespace rt
