@@ -1,0 +1,489 @@
+// The rows of the switch table, in the order of the manual's Appendix. Summaries are the manual's
+// own one-line descriptions; details shorten the Appendix's explanation. Turning a switch on in a
+// later release is one word: Status::NotYet becomes Status::Implemented.
+#include "rt/app/switch_table.h"
+
+#include <array>
+#include <charconv>
+#include <numbers>
+
+namespace rt {
+
+namespace {
+
+using A = const SwitchArgument&;
+using enum ArgForm;
+using enum Topic;
+using enum Status;
+
+constexpr Range kPositive{0.0, 0.0, true, false, false};
+constexpr Range kNonNegative{0.0, 0.0, false, false, false};
+constexpr Range kProbability{0.0, 1.0, true, true, true};
+constexpr Range kAngle{0.0, std::numbers::pi, true, false, true};
+
+constexpr Range whole(int low, int high) {
+    return {static_cast<double>(low), static_cast<double>(high), false, false, true};
+}
+
+// Shared wording of the features this release does not have yet.
+constexpr std::string_view kSpatialEncoding = "spatial encoding (octrees and SEADS)";
+constexpr std::string_view kWireframe = "the wireframe display";
+constexpr std::string_view kAdaptive = "adaptive supersampling";
+constexpr std::string_view kStrike = "the ddda strike check";
+constexpr std::string_view kOctreeDebug = "octree debugging";
+
+// Each row names only the fields it needs; the rest keep SwitchSpec's defaults on purpose, which
+// GCC 12 would otherwise flag row by row.
+// A table reads best one compact row per switch.
+// clang-format off
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+constexpr auto kSwitches = std::to_array<SwitchSpec>({
+    {.spelling = "-n", .apply = [](Options& o, A) { o.no_gro = true; }, .summary = "No output file",
+     .details = "Disables the production of a .gro file; --output files are still written.",
+     .section = "App.", .example = "-n"},
+    {.spelling = "-w", .apply = [](Options& o, A) { o.wireframe_only = true; },
+     .summary = "Wireframe only, no raytracing",
+     .details = "Probably used only in front-end user interfaces.", .section = "App.",
+     .example = "-w", .status = NotYet, .feature = kWireframe},
+    {.spelling = "-m", .form = Number, .first = {"the multiplier", kPositive},
+     .apply = [](Options& o, A a) { o.display_multiplier = a.first; },
+     .summary = "Multiplies screen display values by 2.",
+     .details = "Compensates a picture that is too dark or too bright; an RGB value over 255 "
+                "scales the pixel down proportionally unless -c is given.", .section = "App.",
+     .example = "-m2.0"},
+    {.spelling = "-tv", .form = Integer, .topic = SpatialEncoding,
+     .first = {"N", whole(1, 1000000)},
+     .apply = [](Options& o, A a) { o.terminate_after_voxels = static_cast<int>(a.integer); },
+     .summary = "Terminate rays after N fruitless voxel hits",
+     .details = "Mainly useful to the hardware designers, and for large octree spatial "
+                "subdivisions.", .section = "3.1", .example = "-tv8", .status = NotYet,
+     .feature = kSpatialEncoding},
+    {.spelling = "-c", .apply = [](Options& o, A) { o.clip_intensity = false; },
+     .summary = "Toggle intensity clipping. Currently on by default.",
+     .details = "Turns clipping off: an intensity over 255 is displayed anyway, which can give "
+                "very strange colors.", .section = "App.", .example = "-c"},
+    {.spelling = "-od", .form = Integer, .topic = SpatialEncoding,
+     .first = {"the depth", whole(0, 20)},
+     .apply = [](Options& o, A a) { o.octree_depth = static_cast<int>(a.integer); },
+     .summary = "Specify octree depth (overrides scene file)",
+     .details = "For studying the effects of different octree depths.", .section = "App.",
+     .example = "-od5", .status = NotYet, .feature = kSpatialEncoding},
+    {.spelling = "-oo", .topic = SpatialEncoding,
+     .apply = [](Options& o, A) { o.draw_octree = true; },
+     .summary = "Draw (output) octree boxes on the wireframe",
+     .details = "To see what the octree building machinery is doing.", .section = "App.",
+     .example = "-oo", .status = NotYet, .feature = kWireframe},
+    {.spelling = "-ol", .form = Integer, .topic = SpatialEncoding,
+     .first = {"the power of 2", whole(1, 30)},
+     .apply = [](Options& o, A a) { o.octlist_power = static_cast<int>(a.integer); },
+     .summary = "Specify the length of the octlist, as a power of 2",
+     .details = "A larger octree storage area for large depths, or a smaller one where allocation "
+                "is expensive.", .section = "App.", .example = "-ol16", .status = NotYet,
+     .feature = kSpatialEncoding},
+    {.spelling = "-on", .topic = SpatialEncoding,
+     .apply = [](Options& o, A) { o.accept_near_hits = true; },
+     .summary = "Don't verify near hits (just accept them)",
+     .details = "By default near hits are ignored; see part three.", .section = "3.1",
+     .example = "-on", .status = NotYet, .feature = kSpatialEncoding},
+    {.spelling = "-of", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.no_fudge = true; },
+     .summary = "Don't fudge (ddda is precise enough)",
+     .details = "This should be calculated automatically, but isn't.", .section = "App.",
+     .example = "-of", .status = NotYet, .feature = kSpatialEncoding},
+    {.spelling = "-op", .topic = SpatialEncoding,
+     .apply = [](Options& o, A) { o.new_fillplane = true; },
+     .summary = "Use new fillplane routines.",
+     .details = "Octree building in order n^2 instead of n^3 (n is octree levels).",
+     .section = "App.", .example = "-op", .status = NotYet, .feature = kSpatialEncoding},
+    {.spelling = "-ss", .form = Integer, .topic = SpatialEncoding,
+     .first = {"the power of 2", whole(0, 30)},
+     .apply = [](Options& o, A a) { o.seed_size_power = static_cast<int>(a.integer); },
+     .summary = "Specify the seeds size as a power of 2",
+     .details = "The scene file specifies this as the actual number.", .section = "App.",
+     .example = "-ss10", .status = NotYet, .feature = kSpatialEncoding},
+    {.spelling = "-p", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.profile = true; },
+     .summary = "Profile ddda operation.",
+     .details = "Prints various internal metrics at the end of the run; useful with -r.",
+     .section = "App.", .example = "-p", .status = NotYet, .feature = "profiling the ddda"},
+    {.spelling = "-r", .topic = SpatialEncoding,
+     .apply = [](Options& o, A) { o.random_rays = true; }, .summary = "Fire random rays.",
+     .details = "Produces no .gro file; only useful with -p or in debugging.", .section = "App.",
+     .example = "-r", .status = NotYet, .feature = "firing random rays"},
+    {.spelling = "-Sp", .group = Exclusive::SpecularModel, .topic = Specular,
+     .apply = [](Options& o, A) { o.specular = SpecularModel::Phong; }, .summary = "Phong",
+     .details = "The default specular reflection model.", .section = "App.", .example = "-Sp"},
+    {.spelling = "-Sg", .group = Exclusive::SpecularModel, .topic = Specular,
+     .apply = [](Options& o, A) { o.specular = SpecularModel::PhongGeometric; },
+     .summary = "Phong with geometric attenuation factor", .section = "App.", .example = "-Sg",
+     .status = NotYet, .feature = "Phong with geometric attenuation"},
+    {.spelling = "-Stg", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
+     .first = {"m", kPositive},
+     .apply = [](Options& o, A a) {
+         o.specular = SpecularModel::TorranceSparrowGaussian;
+         o.microfacet_slope = a.first;
+     },
+     .summary = "Torrance-Sparrow with Gaussian dist.; the # is m",
+     .details = "m is the root mean square slope of the microfacets.", .section = "App.",
+     .example = "-Stg1.0", .status = NotYet,
+     .feature = "Torrance-Sparrow with Gaussian distribution"},
+    {.spelling = "-Stb", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
+     .first = {"m", kPositive},
+     .apply = [](Options& o, A a) {
+         o.specular = SpecularModel::TorranceSparrowBeckmann;
+         o.microfacet_slope = a.first;
+     },
+     .summary = "Torrance-Sparrow with Beckmann dist.; the # is m",
+     .details = "m is the root mean square slope of the microfacets.", .section = "App.",
+     .example = "-Stb1.0", .status = NotYet,
+     .feature = "Torrance-Sparrow with Beckmann distribution"},
+    {.spelling = "-R", .topic = FileFormat,
+     .apply = [](Options& o, A) { o.dialect.rgb_refraction = true; },
+     .summary = "Each attribute in .scn file has 3 (RGB) indices of refraction",
+     .details = "Then ALL attributes must have three indices of refraction.", .section = "2.3",
+     .example = "-R"},
+    {.spelling = "-Wr", .group = Exclusive::WarnLight, .topic = Lights,
+     .apply = [](Options& o, A) { o.warn = WarnLight::Rogers; }, .summary = "Warn lights: Rogers",
+     .details = "With shadow feeling, the feeler's intensity is attenuated by pow(cos(x), N), x "
+                "the angle to the emissive polygon's normal.", .section = "App.", .example = "-Wr",
+     .status = NotYet, .feature = "the Rogers Warn light"},
+    {.spelling = "-Wc", .form = NumberGluedOrSeparate, .group = Exclusive::WarnLight,
+     .topic = Lights, .first = {"the angle", kAngle},
+     .apply = [](Options& o, A a) { o.warn = WarnLight::Conical; o.warn_parameter = a.first; },
+     .summary = "Warn lights: conical; # is angle in radians",
+     .details = "Same as -Wr except that no light is obtained beyond the angle.", .section = "App.",
+     .example = "-Wc 0.7", .status = NotYet, .feature = "the conical Warn light"},
+    {.spelling = "-Wt", .form = Number, .group = Exclusive::WarnLight, .topic = Lights,
+     .first = {"the distance", kPositive},
+     .apply = [](Options& o, A a) { o.warn = WarnLight::Thibadeau; o.warn_parameter = a.first; },
+     .summary = "Warn lights: Thibadeau; # is dist. from poly",
+     .details = "The point source is displaced behind the emissive polygon; light arrives only "
+                "through the polygon.", .section = "App.", .example = "-Wt1.0", .status = NotYet,
+     .feature = "the Thibadeau Warn light"},
+    {.spelling = "-A", .form = Pair, .topic = Lights, .first = {"the distance", kPositive},
+     .second = {"the constant", kPositive},
+     .apply = [](Options& o, A a) {
+         o.attenuation_distance = a.first;
+         o.attenuation_constant = a.second;
+     },
+     .summary = "Attenuation effect: intensity divided by dist/40.0 + 1.0",
+     .details = "NOT the inverse-square law. By default attenuation is on, with 200.0 and 1.0.",
+     .section = "App.", .example = "-A40.0,1.0"},
+    {.spelling = "-T", .topic = Lights,
+     .apply = [](Options& o, A) { o.specular_refraction_feelers = true; },
+     .summary = "Specular refraction",
+     .details = "Also considers shadow feelers on the far side of a polygon that is not opaque.",
+     .section = "App.", .example = "-T"},
+    {.spelling = "-Co", .group = Exclusive::HighlightColor, .topic = Highlights,
+     .apply = [](Options& o, A) { o.highlight = HighlightColor::ObjectAttenuates; },
+     .summary = "Object color attenuates light color",
+     .details = "Specular highlights are filtered through the color of the polygon.",
+     .section = "App.", .example = "-Co", .status = NotYet,
+     .feature = "object-colored specular highlights"},
+    {.spelling = "-Ci", .group = Exclusive::HighlightColor, .topic = Highlights,
+     .apply = [](Options& o, A) { o.highlight = HighlightColor::LightOnly; },
+     .summary = "Light color only",
+     .details = "Specular highlights are the color of the incident light.", .section = "App.",
+     .example = "-Ci", .status = NotYet, .feature = "light-colored specular highlights"},
+    {.spelling = "-Cf", .group = Exclusive::HighlightColor, .topic = Highlights,
+     .apply = [](Options& o, A) { o.highlight = HighlightColor::Fresnel; },
+     .summary = "Fresnel function applied to RGB components separately",
+     .details = "Specular highlights vary with the wavelength of the incident light.",
+     .section = "App.", .example = "-Cf", .status = NotYet,
+     .feature = "Fresnel-colored specular highlights"},
+    {.spelling = "-Dx", .topic = Disable, .apply = [](Options& o, A) { o.disable_adaptive = true; },
+     .summary = "disable adaptive supersampling",
+     .details = "Takes the maximum number of samples per pixel (the sample resolution squared).",
+     .section = "App.", .example = "-Dx"},
+    {.spelling = "-De", .topic = Disable,
+     .apply = [](Options& o, A) { o.disable_exit_culling = true; },
+     .summary = "disable exit ray culling",
+     .details = "Skips the preprocessing that culls rays leaving the world.", .section = "App.",
+     .example = "-De", .status = NotYet, .feature = "exit ray culling"},
+    {.spelling = "-Dd", .topic = Disable,
+     .apply = [](Options& o, A) { o.disable_distribution = true; },
+     .summary = "disable Distributing",
+     .details = "Only one transmitted and one reflected ray per intersection: quick but "
+                "unrealistic pictures.", .section = "App.", .example = "-Dd"},
+    {.spelling = "-Dt", .topic = Disable,
+     .apply = [](Options& o, A) { o.feelers_stop_at_transparent = true; },
+     .summary = "prevent shadow feelers from penetrating Transparent polys",
+     .details = "The shadow feeler stops dead at the first polygon it hits.", .section = "App.",
+     .example = "-Dt"},
+    {.spelling = "-Da", .topic = Disable,
+     .apply = [](Options& o, A) { o.disable_attenuation = true; },
+     .summary = "disable Attenuation with distance (excluding LightLock)",
+     .details = "Light rays other than shadow feelers do not attenuate with distance.",
+     .section = "App.", .example = "-Da"},
+    {.spelling = "-Dl", .alias = "-DI", .topic = Disable,
+     .apply = [](Options& o, A) { o.disable_light_attenuation = true; },
+     .summary = "disable attenuation with distance of Lights",
+     .details = "Shadow feelers do not attenuate with distance. The manual prints it -DI, which "
+                "is accepted too.", .section = "App.", .example = "-Dl"},
+    {.spelling = "-Ds", .topic = Disable,
+     .apply = [](Options& o, A) { o.disable_shadow_feelers = true; },
+     .summary = "disable Shadow feeler", .details = "Eliminates shadow feeling.", .section = "App.",
+     .example = "-Ds"},
+    {.spelling = "-Dr", .topic = Disable,
+     .apply = [](Options& o, A) { o.disable_reflection = true; }, .summary = "disable Reflection",
+     .details = "No reflected rays, even at a reflective polygon.", .section = "App.",
+     .example = "-Dr"},
+    {.spelling = "-Df", .topic = FileFormat,
+     .apply = [](Options& o, A) { o.dialect.attributes_inline = true; },
+     .summary = "read attributes from .scn and not separate File",
+     .details = "The attribute list stands in the .scn in place of the Attributes file name.",
+     .section = "2.2", .example = "-Df"},
+    {.spelling = "-Dp", .topic = FileFormat,
+     .apply = [](Options& o, A) { o.dialect.no_power_fields = true; },
+     .summary = "Power fields not present in attribute description",
+     .details = "pow and tpow are absent from EVERY attribute and taken as 2.0.", .section = "2.3",
+     .example = "-Dp"},
+    {.spelling = "-Db", .topic = Disable,
+     .apply = [](Options& o, A) { o.single_sided_emitters = true; },
+     .summary = "not Both sides of polygons are emissive",
+     .details = "Only the outside surface of emissive polygons emits light.", .section = "App.",
+     .example = "-Db"},
+    {.spelling = "-Po", .group = Exclusive::PhongShading, .topic = FileFormat,
+     .apply = [](Options& o, A) {
+         o.phong = PhongShading::Opaque;
+         o.dialect.smooth_shade_field = true;
+     },
+     .summary = "Phong shaded objects are opaque",
+     .details = "The .scn has the smooth-shading field; such objects are forced opaque (the "
+                "preferred option).", .section = "2.2", .example = "-Po"},
+    {.spelling = "-Pt", .group = Exclusive::PhongShading, .topic = FileFormat,
+     .apply = [](Options& o, A) {
+         o.phong = PhongShading::Transparent;
+         o.dialect.smooth_shade_field = true;
+     },
+     .summary = "Phong shaded objects are transparent",
+     .details = "The .scn has the smooth-shading field; opaqueness is not forced.",
+     .section = "2.2", .example = "-Pt"},
+    {.spelling = "-Ot", .topic = OldVersions,
+     .apply = [](Options& o, A) { o.old_intersection_test = true; },
+     .summary = "Old intersection test",
+     .details = "Disables the correction of smooth-shading intersection problems.",
+     .section = "App.", .example = "-Ot", .status = NotYet, .feature = "the old intersection test"},
+    {.spelling = "-Oi", .topic = OldVersions,
+     .apply = [](Options& o, A) { o.old_illumination = true; }, .summary = "Old illumination model",
+     .details = "Simulates the earliest version of the raytracer, bugs included.",
+     .section = "App.", .example = "-Oi", .status = NotYet,
+     .feature = "the old illumination model"},
+    {.spelling = "-Of", .topic = FileFormat,
+     .apply = [](Options& o, A) {
+         o.dialect.attributes_inline = true;
+         o.dialect.no_power_fields = true;
+     },
+     .summary = "Old format", .details = "Same as -Df -Dp.", .section = "2.3", .example = "-Of"},
+    {.spelling = "-O1", .topic = OldVersions, .apply = [](Options& o, A) { o.old_version = true; },
+     .summary = "Behave like an early version of the CMU raytracer",
+     .details = "Before certain bugs had been ironed out. It must be used alone, without other "
+                "switches.", .section = "2.1", .example = "-O1", .status = NotYet,
+     .feature = "the early version's behaviour"},
+    {.spelling = "-K", .topic = Illumination,
+     .apply = [](Options& o, A) { o.scale_weights = true; },
+     .summary = "scale down ka, ks, etc. so that intensity need not be clipped",
+     .details = "Looks at -Dr and -Ds. Produces correct but dark pictures.", .section = "App.",
+     .example = "-K", .status = NotYet, .feature = "scaling down the weights"},
+    {.spelling = "-I", .topic = Illumination,
+     .apply = [](Options& o, A) { o.illuminate_distributed = true; },
+     .summary = "apply illum. model to distrib. rays as well as shadow feelers",
+     .details = "Gives the distributed rays the full illumination model treatment.",
+     .section = "App.", .example = "-I", .status = NotYet,
+     .feature = "the full illumination model"},
+    {.spelling = "-L", .form = Integer, .first = {"the line", whole(0, 1000000)},
+     .apply = [](Options& o, A a) { o.start_line = static_cast<int>(a.integer); },
+     .summary = "draws only from line 250 up",
+     .details = "Lines are drawn from the bottom up; this starts at line 250.", .section = "App.",
+     .example = "-L250"},
+    {.spelling = "-E", .form = Number, .topic = Illumination, .first = {"the angle", kAngle},
+     .apply = [](Options& o, A a) { o.crease_angle = a.first; },
+     .summary = "Sharp breaks in Phong-shaded objects if angle 1.5 radians",
+     .details = "Not fully tested in the original.", .section = "App.", .example = "-E1.5",
+     .status = NotYet, .feature = "sharp breaks in Phong-shaded objects"},
+    {.spelling = "-F", .form = Pair, .topic = Lights, .first = {"distangle", kPositive},
+     .second = {"distfac", kPositive},
+     .apply = [](Options& o, A a) { o.fuzzy_distangle = a.first; o.fuzzy_distfac = a.second; },
+     .summary = "Fuzzy shadow feeler: 0.3 is distangle, 2.0 is distfac",
+     .details = "Distributes the shadow feeler to produce fuzzy shadows.", .section = "App.",
+     .example = "-F0.3,2.0", .status = NotYet, .feature = "the fuzzy shadow feeler"},
+    {.spelling = "-Xp", .form = Pair, .topic = AdaptiveSampling,
+     .first = {"the probability", kProbability}, .second = {"the variance", kPositive},
+     .apply = [](Options& o, A a) {
+         o.pixel_stop_probability = a.first;
+         o.pixel_stop_variance = a.second;
+     },
+     .summary = "Stop sampling pixels when prob that variance 0.05 is .1",
+     .details = "Chi-square adaptive sampling of pixels; the defaults are 0.2 and 0.2.",
+     .section = "App.", .example = "-Xp0.1,0.05", .status = NotYet, .feature = kAdaptive},
+    {.spelling = "-Xr", .form = Pair, .topic = AdaptiveSampling,
+     .first = {"the probability", kProbability}, .second = {"the variance", kPositive},
+     .apply = [](Options& o, A a) {
+         o.ray_stop_probability = a.first;
+         o.ray_stop_variance = a.second;
+     },
+     .summary = "Ditto, except with distributed rays and not pixels",
+     .details = "Chi-square adaptive sampling of distributed rays.", .section = "App.",
+     .example = "-Xr0.1,0.05", .status = NotYet, .feature = kAdaptive},
+    {.spelling = "-M", .topic = FileFormat, .apply = [](Options& o, A) { o.dialect.marks = true; },
+     .summary = "op surf files mark polys; Shape file name in .scn file",
+     .details = "Used if and only if the .scn has a $@shapes line (not with Phigs or Chen's "
+                "files).", .section = "2.4", .example = "-M"},
+    {.spelling = "-V", .topic = FileFormat,
+     .apply = [](Options& o, A) { o.dialect.textures = true; }, .summary = "texture mapping",
+     .details = "Texture-mapped optical surfaces follow the entities in the .scn.",
+     .section = "2.2", .example = "-V", .status = NotYet, .feature = "texture mapping"},
+    {.spelling = "-dc", .topic = Debugging, .apply = [](Options& o, A) { o.print_columns = true; },
+     .summary = "print column numbers",
+     .details = "Prints the column number of the pixel on each sample.", .section = "App.",
+     .example = "-dc"},
+    {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.debug_strike = true; },
+     .summary = "(strike) debug ddda by comparing actual results (slow)",
+     .details = "Tests each polygon the slow way and compares with spatial encoding.",
+     .section = "App.", .example = "-ds", .status = NotYet, .feature = kStrike},
+    {.spelling = "-dsp", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_strike_print = true; },
+     .summary = "(strike print) print hits different only in poly, but not oct",
+     .details = "Useful with -ds: traces the ddda for errorful intersections.", .section = "App.",
+     .example = "-dsp", .status = NotYet, .feature = kStrike},
+    {.spelling = "-dso", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_strike_oct = true; },
+     .summary = "(strike oct) print octs looked in", .details = "Unused in the original.",
+     .section = "App.", .example = "-dso", .status = NotYet, .feature = kStrike},
+    {.spelling = "-dl", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_intersections = true; }, .summary = "print intersections",
+     .details = "Only intersections done the old way (no spatial encoding).", .section = "App.",
+     .example = "-dl", .status = NotYet, .feature = "printing intersections"},
+    {.spelling = "-doo", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_octree_output = true; },
+     .summary = "Output the octree to octree.lst", .details = "A text file with polygon ids.",
+     .section = "App.", .example = "-doo", .status = NotYet, .feature = kOctreeDebug},
+    {.spelling = "-doi", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_octree_interactive = true; },
+     .summary = "Debug octree interactively", .details = "Did not work in the original.",
+     .section = "App.", .example = "-doi", .status = NotYet, .feature = kOctreeDebug},
+    {.spelling = "-dof", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_fillplane = true; }, .summary = "Debug octree fillplane",
+     .details = "Debugs the new fillplane routines.", .section = "App.", .example = "-dof",
+     .status = NotYet, .feature = kOctreeDebug},
+    {.spelling = "-df", .topic = Debugging, .apply = [](Options& o, A) { o.trace_parsing = true; },
+     .summary = "(file) debug file parsing",
+     .details = "Traces the parsing of every file read, on stderr.", .section = "App.",
+     .example = "-df"},
+    {.spelling = "-dd", .topic = Debugging, .apply = [](Options& o, A) { o.debug_color = true; },
+     .summary = "debug color info",
+     .details = "Prints the color map and the pixel values as they are output.", .section = "App.",
+     .example = "-dd", .status = NotYet, .feature = "the color debug output"},
+    {.spelling = "-dx", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_chi_square = true; }, .summary = "Debug chi-square stuff",
+     .details = "Prints the number of samples at each pixel.", .section = "App.", .example = "-dx",
+     .status = NotYet, .feature = kAdaptive},
+    {.spelling = "-de", .topic = Debugging,
+     .apply = [](Options& o, A) { o.debug_exit_culling = true; },
+     .summary = "Debug exit ray culling",
+     .details = "Checks that culled rays really hit nothing; useful with -p.", .section = "App.",
+     .example = "-de", .status = NotYet, .feature = "exit ray culling"},
+    {.spelling = "--output", .form = SeparateText, .topic = Program, .first = {"FILE", {}},
+     .repeatable = true, .apply = [](Options& o, A a) { o.outputs.push_back(a.text); },
+     .summary = "Also write the picture to FILE (.gro, .png or .ppm)",
+     .details = "Repeatable; the format follows the extension.", .section = "new",
+     .example = "--output twocubes.png"},
+    {.spelling = "--help", .topic = Program, .apply = [](Options& o, A) { o.show_help = true; },
+     .summary = "Print this help and stop", .section = "new", .example = "--help"},
+    {.spelling = "--version", .topic = Program,
+     .apply = [](Options& o, A) { o.show_version = true; }, .summary = "Print the version and stop",
+     .section = "new", .example = "--version"},
+    {.spelling = "--seed", .form = SeparateInteger, .topic = Program, .first = {"N", kNonNegative},
+     .apply = [](Options& o, A a) { o.seed = static_cast<std::uint64_t>(a.integer); },
+     .summary = "Seed of the random numbers (the same seed, the same picture)", .section = "new",
+     .example = "--seed 7"},
+    {.spelling = "--threads", .form = SeparateInteger, .topic = Program,
+     .first = {"N", whole(0, 1024)},
+     .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
+     .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2"},
+    {.spelling = "--quiet", .topic = Program, .apply = [](Options& o, A) { o.quiet = true; },
+     .summary = "No progress and no notes; warnings and errors still show", .section = "new",
+     .example = "--quiet"},
+});
+#pragma GCC diagnostic pop
+// clang-format on
+// clang-format on
+
+std::string format_bound(double value) {
+    if (value == std::numbers::pi) {
+        return "pi";
+    }
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed);
+    return std::string(text, result.ptr);
+}
+
+}  // namespace
+
+bool Range::contains(double value) const {
+    const bool above_low = low_open ? value > low : value >= low;
+    const bool below_high = !bounded_above || (high_open ? value < high : value <= high);
+    return above_low && below_high;
+}
+
+std::string Range::describe() const {
+    if (!bounded_above) {
+        return (low_open ? "> " : ">= ") + format_bound(low);
+    }
+    if (!low_open && !high_open) {
+        return "from " + format_bound(low) + " to " + format_bound(high);
+    }
+    return std::string("in ") + (low_open ? "(" : "[") + format_bound(low) + ", " +
+           format_bound(high) + (high_open ? ")" : "]");
+}
+
+std::span<const SwitchSpec> switch_table() {
+    return kSwitches;
+}
+
+std::string_view topic_title(Topic topic) {
+    switch (topic) {
+        case Topic::Output:
+            return "Output and display";
+        case Topic::SpatialEncoding:
+            return "Spatial encoding (manual part three)";
+        case Topic::Specular:
+            return "Specular reflection models (-S: only one)";
+        case Topic::Lights:
+            return "Lights, shadow feelers and attenuation";
+        case Topic::Highlights:
+            return "Color of specular highlights (-C: only one)";
+        case Topic::Disable:
+            return "Disable (-D: not mutually exclusive)";
+        case Topic::FileFormat:
+            return "File formats (manual 2.2 to 2.5)";
+        case Topic::Illumination:
+            return "Illumination model";
+        case Topic::AdaptiveSampling:
+            return "Chi-square adaptive sampling (-X)";
+        case Topic::OldVersions:
+            return "Old versions (-O)";
+        case Topic::Debugging:
+            return "Debug switches (-d)";
+        case Topic::Program:
+            return "Program options (new in this version)";
+    }
+    return "";
+}
+
+std::string_view exclusive_subject(Exclusive group) {
+    switch (group) {
+        case Exclusive::SpecularModel:
+            return "the specular model";
+        case Exclusive::HighlightColor:
+            return "the color of specular highlights";
+        case Exclusive::PhongShading:
+            return "Phong shading";
+        case Exclusive::WarnLight:
+            return "the Warn light";
+        case Exclusive::None:
+            break;
+    }
+    return "";
+}
+
+}  // namespace rt

@@ -1,0 +1,301 @@
+// The switch table's own promises: every Appendix switch is a row, spellings never collide, and
+// each row's example parses to that row and sets what the row says.
+#include "rt/app/switch_table.h"
+
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rt/app/switch_parser.h"
+#include "rt/core/error.h"
+
+#include <gtest/gtest.h>
+
+namespace rt {
+namespace {
+
+std::vector<std::string> words(std::string_view text) {
+    std::istringstream in{std::string(text)};
+    std::vector<std::string> result;
+    for (std::string word; in >> word;) {
+        result.push_back(word);
+    }
+    return result;
+}
+
+Options parse_example(const SwitchSpec& spec) {
+    std::vector<std::string> args = {"twocubes"};
+    for (std::string& word : words(spec.example)) {
+        args.push_back(std::move(word));
+    }
+    return parse_command_line(args);
+}
+
+TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
+    const std::vector<std::string_view> expected = {
+        "-n",  "-w",   "-m",       "-tv",    "-c",        "-od",    "-oo",       "-ol",    "-on",
+        "-of", "-op",  "-ss",      "-p",     "-r",        "-Sp",    "-Sg",       "-Stg",   "-Stb",
+        "-R",  "-Wr",  "-Wc",      "-Wt",    "-A",        "-T",     "-Co",       "-Ci",    "-Cf",
+        "-Dx", "-De",  "-Dd",      "-Dt",    "-Da",       "-Dl",    "-Ds",       "-Dr",    "-Df",
+        "-Dp", "-Db",  "-Po",      "-Pt",    "-Ot",       "-Oi",    "-Of",       "-O1",    "-K",
+        "-I",  "-L",   "-E",       "-F",     "-Xp",       "-Xr",    "-M",        "-V",     "-dc",
+        "-ds", "-dsp", "-dso",     "-dl",    "-doo",      "-doi",   "-dof",      "-df",    "-dd",
+        "-dx", "-de",  "--output", "--help", "--version", "--seed", "--threads", "--quiet"};
+    std::vector<std::string_view> actual;
+    for (const SwitchSpec& spec : switch_table()) {
+        actual.push_back(spec.spelling);
+    }
+    EXPECT_EQ(actual, expected);
+}
+
+TEST(SwitchTable, SpellingsAndAliasesAreUnique) {
+    std::set<std::string_view> seen;
+    for (const SwitchSpec& spec : switch_table()) {
+        EXPECT_TRUE(seen.insert(spec.spelling).second) << spec.spelling;
+        if (!spec.alias.empty()) {
+            EXPECT_TRUE(seen.insert(spec.alias).second) << spec.alias;
+        }
+    }
+}
+
+TEST(SwitchTable, EveryRowHasHelpSectionAndExample) {
+    for (const SwitchSpec& spec : switch_table()) {
+        EXPECT_FALSE(spec.summary.empty()) << spec.spelling;
+        EXPECT_FALSE(spec.section.empty()) << spec.spelling;
+        EXPECT_TRUE(spec.example.starts_with(spec.spelling)) << spec.spelling;
+        EXPECT_NE(spec.apply, nullptr) << spec.spelling;
+        EXPECT_EQ(spec.status == Status::NotYet, !spec.feature.empty()) << spec.spelling;
+        EXPECT_EQ(spec.first.name.empty(), spec.form == ArgForm::None) << spec.spelling;
+    }
+}
+
+// Where one spelling begins another (-ds, -dsp), the longest match must still pick each row.
+TEST(SwitchTable, EachExampleMatchesItsOwnRow) {
+    int prefix_pairs = 0;
+    for (const SwitchSpec& spec : switch_table()) {
+        EXPECT_EQ(match_switch(words(spec.example).front()), &spec) << spec.example;
+        for (const SwitchSpec& other : switch_table()) {
+            if (&other != &spec && other.spelling.starts_with(spec.spelling)) {
+                ++prefix_pairs;
+                EXPECT_EQ(match_switch(other.spelling), &other) << other.spelling;
+            }
+        }
+    }
+    EXPECT_GE(prefix_pairs, 2);  // -ds before -dsp and -dso
+}
+
+TEST(SwitchTable, NotYetRowsAreRefusedByName) {
+    for (const SwitchSpec& spec : switch_table()) {
+        if (spec.status == Status::Implemented) {
+            EXPECT_NO_THROW(parse_example(spec)) << spec.example;
+            continue;
+        }
+        try {
+            parse_example(spec);
+            ADD_FAILURE() << spec.example << " was accepted";
+        } catch (const NotImplementedError& e) {
+            EXPECT_EQ(std::string(e.what()), std::string(spec.spelling) + ": " +
+                                                 std::string(spec.feature) +
+                                                 " is not implemented yet");
+        }
+    }
+}
+
+TEST(SwitchTable, StatusesOfThisRelease) {
+    const std::set<std::string_view> implemented = {
+        "-n",  "-m",  "-c",  "-A",  "-Da", "-Dl", "-Ds", "-Dr", "-Dt", "-Db", "-T",  "-Dd",
+        "-Dx", "-Df", "-Dp", "-Of", "-R",  "-M",  "-Po", "-Pt", "-Sp", "-L",  "-dc", "-df"};
+    for (const SwitchSpec& spec : switch_table()) {
+        const bool expected = spec.is_long_option() || implemented.contains(spec.spelling);
+        EXPECT_EQ(spec.status == Status::Implemented, expected) << spec.spelling;
+    }
+}
+
+using Check = std::function<bool(const Options&)>;
+
+// What each row sets. Implemented rows are checked through the parser with their example;
+// NotYet rows (which the parser refuses) by calling apply with the example's argument.
+struct Expectation {
+    SwitchArgument argument;
+    Check holds;
+};
+
+SwitchArgument number(double value) {
+    SwitchArgument argument;
+    argument.first = value;
+    return argument;
+}
+
+SwitchArgument pair(double first, double second) {
+    SwitchArgument argument = number(first);
+    argument.second = second;
+    return argument;
+}
+
+SwitchArgument whole(std::int64_t value) {
+    SwitchArgument argument;
+    argument.integer = value;
+    return argument;
+}
+
+std::map<std::string_view, Expectation> expectations() {
+    auto flag = [](bool Options::*field) {
+        return Expectation{{}, [field](const Options& o) { return o.*field; }};
+    };
+    std::map<std::string_view, Expectation> e = {
+        {"-n", flag(&Options::no_gro)},
+        {"-w", flag(&Options::wireframe_only)},
+        {"-m", {{}, [](const Options& o) { return o.display_multiplier == 2.0; }}},
+        {"-tv", {whole(8), [](const Options& o) { return o.terminate_after_voxels == 8; }}},
+        {"-c", {{}, [](const Options& o) { return !o.clip_intensity; }}},
+        {"-od", {whole(5), [](const Options& o) { return o.octree_depth == 5; }}},
+        {"-oo", flag(&Options::draw_octree)},
+        {"-ol", {whole(16), [](const Options& o) { return o.octlist_power == 16; }}},
+        {"-on", flag(&Options::accept_near_hits)},
+        {"-of", flag(&Options::no_fudge)},
+        {"-op", flag(&Options::new_fillplane)},
+        {"-ss", {whole(10), [](const Options& o) { return o.seed_size_power == 10; }}},
+        {"-p", flag(&Options::profile)},
+        {"-r", flag(&Options::random_rays)},
+        {"-Sp",
+         {{},
+          [](const Options& o) {  // the default, so also look for the switch itself
+              return o.specular == SpecularModel::Phong && o.given_switches.size() == 1;
+          }}},
+        {"-Sg", {{}, [](const Options& o) { return o.specular == SpecularModel::PhongGeometric; }}},
+        {"-Stg",
+         {number(1.0),
+          [](const Options& o) {
+              return o.specular == SpecularModel::TorranceSparrowGaussian &&
+                     o.microfacet_slope == 1.0;
+          }}},
+        {"-Stb",
+         {number(0.5),
+          [](const Options& o) {
+              return o.specular == SpecularModel::TorranceSparrowBeckmann &&
+                     o.microfacet_slope == 0.5;
+          }}},
+        {"-R", {{}, [](const Options& o) { return o.dialect.rgb_refraction; }}},
+        {"-Wr", {{}, [](const Options& o) { return o.warn == WarnLight::Rogers; }}},
+        {"-Wc",
+         {number(0.7),
+          [](const Options& o) {
+              return o.warn == WarnLight::Conical && o.warn_parameter == 0.7;
+          }}},
+        {"-Wt",
+         {number(1.0),
+          [](const Options& o) {
+              return o.warn == WarnLight::Thibadeau && o.warn_parameter == 1.0;
+          }}},
+        {"-A",
+         {{},
+          [](const Options& o) {
+              return o.attenuation_distance == 40.0 && o.attenuation_constant == 1.0;
+          }}},
+        {"-T", flag(&Options::specular_refraction_feelers)},
+        {"-Co",
+         {{}, [](const Options& o) { return o.highlight == HighlightColor::ObjectAttenuates; }}},
+        {"-Ci", {{}, [](const Options& o) { return o.highlight == HighlightColor::LightOnly; }}},
+        {"-Cf", {{}, [](const Options& o) { return o.highlight == HighlightColor::Fresnel; }}},
+        {"-Dx", flag(&Options::disable_adaptive)},
+        {"-De", flag(&Options::disable_exit_culling)},
+        {"-Dd", flag(&Options::disable_distribution)},
+        {"-Dt", flag(&Options::feelers_stop_at_transparent)},
+        {"-Da", flag(&Options::disable_attenuation)},
+        {"-Dl", flag(&Options::disable_light_attenuation)},
+        {"-Ds", flag(&Options::disable_shadow_feelers)},
+        {"-Dr", flag(&Options::disable_reflection)},
+        {"-Df",
+         {{},
+          [](const Options& o) {
+              return o.dialect.attributes_inline && !o.dialect.no_power_fields;
+          }}},
+        {"-Dp",
+         {{},
+          [](const Options& o) {
+              return o.dialect.no_power_fields && !o.dialect.attributes_inline;
+          }}},
+        {"-Db", flag(&Options::single_sided_emitters)},
+        {"-Po",
+         {{},
+          [](const Options& o) {
+              return o.phong == PhongShading::Opaque && o.dialect.smooth_shade_field;
+          }}},
+        {"-Pt",
+         {{},
+          [](const Options& o) {
+              return o.phong == PhongShading::Transparent && o.dialect.smooth_shade_field;
+          }}},
+        {"-Ot", flag(&Options::old_intersection_test)},
+        {"-Oi", flag(&Options::old_illumination)},
+        {"-Of",
+         {{},
+          [](const Options& o) {
+              return o.dialect.attributes_inline && o.dialect.no_power_fields;
+          }}},
+        {"-O1", flag(&Options::old_version)},
+        {"-K", flag(&Options::scale_weights)},
+        {"-I", flag(&Options::illuminate_distributed)},
+        {"-L", {{}, [](const Options& o) { return o.start_line == 250; }}},
+        {"-E", {number(1.5), [](const Options& o) { return o.crease_angle == 1.5; }}},
+        {"-F",
+         {pair(0.3, 2.0),
+          [](const Options& o) { return o.fuzzy_distangle == 0.3 && o.fuzzy_distfac == 2.0; }}},
+        {"-Xp",
+         {pair(0.1, 0.05),
+          [](const Options& o) {
+              return o.pixel_stop_probability == 0.1 && o.pixel_stop_variance == 0.05;
+          }}},
+        {"-Xr",
+         {pair(0.1, 0.05),
+          [](const Options& o) {
+              return o.ray_stop_probability == 0.1 && o.ray_stop_variance == 0.05;
+          }}},
+        {"-M", {{}, [](const Options& o) { return o.dialect.marks; }}},
+        {"-V", {{}, [](const Options& o) { return o.dialect.textures; }}},
+        {"-dc", flag(&Options::print_columns)},
+        {"-ds", flag(&Options::debug_strike)},
+        {"-dsp", flag(&Options::debug_strike_print)},
+        {"-dso", flag(&Options::debug_strike_oct)},
+        {"-dl", flag(&Options::debug_intersections)},
+        {"-doo", flag(&Options::debug_octree_output)},
+        {"-doi", flag(&Options::debug_octree_interactive)},
+        {"-dof", flag(&Options::debug_fillplane)},
+        {"-df", flag(&Options::trace_parsing)},
+        {"-dd", flag(&Options::debug_color)},
+        {"-dx", flag(&Options::debug_chi_square)},
+        {"-de", flag(&Options::debug_exit_culling)},
+        {"--output",
+         {{},
+          [](const Options& o) { return o.outputs == std::vector<std::string>{"twocubes.png"}; }}},
+        {"--seed", {{}, [](const Options& o) { return o.seed == 7; }}},
+        {"--threads", {{}, [](const Options& o) { return o.threads == 2; }}},
+        {"--quiet", flag(&Options::quiet)},
+        {"--help", flag(&Options::show_help)},
+        {"--version", flag(&Options::show_version)},
+    };
+    return e;
+}
+
+TEST(SwitchTable, EachRowSetsItsField) {
+    const auto all = expectations();
+    for (const SwitchSpec& spec : switch_table()) {
+        const auto found = all.find(spec.spelling);
+        ASSERT_NE(found, all.end()) << "no expectation for " << spec.spelling;
+        const Expectation& expectation = found->second;
+        EXPECT_FALSE(expectation.holds(Options{})) << spec.spelling << " holds by default";
+        if (spec.status == Status::Implemented) {
+            EXPECT_TRUE(expectation.holds(parse_example(spec))) << spec.example;
+        } else {
+            Options options;
+            spec.apply(options, expectation.argument);
+            EXPECT_TRUE(expectation.holds(options)) << spec.spelling;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt
