@@ -69,6 +69,15 @@ TEST(SwitchParser, SeveralOutputsInOrder) {
     EXPECT_TRUE(options.given_switches.empty());
 }
 
+TEST(SwitchParser, ManyOutputsAreReadInOnePass) {
+    Args args = {"s"};
+    for (int i = 0; i < 20000; ++i) {
+        args.push_back("--output");
+        args.push_back("f" + std::to_string(i) + ".png");
+    }
+    EXPECT_EQ(parse_command_line(args).outputs.size(), 20000u);
+}
+
 TEST(SwitchParser, LongOptionValues) {
     const Options options = parse_command_line({"s", "--seed=12", "--threads", "3"});
     EXPECT_EQ(options.seed, 12u);

@@ -187,11 +187,10 @@ SwitchArgument read_argument(const SwitchSpec& spec, std::string_view text) {
     return argument;
 }
 
-// What the parse has seen so far, to check duplicates, exclusive groups and -O1.
+// What the parse has seen so far, to check duplicates and exclusive groups.
 struct Seen {
-    std::vector<const SwitchSpec*> switches;
-    const SwitchSpec* not_yet = nullptr;
-    const SwitchSpec* alone = nullptr;  ///< -O1
+    std::vector<const SwitchSpec*> switches;  ///< each row once, so at most the table's size
+    const SwitchSpec* not_yet = nullptr;      ///< the first switch this release refuses
     std::vector<std::string> scenes;
 };
 
@@ -239,20 +238,19 @@ void parse_switch(std::string_view word, ArgumentCursor& cursor, Options& option
     const SwitchArgument argument = read_argument(spec, text);
     check_combination(spec, seen);
     spec.apply(options, argument);
-    seen.switches.push_back(&spec);
+    if (std::find(seen.switches.begin(), seen.switches.end(), &spec) == seen.switches.end()) {
+        seen.switches.push_back(&spec);
+    }
     if (!spec.is_long_option()) {
         options.given_switches.push_back(verbatim);
     }
     if (spec.status == Status::NotYet && seen.not_yet == nullptr) {
         seen.not_yet = &spec;
     }
-    if (spec.spelling == "-O1") {
-        seen.alone = &spec;
-    }
 }
 
 void check_complete(const Options& options, const Seen& seen) {
-    if (seen.alone != nullptr && options.given_switches.size() > 1) {
+    if (options.old_version && options.given_switches.size() > 1) {
         throw UsageError("-O1 must be used alone, without other switches");
     }
     if (seen.scenes.empty()) {
