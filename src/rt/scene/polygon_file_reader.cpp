@@ -133,23 +133,6 @@ void PolygonFileReader::read_polygons(const IndexTable& edges) {
     }
 }
 
-// Fewer than three edges cannot close a loop: such a polygon keeps its distinct corners and is
-// later skipped as degenerate, with a warning, rather than stopping the whole scene.
-std::vector<std::uint32_t> corners_of(std::span<const Edge> edges) {
-    if (edges.size() >= 3) {
-        return chain_edges(edges);
-    }
-    std::vector<std::uint32_t> corners;
-    for (const Edge& e : edges) {
-        for (const std::uint32_t v : {e.a, e.b}) {
-            if (std::find(corners.begin(), corners.end(), v) == corners.end()) {
-                corners.push_back(v);
-            }
-        }
-    }
-    return corners;
-}
-
 void PolygonFileReader::read_polygon(std::int64_t ordinal, std::int64_t count,
                                      const IndexTable& edges, IndexTable& polygons) {
     SourceLocation at;
@@ -175,8 +158,15 @@ void PolygonFileReader::read_polygon(std::int64_t ordinal, std::int64_t count,
         p.mark = static_cast<PolygonMark>(integer_in(in_.source(), in_.take(mark), mark, 0, 4));
         p.shape_number = static_cast<long>(in_.integer("the shape index of " + name));
     }
-    const std::vector<std::uint32_t> loop = corners_of(own);
-    if (loop.empty() && n >= 3) {
+    // Fewer than three edges cannot close a loop: skipped with a warning, like the polygons the
+    // assembly finds degenerate, rather than stopping the whole scene.
+    if (n < 3) {
+        diagnostics_.warn(fmt::format("{}: {} is degenerate (fewer than 3 edges); skipped",
+                                      at.to_string(), name));
+        return;
+    }
+    const std::vector<std::uint32_t> loop = chain_edges(own);
+    if (loop.empty()) {
         throw InputError(at, "the edges of " + name + " do not form a single closed loop");
     }
     mesh_.add_polygon(p, loop);
