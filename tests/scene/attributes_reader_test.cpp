@@ -120,7 +120,7 @@ TEST(AttributesFile, Errors) {
     EXPECT_EQ(error("$ -2\n"),
               "Attributes:1: expected the attribute count (0 or more), found '-2'");
     EXPECT_EQ(error("$ 99999999999\n"),
-              "Attributes:1: The attribute count 99999999999 is more than the limit of 50000000");
+              "Attributes:1: The attribute count is 99999999999, more than the limit of 50000000");
     EXPECT_EQ(error("$ 13\n" + line + "0\n" + line + "1\n" + line + "2\n"),
               "Attributes:4: expected 13 attributes, found 3");
     EXPECT_EQ(error("$ 2\n" + line + "0\n" + line + "0\n"),

@@ -327,7 +327,7 @@ TEST_F(SmallScene, Errors) {
     dir_.write("sphere", "3 0 0 0 0 1 1 0 0 2 0 1 0 3 0 0 1 1 1 2 2 2 0 1\n0 3 0 1 2 0 0 1 0 2 1");
     EXPECT_EQ(error(scn("$@shapes\n$ 1\n$ 1\n$ 1 1 0 sphere 1 0 0 0 0 0 0\n"), m),
               "sphere:2: polygon 0 (mark 2, a sphere) refers to shape 1, but the shape file "
-              "defines 1 shapes (numbered from 0)");
+              "defines 1 shape (numbered from 0)");
     dir_.write("cone", "3 0 0 0 0 1 1 0 0 2 0 1 0 3 0 0 1 1 1 2 2 2 0 1\n0 3 0 1 2 0 0 1 0 4 0");
     EXPECT_EQ(
         error(scn("$@shapes\n$ 1\n$ 1\n$ 1 1 0 cone 1 0 0 0 0 0 0\n"), m),

@@ -110,7 +110,7 @@ TEST(PolygonFile, Errors) {
     EXPECT_EQ(error("-4"), "sq:1: expected the vertex count (0 or more), found '-4'");
     EXPECT_EQ(error("4.5"), "sq:1: expected the vertex count (a whole number), found '4.5'");
     EXPECT_EQ(error("60000000"),
-              "sq:1: The vertex count 60000000 is more than the limit of 50000000");
+              "sq:1: The vertex count is 60000000, more than the limit of 50000000");
     // A huge count that fits the limit but not the file: no huge allocation, just the end.
     EXPECT_EQ(error("40000000\n0 1 2 3\n"),
               "sq:2: expected the index number of vertex 2 of 40000000, found end of file");
@@ -133,7 +133,7 @@ TEST(PolygonFile, Errors) {
     EXPECT_EQ(error(square_edges + "1\n0 4 0 1 2 3 0 -1 0 x\n"),
               "sq:12: expected the attribute offset of polygon 0 (a whole number), found 'x'");
     EXPECT_EQ(error(square_edges + "1\n0 200000 0\n"),
-              "sq:12: The edge count of polygon 0 200000 is more than the limit of 100000");
+              "sq:12: The edge count of polygon 0 is 200000, more than the limit of 100000");
     EXPECT_EQ(error(square_edges + "1\n0 -1\n"),
               "sq:12: expected the edge count of polygon 0 (0 or more), found '-1'");
     EXPECT_EQ(error(square_edges + "1\n0 3 0 1 2 0 -1 0 0\n"),

@@ -80,7 +80,7 @@ TEST(PrinzFile, Errors) {
     EXPECT_EQ(error("{solid {{{{{{{{{{{{"), "p:1: expected 'face' or 'node', found '{'");
     EXPECT_EQ(error("{solid {node {position 1 2}}}"), "p:1: expected the z of node 0, found '}'");
     EXPECT_EQ(error("{solid\n{node {position 0 0 0}}\n{face {loop 0 0 3}}\n}"),
-              "p:3: face 0 refers to node 3, but the file has 1 nodes (numbered from 0)");
+              "p:3: face 0 refers to node 3, but the file has 1 node (numbered from 0)");
     EXPECT_EQ(error("{solid {face {loop -1 0 0}}}"),
               "p:1: face 0 refers to node -1, but the file has 0 nodes (numbered from 0)");
 }

@@ -154,12 +154,11 @@ TEST(ScnReader, WithSmoothShadeField) {
     EXPECT_EQ(scn.surfaces[1].surface.filetype, 2);
     EXPECT_EQ(
         error(scene_text("$ 1", "$ 0 0 511 399", "$ 1\n$ 1\n$ 1 12 0 2 cube 3 0 0 0 0 0 0\n"), po),
-        "s.scn:20: expected the smooth-shade field (present with -Po or -Pt) (0 to 1), "
+        "s.scn:20: expected the smooth-shade field of -Po/-Pt (0 to 1), "
         "found '2'");
     EXPECT_EQ(
         error(scene_text("$ 1", "$ 0 0 511 399", "$ 1\n$ 1\n$ 1 12 0 cube 3 0 0 0 0 0 0\n"), po),
-        "s.scn:20: expected the smooth-shade field (present with -Po or -Pt) (0 to 1), found "
-        "'cube'");
+        "s.scn:20: expected the smooth-shade field of -Po/-Pt (0 to 1), found 'cube'");
     EXPECT_EQ(
         error(scene_text("$ 1", "$ 0 0 511 399", "$ 1\n$ 1\n$ 1 12 1 1 p 3 0 0 0 0 0 0\n"), po),
         "s.scn:20: optical surface 'p' has filetype 1 (Phigs+), whose polygons cannot be "
@@ -274,7 +273,7 @@ TEST(ScnReader, EntityErrors) {
     EXPECT_EQ(entities(""), "s.scn:17: expected the entity count, found end of file");
     EXPECT_EQ(entities("$ -3\n"), "s.scn:18: expected the entity count (0 or more), found '-3'");
     EXPECT_EQ(entities("$ 2000000\n"),
-              "s.scn:18: The entity count 2000000 is more than the limit of 1000000");
+              "s.scn:18: The entity count is 2000000, more than the limit of 1000000");
     EXPECT_EQ(entities("$ three\n"),
               "s.scn:18: expected the entity count (a whole number), found 'three'");
     EXPECT_EQ(entities("$ 2\n$ 1\n$ 1 12 0 cube 3 2 0 2 0 20 0\n"),

@@ -44,9 +44,13 @@ std::int64_t count_from(const SourceText& source, const Token& token, std::strin
             subject[0] = 'T';
         }
         throw InputError(location_of(source, token),
-                         fmt::format("{} {} is more than the limit of {}", subject, count, limit));
+                         fmt::format("{} is {}, more than the limit of {}", subject, count, limit));
     }
     return count;
+}
+
+std::string count_of(std::int64_t n, std::string_view noun) {
+    return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
 }
 
 std::string show_number(double value) {

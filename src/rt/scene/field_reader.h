@@ -25,10 +25,12 @@ std::int64_t integer_from(const SourceText& source, const Token& token, std::str
 std::int64_t integer_in(const SourceText& source, const Token& token, std::string_view what,
                         std::int64_t lo, std::int64_t hi);
 /// A count 0..limit: negative is "expected <what> (0 or more), found '-1'"; too large is
-/// "<what> N is more than the limit of L" (capitalised).
+/// "<What> is N, more than the limit of L".
 std::int64_t count_from(const SourceText& source, const Token& token, std::string_view what,
                         std::int64_t limit);
 
+/// "1 shape", "2 shapes".
+std::string count_of(std::int64_t n, std::string_view noun);
 /// "1", "-0.5", "2.5e+20": numbers in messages and traces, shortest round-trip form.
 std::string show_number(double value);
 /// "(1, -0.5, 2)".

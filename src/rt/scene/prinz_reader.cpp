@@ -77,8 +77,8 @@ SurfaceMesh PrinzReader::read() {
             if (node < 0 || node >= node_count) {
                 throw InputError(in_.source().at(faces_[k].line),
                                  fmt::format("face {} refers to node {}, but the file has {} "
-                                             "nodes (numbered from 0)",
-                                             k, node, node_count));
+                                             "(numbered from 0)",
+                                             k, node, count_of(node_count, "node")));
             }
             loop.push_back(static_cast<std::uint32_t>(node));
         }

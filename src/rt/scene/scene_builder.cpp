@@ -149,10 +149,11 @@ std::int32_t SceneBuilder::shape_index(Placing& placing, const MeshPolygon& poly
     }
     const SourceLocation at = polygon_location(placing, polygon);
     if (polygon.shape_number < 0 || polygon.shape_number >= std::ssize(file_shapes_)) {
-        throw InputError(at, fmt::format("polygon {} (mark {}, a {}) refers to shape {}, but the "
-                                         "shape file defines {} shapes (numbered from 0)",
-                                         polygon.number, static_cast<int>(mark), shape_kind(mark),
-                                         polygon.shape_number, file_shapes_.size()));
+        throw InputError(
+            at, fmt::format("polygon {} (mark {}, a {}) refers to shape {}, but the "
+                            "shape file defines {} (numbered from 0)",
+                            polygon.number, static_cast<int>(mark), shape_kind(mark),
+                            polygon.shape_number, count_of(std::ssize(file_shapes_), "shape")));
     }
     Shape shape = file_shapes_[static_cast<std::size_t>(polygon.shape_number)];
     check_shape_use(shape, mark, at);

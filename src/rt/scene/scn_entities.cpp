@@ -50,7 +50,7 @@ void read_surface_fields(ItemStream& scn, const ReaderDialect& dialect, ScnSurfa
     o.filetype =
         static_cast<int>(integer_in(scn.source(), scn.take("the filetype"), "the filetype", 0, 2));
     if (dialect.smooth_shade_field) {
-        const std::string what = "the smooth-shade field (present with -Po or -Pt)";
+        const std::string what = "the smooth-shade field of -Po/-Pt";
         o.smooth_shaded = integer_in(scn.source(), scn.take(what), what, 0, 1) == 1;
     }
     o.file = std::string(scn.take("the optical surface file name").text);
