@@ -8,7 +8,7 @@ namespace rt::test {
 namespace {
 
 // The manual's three attribute lines (2.3), with its heading lines.
-const std::string kManual =
+const std::string manual_attributes =
     "attributes\n"
     "$ 3\n"
     "color(r,g,b) lighting model(pow,tpow,e,s,d,s,t,ref) sdist tdist description\n"
@@ -29,7 +29,7 @@ std::string error(const std::string& bytes, const ReaderDialect& dialect = {}) {
 
 TEST(AttributesFile, ReadsTheManualsThreeLines) {
     Diagnostics d;
-    const std::vector<Attribute> a = read(kManual, {}, d);
+    const std::vector<Attribute> a = read(manual_attributes, {}, d);
     ASSERT_EQ(a.size(), 3u);
     EXPECT_EQ(a[0].color, (Rgb{0.0, 0.2, 0.98}));
     EXPECT_EQ(a[0].specular_exponent, 2.0);
@@ -144,7 +144,7 @@ TEST(AttributesFile, DialectMismatchesNameTheMissingField) {
     ReaderDialect r;
     r.rgb_refraction = true;
     // The manual's lines read with -R: two numbers short.
-    EXPECT_EQ(error(kManual, r),
+    EXPECT_EQ(error(manual_attributes, r),
               "Attributes:4: expected the refraction cone exponent n, found end of line");
 }
 

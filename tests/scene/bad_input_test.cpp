@@ -54,13 +54,9 @@ TEST_P(BadScene, FailsWithTheExpectedMessage) {
     std::string expected = read_text(bad_dir() / (GetParam() + ".expected"));
     expected.erase(expected.find_last_not_of('\n') + 1);
     Diagnostics diagnostics;
-    std::string message =
+    const std::string message =
         input_error([&] { load_scene(scene, dialect_of(read_text(scene)), diagnostics); });
-    const std::string prefix = bad_dir().string() + "/";
-    for (std::size_t at; (at = message.find(prefix)) != std::string::npos;) {
-        message.erase(at, prefix.size());
-    }
-    EXPECT_EQ(message, expected);
+    EXPECT_EQ(without(message, bad_dir().string() + "/"), expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, BadScene, ::testing::ValuesIn(bad_scenes()),

@@ -25,12 +25,8 @@ protected:
         return input_error([&] { load(name, dialect); });
     }
     // The message without the temporary folder in front of file names.
-    std::string local(std::string message) const {
-        const std::string prefix = dir_.path().string() + "/";
-        for (std::size_t p; (p = message.find(prefix)) != std::string::npos;) {
-            message.erase(p, prefix.size());
-        }
-        return message;
+    std::string local(const std::string& message) const {
+        return without(message, dir_.path().string() + "/");
     }
 
     TempDir dir_;
@@ -126,12 +122,7 @@ protected:
         return load_scene(dir_.write("s.scn", scene_text), dialect, diagnostics_);
     }
     std::string error(const std::string& scene_text, const ReaderDialect& dialect = {}) {
-        const std::string prefix = dir_.path().string() + "/";
-        std::string message = input_error([&] { load(scene_text, dialect); });
-        for (std::size_t p; (p = message.find(prefix)) != std::string::npos;) {
-            message.erase(p, prefix.size());
-        }
-        return message;
+        return without(input_error([&] { load(scene_text, dialect); }), dir_.path().string() + "/");
     }
 
     TempDir dir_;

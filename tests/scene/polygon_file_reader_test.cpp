@@ -24,13 +24,13 @@ std::vector<std::uint32_t> corners(const SurfaceMesh& m, std::size_t polygon) {
 }
 
 // The manual's square (2.5), one number or one item per line as it prints them.
-const std::string kSquare =
+const std::string manual_square =
     "4\n0 -1 0 -1\n1 1 0 -1\n2 1 0 1\n3 -1 0 1\n4\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n1\n"
     "0 4 0 1 2 3 0 -1 0 0\n";
 
 TEST(PolygonFile, ReadsTheManualsSquare) {
     Diagnostics d;
-    const SurfaceMesh m = read(kSquare, false, d);
+    const SurfaceMesh m = read(manual_square, false, d);
     ASSERT_EQ(m.vertices.size(), 4u);
     EXPECT_EQ(m.vertices[2], (Vec3{1, 0, 1}));
     ASSERT_EQ(m.polygons.size(), 1u);
@@ -88,7 +88,7 @@ TEST(PolygonFile, FewerThanThreeEdgesIsDegenerate) {
 
 TEST(PolygonFile, TextAfterTheLastPolygonIsWarned) {
     Diagnostics d;
-    read(kSquare + "junk 1 2\n", false, d);
+    read(manual_square + "junk 1 2\n", false, d);
     EXPECT_EQ(
         d.warnings(),
         (std::vector<std::string>{"sq:13: text after the last polygon ignored, from 'junk'"}));
@@ -96,7 +96,7 @@ TEST(PolygonFile, TextAfterTheLastPolygonIsWarned) {
 
 TEST(PolygonFile, TracesEachItem) {
     RecordingDiagnostics r(true);
-    read(kSquare, false, r.diagnostics);
+    read(manual_square, false, r.diagnostics);
     ASSERT_EQ(r.traces.size(), 9u);
     EXPECT_EQ(r.traces[0], "sq:2: vertex 0 = (-1, 0, -1)");
     EXPECT_EQ(r.traces[4], "sq:7: edge 0 = vertices 0 1");

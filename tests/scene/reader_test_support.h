@@ -30,6 +30,14 @@ inline std::string input_error(const std::function<void()>& call) {
     return "no error";
 }
 
+/// The text with every occurrence of `prefix` removed (a temporary folder in file names).
+inline std::string without(std::string text, const std::string& prefix) {
+    for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix)) {
+        text.erase(at, prefix.size());
+    }
+    return text;
+}
+
 /// The shipped test data of the scene readers.
 inline std::filesystem::path scene_data() {
     return source_dir() / "tests/data/scene";
