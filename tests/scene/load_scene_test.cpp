@@ -272,6 +272,22 @@ TEST_F(SmallScene, FiletypesOneAndTwoInOneScene) {
     }
 }
 
+TEST_F(SmallScene, OldFormatInlineAttributesWithoutPowerFields) {
+    ReaderDialect of;
+    of.attributes_inline = true;
+    of.no_power_fields = true;
+    of.rgb_refraction = true;
+    const Scene scene =
+        load(scn("$ 1\n$ 1\n$ 1 5 0 tri 1 0 0 0 0 0 0\n",
+                 "attributes\n$ 1\n$ 0.5 0.5 0.5 0 0.1 0.9 0 0 1.5 1.6 1.7 60 4 60 4 5"),
+             of);
+    ASSERT_EQ(scene.attributes.size(), 1u);
+    EXPECT_EQ(scene.attributes[0].specular_exponent, 2.0);
+    EXPECT_EQ(scene.attributes[0].refraction_index, (Rgb{1.5, 1.6, 1.7}));
+    EXPECT_EQ(scene.polygons.at(0).attribute, 0u);
+    EXPECT_EQ(scene.source_files.size(), 2u);  // the .scn and tri: no Attributes file
+}
+
 TEST_F(SmallScene, FilesNamedByTheSceneAreResolvedBesideIt) {
     fs::create_directories(dir_.path() / "sub");
     dir_.write("sub/Attributes", read_text(dir_.path() / "Attributes"));
@@ -314,6 +330,12 @@ TEST_F(SmallScene, Errors) {
     EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 offset 1 0 0 0 0 0 0\n")),
               "offset:2: polygon 0 uses attribute 6 (attribute 1 of the optical surface + offset "
               "5), which is not defined");
+    dir_.write("huge",
+               "3 0 0 0 0 1 1 0 0 2 0 1 0 3 0 0 1 1 1 2 2 2 0 1\n0 3 0 1 2 0 0 1 "
+               "9223372036854775807");
+    EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 huge 1 0 0 0 0 0 0\n")),
+              "huge:2: polygon 0 uses attribute 1 + offset 9223372036854775807, which is not "
+              "defined");
     dir_.write("shapes", "$ 1\n$ 0 0 0 1 0 0 0\n");
     dir_.write("sphere", "3 0 0 0 0 1 1 0 0 2 0 1 0 3 0 0 1 1 1 2 2 2 0 1\n0 3 0 1 2 0 0 1 0 2 1");
     EXPECT_EQ(error(scn("$@shapes\n$ 1\n$ 1\n$ 1 1 0 sphere 1 0 0 0 0 0 0\n"), m),

@@ -1,7 +1,7 @@
 #include "rt/scene/load_scene.h"
 
-#include <algorithm>
 #include <map>
+#include <unordered_map>
 
 #include "rt/scene/attributes_reader.h"
 #include "rt/scene/scene_builder.h"
@@ -13,19 +13,32 @@ namespace rt {
 
 namespace {
 
-std::uint32_t file_index(Scene& scene, const std::string& name) {
-    const auto it = std::find(scene.source_files.begin(), scene.source_files.end(), name);
-    if (it != scene.source_files.end()) {
-        return static_cast<std::uint32_t>(it - scene.source_files.begin());
+// Numbers the files read, in Scene::source_files, each name once.
+class FileTable {
+public:
+    explicit FileTable(Scene& scene) : scene_(scene) {
+        for (std::uint32_t i = 0; i < scene_.source_files.size(); ++i) {
+            index_.emplace(scene_.source_files[i], i);
+        }
     }
-    scene.source_files.push_back(name);
-    return static_cast<std::uint32_t>(scene.source_files.size() - 1);
-}
+    std::uint32_t index(const std::string& name) {
+        const auto [it, fresh] =
+            index_.emplace(name, static_cast<std::uint32_t>(scene_.source_files.size()));
+        if (fresh) {
+            scene_.source_files.push_back(name);
+        }
+        return it->second;
+    }
+
+private:
+    Scene& scene_;
+    std::unordered_map<std::string, std::uint32_t> index_;
+};
 
 SourceText read_listed_file(Scene& scene, const std::filesystem::path& folder,
                             const NamedFile& named, const std::string& kind) {
     SourceText text = read_named_file(folder / named.name, kind, named.name, named.where);
-    file_index(scene, text.name);
+    FileTable(scene).index(text.name);
     return text;
 }
 
@@ -67,10 +80,11 @@ void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path&
                   const ReaderDialect& dialect, Diagnostics& diagnostics) {
     SceneBuilder builder(scene, diagnostics);
     MeshCache cache(scn.surfaces, folder);
+    FileTable files(scene);
     for (const ScnSurface& entry : scn.surfaces) {
         const OpticalSurface& s = entry.surface;
         const std::filesystem::path path = folder / s.file;
-        const std::uint32_t file = file_index(scene, path.string());
+        const std::uint32_t file = files.index(path.string());
         const SurfaceMesh& mesh = cache.get(s, [&] {
             if (diagnostics.tracing()) {
                 diagnostics.trace(s.where.to_string() + ": reading optical surface file '" +

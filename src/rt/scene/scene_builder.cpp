@@ -119,10 +119,19 @@ void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
 std::uint32_t SceneBuilder::attribute_index(const Placing& placing,
                                             const MeshPolygon& polygon) const {
     const OpticalSurface& surface = placing.entry.surface;
-    const long number = surface.attribute_number + polygon.attribute_offset;
-    const auto it = attribute_by_number_.find(number);
+    long number = 0;
+    // A sum that overflows names no attribute; it must not wrap round onto one.
+    const bool overflow =
+        __builtin_add_overflow(surface.attribute_number, polygon.attribute_offset, &number);
+    const auto it = overflow ? attribute_by_number_.end() : attribute_by_number_.find(number);
     if (it != attribute_by_number_.end()) {
         return it->second;
+    }
+    if (overflow) {
+        throw InputError(
+            polygon_location(placing, polygon),
+            fmt::format("polygon {} uses attribute {} + offset {}, which is not defined",
+                        polygon.number, surface.attribute_number, polygon.attribute_offset));
     }
     if (polygon.attribute_offset == 0) {
         throw InputError(surface.where, fmt::format("optical surface '{}' uses attribute {}, which "

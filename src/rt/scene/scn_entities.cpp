@@ -89,8 +89,6 @@ void read_entities(ItemStream& scn, const ReaderDialect& dialect, ScnFile& scene
         const std::string what = fmt::format("the optical surface count of entity {}", e);
         const std::int64_t surfaces = scn.count(what, kMaxSurfacesPerEntity);
         scn.end_item();
-        scene.surfaces.reserve(scene.surfaces.size() +
-                               static_cast<std::size_t>(std::min<std::int64_t>(surfaces, 1024)));
         for (std::int64_t k = 0; k < surfaces; ++k) {
             ScnSurface s;
             s.surface.entity = static_cast<int>(e);
