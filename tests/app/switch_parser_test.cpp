@@ -103,20 +103,22 @@ TEST(SwitchParser, GluedNumbers) {
     EXPECT_EQ(usage_error({"s", "-m2.0x"}), "-m: expected a number after -m, found '2.0x'");
     EXPECT_EQ(usage_error({"s", "-mnan"}), "-m: expected a number after -m, found 'nan'");
     EXPECT_EQ(usage_error({"s", "-m1e999"}), "-m: expected a number after -m, found '1e999'");
-    EXPECT_EQ(usage_error({"s", "-m", "2.0"}),
-              "-m: expected a number after -m, found nothing (attached, as in -m2.0)");
+    EXPECT_EQ(usage_error({"s", "-m", "x"}), "-m: expected a number after -m, found 'x'");
     EXPECT_EQ(usage_error({"s", "-A40.0"}),
               "-A: expected two numbers separated by a comma after -A, found '40.0'");
     EXPECT_EQ(usage_error({"s", "-A40.0,"}),
               "-A: expected two numbers separated by a comma after -A, found '40.0,'");
     EXPECT_EQ(usage_error({"s", "-A"}),
-              "-A: expected two numbers separated by a comma after -A, found nothing (attached, "
-              "as in -A40.0,1.0)");
+              "-A: expected two numbers separated by a comma after -A, found nothing");
 }
 
 TEST(SwitchParser, AttachedOrSeparateArguments) {
     EXPECT_EQ(parse_command_line({"s", "-L250"}).start_line, 250);
     EXPECT_EQ(parse_command_line({"s", "-L", "250"}).start_line, 250);
+    EXPECT_EQ(parse_command_line({"s", "-m", "2.5"}).display_multiplier, 2.5);
+    EXPECT_EQ(parse_command_line({"s", "-A", "40,2"}).attenuation_constant, 2.0);
+    EXPECT_EQ(parse_command_line({"s", "-m", "2.5", "-n"}).given_switches,
+              (std::vector<std::string>{"-m 2.5", "-n"}));
     // -Wc is not implemented yet: reaching that verdict means its argument was read and checked.
     EXPECT_EQ(usage_error({"s", "-Wc", "0.7"}),
               "not implemented: -Wc: the conical Warn light is not implemented yet");

@@ -18,8 +18,8 @@ constexpr std::array<std::string_view, 7> kRules = {
     "SCENE is the one argument not starting with '-': the file SCENE.scn, or SCENE as given. The "
     "picture goes to SCENE.gro in the current folder.",
     "Switches come in any order. The longest spelling wins: -dsp is not -ds followed by p.",
-    "Numbers are attached to their switch (-m2.0, -A40.0,1.0); -Wc and the whole-number switches "
-    "(-L -tv -od -ol -ss) also take a separate one (-Wc 0.7, -L 250).",
+    "A switch's argument may be attached (-m2.0, -A40.0,1.0, -L250) or follow after a space "
+    "(-m 2.0, -Wc 0.7, -L 250).",
     "Each switch may be given once (only --output repeats). -S, -C, -P and -W choose one thing "
     "each: give at most one switch of each. -O1 must be used alone.",
     "-Po or -Pt must be given if and only if the .scn has the smooth-shading field, -M if and "
@@ -178,14 +178,15 @@ std::string argument_text(const SwitchSpec& spec) {
         case ArgForm::None:
         case ArgForm::SeparateText:
             return "";
-        case ArgForm::Number:
         case ArgForm::SeparateInteger:
             return operand_text(spec.first);
+        case ArgForm::Number:
         case ArgForm::NumberGluedOrSeparate:
         case ArgForm::Integer:
             return cat({operand_text(spec.first), ", attached or separate"});
         case ArgForm::Pair:
-            return cat({operand_text(spec.first), ", ", operand_text(spec.second)});
+            return cat({operand_text(spec.first), ", ", operand_text(spec.second),
+                        ", attached or separate"});
     }
     return "";
 }

@@ -135,6 +135,9 @@ std::filesystem::path default_gro_path(const std::string& scene_argument) {
 }
 
 RunOutcome run(const Options& options, const RunConsole& console) {
+    for (const std::string& output : options.outputs) {
+        (void)image_format_for(output);  // refuse an unknown format before hours of rendering
+    }
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
     diagnostics.set_note_sink(console.note);

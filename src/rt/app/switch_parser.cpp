@@ -91,9 +91,6 @@ std::optional<std::string> family_rule(std::string_view argument) {
 [[noreturn]] void expected(const SwitchSpec& spec, std::string_view what, std::string_view text) {
     std::string message = cat(
         {spec.spelling, ": expected ", what, " after ", spec.spelling, ", found ", found(text)});
-    if (text.empty() && (spec.form == ArgForm::Number || spec.form == ArgForm::Pair)) {
-        message += cat({" (attached, as in ", spec.example, ")"});
-    }
     throw UsageError(message);
 }
 
@@ -161,10 +158,8 @@ private:
     std::size_t next_ = 0;
 };
 
-bool takes_separate(ArgForm form) {
-    return form == ArgForm::NumberGluedOrSeparate || form == ArgForm::Integer ||
-           form == ArgForm::SeparateText || form == ArgForm::SeparateInteger;
-}
+// Every argument may be attached ("-m2.0") or follow after a space ("-m 2.0", "-Wc 0.7").
+bool takes_separate(ArgForm form) { return form != ArgForm::None; }
 
 SwitchArgument read_argument(const SwitchSpec& spec, std::string_view text) {
     SwitchArgument argument;
