@@ -1,6 +1,6 @@
 // The .gro picture file `rt` writes and `show` reads (manual 1.2). The manual never gives its
 // layout, so this one is ours: a text header, then the window's pixels as little-endian float32
-// RGB. docs/gro.md describes it in full.
+// RGB. docs/formats.md describes it in full.
 #pragma once
 
 #include <filesystem>
