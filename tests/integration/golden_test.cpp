@@ -1,0 +1,62 @@
+// Whole pictures: the shipped scenes against reference images, and independence from threads.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "rt/image/compare.h"
+#include "rt/image/png_format.h"
+#include "support/run_program.h"
+#include "support/temp_dir.h"
+
+namespace rt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Tolerance: references are regenerated only on purpose; a render may differ from its reference
+// by rounding (a channel off by 2 or less) and in at most 0.1 % of pixels by more, e.g. where a
+// ray grazes an edge and another compiler's arithmetic decides differently.
+constexpr int kChannelTolerance = 2;
+constexpr double kPixelFractionTolerance = 0.001;
+constexpr double kMeanTolerance = 0.25;
+
+fs::path render(const TempDir& dir, const std::string& scene, const std::string& output,
+                const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args{(source_dir() / "scenes" / scene).string(), "-n", "--quiet",
+                                  "--output", output};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const ProgramResult r = run_program("rt", args, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return dir.path() / output;
+}
+
+TEST(Golden, TwocubesMatchesItsReference) {
+    const TempDir dir;
+    const fs::path made = render(dir, "twocubes", "twocubes.png");
+    const Image8 got = read_png(made);
+    const Image8 want = read_png(source_dir() / "tests/data/golden/twocubes.png");
+    ASSERT_EQ(got.width, want.width);
+    ASSERT_EQ(got.height, want.height);
+    const ImageDifference d = compare_images(got, want, kChannelTolerance);
+    EXPECT_LE(d.fraction_over_threshold, kPixelFractionTolerance);
+    EXPECT_LE(d.mean_absolute_difference, kMeanTolerance);
+    if (HasFailure()) {
+        fs::copy_file(made, fs::temp_directory_path() / "rt-golden-twocubes-got.png",
+                      fs::copy_options::overwrite_existing);
+        ADD_FAILURE() << "the render was kept as " << fs::temp_directory_path()
+                      << "/rt-golden-twocubes-got.png";
+    }
+}
+
+TEST(Golden, SamePictureWhateverTheThreadCount) {
+    const TempDir dir;
+    const std::string one = read_text(render(dir, "twocubes", "one.ppm", {"--threads", "1"}));
+    const std::string two = read_text(render(dir, "twocubes", "two.ppm", {"--threads", "2"}));
+    const std::string five = read_text(render(dir, "twocubes", "five.ppm", {"--threads", "5"}));
+    ASSERT_FALSE(one.empty());
+    EXPECT_TRUE(one == two);
+    EXPECT_TRUE(one == five);
+}
+
+}  // namespace
+}  // namespace rt::test
