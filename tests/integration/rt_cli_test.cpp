@@ -109,5 +109,35 @@ TEST_F(RtProgram, ParseTraceWithDf) {
     EXPECT_NE(r.err.find("cube:"), std::string::npos);
 }
 
+TEST_F(RtProgram, DashLDrawsOnlyFromThatLineUp) {
+    write_small_scene("small.scn", "200 300 209 309");
+    const ProgramResult r = rt({"scenes/small", "-n", "-L305", "--output", "a.ppm"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // Rows 300..305 of the window 300..309: a 10 x 6 picture.
+    EXPECT_EQ(read_text(at("a.ppm")).substr(0, 9), "P6\n10 6\n");
+    EXPECT_EQ(rt({"scenes/small", "-n", "-L299"}).exit_code, 2);
+}
+
+TEST_F(RtProgram, AutoCenteringPrintsTheLookPoint) {
+    std::string scene = read_text(at("scenes/twocubes.scn"));
+    scene.replace(scene.find("$ 0 2 1 4"), 9, "$ 1 2 1 4");
+    scene.replace(scene.find("$ 0 0 511 399"), 13, "$ 0 0 3 3");
+    dir_.write("scenes/centred.scn", scene);
+    const ProgramResult r = rt({"scenes/centred", "-n"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("auto-centering: look point set to"), std::string::npos) << r.err;
+}
+
+TEST_F(RtProgram, ShowReadsWhatRtWrote) {
+    write_small_scene("small.scn", "200 300 209 309");
+    ASSERT_EQ(rt({"scenes/small", "-m2.0"}).exit_code, 0);
+    const ProgramResult info = run_program("show", {"small", "--info"}, dir_.path());
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NE(info.out.find("-m2.0"), std::string::npos) << info.out;
+    const ProgramResult png = run_program("show", {"small.gro", "--output", "s.png"}, dir_.path());
+    EXPECT_EQ(png.exit_code, 0) << png.err;
+    EXPECT_TRUE(fs::exists(at("s.png")));
+}
+
 }  // namespace
 }  // namespace rt::test
