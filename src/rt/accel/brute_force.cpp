@@ -7,12 +7,15 @@ namespace rt {
 std::optional<Hit> BruteForce::closest_hit(const Ray& ray, Interval t,
                                            TraceCounters& counters) const {
     const RaySpace space(ray);
+    if (!space.valid()) {
+        return std::nullopt;
+    }
     std::optional<Hit> nearest;
     const auto count = static_cast<std::uint32_t>(scene_.polygons.size());
     for (std::uint32_t id = 0; id < count; ++id) {
-        // A hit at the same t as the nearest so far is not nearer: ties go to the lowest id.
-        const std::optional<double> hit = intersect_polygon(space, scene_, id, t);
-        if (hit) {
+        // The interval shrinks to the nearest hit so far, open at both ends: a later polygon at
+        // the same t is not nearer, so ties go to the lowest id.
+        if (const std::optional<double> hit = intersect_polygon(space, scene_, id, t)) {
             nearest = Hit{*hit, id};
             t.max = *hit;
         }
@@ -23,6 +26,9 @@ std::optional<Hit> BruteForce::closest_hit(const Ray& ray, Interval t,
 
 bool BruteForce::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     const RaySpace space(ray);
+    if (!space.valid()) {
+        return false;
+    }
     const auto count = static_cast<std::uint32_t>(scene_.polygons.size());
     for (std::uint32_t id = 0; id < count; ++id) {
         ++counters.polygon_tests;

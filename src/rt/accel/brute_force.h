@@ -1,5 +1,6 @@
-// Brute force (header "0 0", manual 1.3 and 3.1): every ray is tested against every polygon.
-// The reference every other intersection method must agree with.
+// Brute force (.scn header "0 0", manual 1.3 and 3.1): every ray is tested against every polygon.
+// The reference every other intersection method must agree with, so it is kept plain. It counts
+// polygon tests only: the caller counts its rays and hits.
 #pragma once
 
 #include <memory>

@@ -11,18 +11,29 @@
 
 namespace rt {
 
-/// Mean value coordinates (Floater 2003) of `point` in the planar polygon `corners` with unit
-/// normal `normal`: weights summing to 1, exact at the corners and along the edges, smooth inside,
-/// and valid for concave polygons. weights.size() must equal corners.size().
+/// Mean value coordinates (Floater 2003; Hormann and Floater 2006) of `point` in the planar
+/// polygon `corners` with unit normal `normal`, measured in the polygon's plane: weights summing
+/// to 1, exactly 1 at a corner the point equals, linear along the edges, smooth inside, valid for
+/// convex and concave polygons, reproducing linear functions. Only the first corners.size()
+/// weights are written; weights.size() must be at least corners.size(). Equal weights where the
+/// coordinates are undefined (a degenerate polygon).
 void mean_value_weights(std::span<const Vec3> corners, const Vec3& normal, const Vec3& point,
                         std::span<double> weights);
 
-/// The vertex normals of the polygon's corners blended by mean value coordinates; the polygon's
-/// own normal where they cancel out.
+/// The mean value coordinates of `point` in scene polygon `polygon`, one per corner in loop
+/// order; weights.size() must be at least the polygon's corner count.
+void polygon_weights(const Scene& scene, std::uint32_t polygon, const Vec3& point,
+                     std::span<double> weights);
+
+/// The unit vertex normals of the polygon's corners blended by its mean value coordinates at
+/// `point`; the polygon's own normal where they cancel out or the scene has no vertex normals.
 Vec3 interpolated_normal(const Scene& scene, std::uint32_t polygon, const Vec3& point);
 
-/// The outward normal of the shape at `point` for a polygon of mark Sphere, Cylinder or Cone,
-/// turned to agree with the polygon's outward normal; that normal where the shape gives none.
+/// The outward normal of the shape at `point` for a polygon of mark Sphere (point - centre),
+/// Cylinder (the part of point - axis point perpendicular to the axis) or Cone (the normal of the
+/// infinite cone, half-angle in degrees, along the line from the apex through the point), turned
+/// to agree with the polygon's outward normal. The polygon's normal for the other marks and
+/// wherever the shape gives none (the point on the axis, a zero axis, ...).
 Vec3 shape_normal(const Shape& shape, PolygonMark mark, const Vec3& point,
                   const Vec3& polygon_normal);
 

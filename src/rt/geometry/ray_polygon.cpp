@@ -1,8 +1,144 @@
+// Why this test is watertight, and why it never hits twice.
+//
+// 1. Every corner is carried into the ray's 2D space by RaySpace::project: the same operations
+//    on the same inputs, so a corner shared by neighbouring polygons has the same (x, y) bits in
+//    each. The ray is the point (0, 0) there.
+//
+// 2. Inside or outside is Sunday's winding number of (0, 0). An edge a->b crosses upward when
+//    y_a <= 0 < y_b and downward when y_b <= 0 < y_a; an upward crossing counts +1 if the edge
+//    function E = x_a*y_b - y_a*x_b is > 0 (the edge passes to the right of the ray), a downward
+//    one -1 if E < 0. The sign of E is EXACT (edge_sign: a filtered float evaluation, exact
+//    expansion arithmetic when it is too close to call), so every decision is the exact one for
+//    the projected corners.
+//
+// 3. Those rules are exactly the exact winding number of the displaced point P = (e, e^2) for an
+//    infinitesimal e > 0. Half-open in y: a corner with y == 0 is below P. On an edge crossing
+//    y = 0, E(P) = E(0) - e (y_b - y_a) + e^2 (x_b - x_a); with E(0) == 0 the e term decides, and
+//    it is negative for an upward edge and positive for a downward one, i.e. "not counted", which
+//    is what the strict signs give. P lies on no projected edge and on no corner (E(P) vanishes
+//    for every small e only when the edge has zero length), so the displaced ray meets no edge or
+//    corner of any polygon.
+//
+// 4. The degenerate zero-E cases on the ray's own line need nothing more:
+//    - the ray through a corner or along an edge's projection (E == 0, or a corner at (0, 0)):
+//      decided by P as in 3, the same way for every polygon sharing that corner or edge;
+//    - an edge lying on y == 0 (horizontal through the ray): both ends are "below" P, so it never
+//      crosses, in either direction, for either neighbour;
+//    - a polygon seen edge-on (the ray in its plane): exactly, its projection has no area and P is
+//      outside it. But its corners' rounded projections may enclose a sliver of area around P;
+//      then the displaced ray really does pass through it (and not through the neighbours on that
+//      side), so it must count as a hit or there would be a crack. The plane gives no usable depth
+//      for such a grazing hit, so it is taken from the corners: the plane's t clamped to the
+//      range of the corners' depths along the ray, or the nearest corner's depth for a ray
+//      exactly parallel to the plane.
+//
+// 5. So every polygon is asked the same question, exactly: does it contain the one displaced point
+//    P? P lies on no edge and no corner, so of the polygons whose projections meet around a shared
+//    edge or corner the ray crosses, exactly one contains it: never none (no crack), never two (no
+//    double hit). This holds whichever way the neighbours' loops run. With consistently oriented
+//    loops the neighbour walks the shared edge as b->a: the crossing classes swap (upward for one
+//    is downward for the other, by the same comparisons) and edge_sign(b, a) == -edge_sign(a, b),
+//    so the edge adds +1 to one polygon exactly when it adds -1 to the other.
+//
+// The depth t comes from each polygon's own plane; it does not take part in the decision above.
+// The argument assumes IEEE double without fused multiply-adds in project() (the project builds
+// in ISO mode, where GCC and Clang do not contract across statements); edge_sign is exact either
+// way.
 #include "rt/geometry/ray_polygon.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "rt/geometry/exact_edge_sign.h"
+
 namespace rt {
+
+namespace {
+
+constexpr double kEpsilon = 0x1p-53;
+// Shewchuk's bound on the rounding error of a*b - c*d: (3 eps + 16 eps^2) (|a*b| + |c*d|).
+constexpr double kEdgeErrorBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
+// Below this the products may have lost bits to underflow and the bound no longer holds.
+constexpr double kSmallestTrusted = 0x1p-900;
+
+// Sunday's winding number over any source of corners, so the span and the Scene forms share one
+// loop (and therefore one decision).
+template <class CornerAt>
+int winding_of(const RaySpace& space, std::uint32_t count, CornerAt corner_at) {
+    if (!space.valid() || count < 3) {
+        return 0;
+    }
+    int winding = 0;
+    double xa = 0.0;
+    double ya = 0.0;
+    space.project(corner_at(count - 1), xa, ya);
+    for (std::uint32_t k = 0; k < count; ++k) {
+        double xb = 0.0;
+        double yb = 0.0;
+        space.project(corner_at(k), xb, yb);
+        if (ya <= 0.0) {
+            if (yb > 0.0 && edge_sign(xa, ya, xb, yb) > 0) {
+                ++winding;
+            }
+        } else if (yb <= 0.0 && edge_sign(xa, ya, xb, yb) < 0) {
+            --winding;
+        }
+        xa = xb;
+        ya = yb;
+    }
+    return winding;
+}
+
+bool inside(double t, Interval interval) { return t > interval.min && t < interval.max; }
+
+// Below this |cos| between the normal and the ray the plane's t is ill-conditioned.
+constexpr double kGrazing = 1e-6;
+
+// The range of the corners' depths (t of their projections onto the ray).
+template <class CornerAt>
+void corner_depths(const Ray& ray, std::uint32_t count, CornerAt corner_at, double& nearest,
+                   double& farthest) {
+    const double scale = 1.0 / dot(ray.direction, ray.direction);
+    nearest = farthest = dot(corner_at(0) - ray.origin, ray.direction) * scale;
+    for (std::uint32_t k = 1; k < count; ++k) {
+        const double depth = dot(corner_at(k) - ray.origin, ray.direction) * scale;
+        nearest = std::min(nearest, depth);
+        farthest = std::max(farthest, depth);
+    }
+}
+
+// The one hit test behind every public form: the decision is the winding number alone; the depth
+// is the plane's, or for a polygon seen (nearly) edge-on the clamped depth argued above.
+template <class CornerAt>
+std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uint32_t count,
+                             CornerAt corner_at, Interval t) {
+    if (!space.valid() || count < 3) {
+        return std::nullopt;
+    }
+    const Ray& ray = space.ray();
+    const double denominator = dot(normal, ray.direction);
+    const double along = dot(normal, corner_at(0) - ray.origin) / denominator;
+    if (std::fabs(denominator) > space.grazing_limit() && std::isfinite(along)) {
+        // The plane first: one dot product rejects most polygons before any corner is projected.
+        if (!inside(along, t) || winding_of(space, count, corner_at) == 0) {
+            return std::nullopt;
+        }
+        return along;
+    }
+    if (winding_of(space, count, corner_at) == 0) {
+        return std::nullopt;
+    }
+    double nearest = 0.0;
+    double farthest = 0.0;
+    corner_depths(ray, count, corner_at, nearest, farthest);
+    const double depth = std::isfinite(along) ? std::clamp(along, nearest, farthest) : nearest;
+    if (!inside(depth, t)) {
+        return std::nullopt;
+    }
+    return depth;
+}
+
+}  // namespace
 
 RaySpace::RaySpace(const Ray& ray) : ray_(ray) {
     const Vec3& d = ray.direction;
@@ -16,47 +152,55 @@ RaySpace::RaySpace(const Ray& ray) : ray_(ray) {
     kz_ = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     kx_ = (kz_ + 1) % 3;
     ky_ = (kx_ + 1) % 3;
+    // |shear| <= 1 because d[kz] is the largest component.
     shear_x_ = d[kx_] / d[kz_];
     shear_y_ = d[ky_] / d[kz_];
+    grazing_limit_ = kGrazing * length(d);
 }
 
 void RaySpace::project(const Vec3& corner, double& x, double& y) const {
     const Vec3 a = corner - ray_.origin;
-    x = a[kx_] - shear_x_ * a[kz_];
-    y = a[ky_] - shear_y_ * a[kz_];
+    // Separate statements: nothing for a compiler to fuse into a multiply-add.
+    const double along_x = shear_x_ * a[kz_];
+    const double along_y = shear_y_ * a[kz_];
+    x = a[kx_] - along_x;
+    y = a[ky_] - along_y;
 }
 
-// Sunday's winding number of the origin with respect to the projected loop. An edge counts
-// upward when y_a <= 0 < y_b and downward when y_b <= 0 < y_a (the half-open rule moves the
-// origin infinitesimally up), and only for a strictly positive (upward) or strictly negative
-// (downward) edge function E = x_a*y_b - y_a*x_b (which moves it infinitesimally along +x).
-// E of an edge b->a is exactly -E of a->b in floating point, and a shared corner projects to the
-// same bits for every polygon, so neighbours see the same displaced origin: it lies inside exactly
-// one of them. A ray in the polygon's plane projects the loop onto a line through the origin:
-// every E is 0 and the ray misses, as it should.
-bool ray_passes_through(const RaySpace& space, std::span<const Vec3> corners) {
-    if (!space.valid() || corners.size() < 3) {
-        return false;
-    }
-    int winding = 0;
-    double xa = 0.0;
-    double ya = 0.0;
-    space.project(corners.back(), xa, ya);
-    for (const Vec3& corner : corners) {
-        double xb = 0.0;
-        double yb = 0.0;
-        space.project(corner, xb, yb);
-        if (ya <= 0.0) {
-            if (yb > 0.0 && xa * yb - ya * xb > 0.0) {
-                ++winding;
-            }
-        } else if (yb <= 0.0 && xa * yb - ya * xb < 0.0) {
-            --winding;
+int edge_sign(double xa, double ya, double xb, double yb) {
+    const double left = xa * yb;
+    const double right = ya * xb;
+    const double e = left - right;  // swapping a and b negates this exactly
+    const double magnitude = std::fabs(left) + std::fabs(right);
+    const double bound = kEdgeErrorBound * magnitude;
+    if (magnitude >= kSmallestTrusted && magnitude < HUGE_VAL) {
+        if (e > bound) {
+            return 1;
         }
-        xa = xb;
-        ya = yb;
+        if (e < -bound) {
+            return -1;
+        }
     }
-    return winding != 0;
+    if (std::isnan(xa) || std::isnan(ya) || std::isnan(xb) || std::isnan(yb)) {
+        return 0;
+    }
+    return exact_edge_sign(xa, ya, xb, yb);
+}
+
+int winding_number(const RaySpace& space, std::span<const Vec3> corners) {
+    return winding_of(space, static_cast<std::uint32_t>(corners.size()),
+                      [&](std::uint32_t k) -> const Vec3& { return corners[k]; });
+}
+
+int winding_number(const RaySpace& space, const Scene& scene, std::uint32_t polygon) {
+    const Polygon& p = scene.polygons[polygon];
+    const std::uint32_t* ids = scene.corners.data() + p.first_corner;
+    return winding_of(space, p.corner_count,
+                      [&](std::uint32_t k) -> const Vec3& { return scene.positions[ids[k]]; });
+}
+
+bool ray_passes_through(const RaySpace& space, std::span<const Vec3> corners) {
+    return winding_number(space, corners) != 0;
 }
 
 std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& normal) {
@@ -71,32 +215,23 @@ std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& n
     return t;
 }
 
+std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> corners,
+                                        const Vec3& normal, Interval t) {
+    return hit_of(RaySpace(ray), normal, static_cast<std::uint32_t>(corners.size()),
+                  [&](std::uint32_t k) -> const Vec3& { return corners[k]; }, t);
+}
+
 std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
                                         std::uint32_t polygon, Interval t) {
     const Polygon& p = scene.polygons[polygon];
-    const std::optional<double> along =
-        plane_hit(space.ray(), scene.corner_position(p, 0), p.normal);
-    if (!along || !(*along > t.min && *along < t.max)) {
-        return std::nullopt;
-    }
-    // Corners are few; gather them so the winding test sees one contiguous loop.
-    constexpr std::uint32_t kInline = 16;
-    Vec3 inline_corners[kInline];
-    std::vector<Vec3> many;
-    std::span<Vec3> corners;
-    if (p.corner_count <= kInline) {
-        corners = std::span<Vec3>(inline_corners, p.corner_count);
-    } else {
-        many.resize(p.corner_count);
-        corners = many;
-    }
-    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-        corners[k] = scene.corner_position(p, k);
-    }
-    if (!ray_passes_through(space, corners)) {
-        return std::nullopt;
-    }
-    return along;
+    const std::uint32_t* ids = scene.corners.data() + p.first_corner;
+    return hit_of(space, p.normal, p.corner_count,
+                  [&](std::uint32_t k) -> const Vec3& { return scene.positions[ids[k]]; }, t);
+}
+
+std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,
+                                        Interval t) {
+    return intersect_polygon(RaySpace(ray), scene, polygon, t);
 }
 
 }  // namespace rt

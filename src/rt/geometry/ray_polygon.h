@@ -1,26 +1,33 @@
 // Exact, watertight ray-polygon intersection for planar polygons of any number of corners,
 // convex or concave (manual 1.3: "the most time-consuming process ... is finding intersections").
+// Every accelerator calls these routines on the untransformed ray, so they all agree bit for bit
+// with brute force. Why a ray through a shared edge or corner hits exactly one of the polygons
+// sharing it is argued in ray_polygon.cpp.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <span>
 
+#include "rt/core/vec3.h"
 #include "rt/geometry/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
 
-/// A ray prepared once for many polygon tests: the shear that takes it to the +z axis
-/// (Woop, Benthin and Wald, "Watertight ray/triangle intersection", JCGT 2013).
+/// A ray prepared once for many polygon tests: the shear that takes it to the z axis of its own
+/// 2D space (Woop, Benthin and Wald, "Watertight ray/triangle intersection", JCGT 2013).
 class RaySpace {
 public:
     explicit RaySpace(const Ray& ray);
     const Ray& ray() const { return ray_; }
-    /// The corner's 2D position seen along the ray; bit-identical for a corner shared by
-    /// neighbouring polygons, which is what makes the test watertight.
-    void project(const Vec3& corner, double& x, double& y) const;
+    /// False for a zero, infinite or NaN direction, or a non-finite origin: every test misses.
     bool valid() const { return valid_; }
+    /// The corner's 2D position seen along the ray (the ray itself is at 0,0). The same arithmetic
+    /// for every corner, so a corner shared by neighbouring polygons gets the same bits in each.
+    void project(const Vec3& corner, double& x, double& y) const;
+    /// |dot(unit normal, direction)| at or below which a polygon counts as seen edge-on.
+    double grazing_limit() const { return grazing_limit_; }
 
 private:
     Ray ray_;
@@ -29,21 +36,43 @@ private:
     int kz_ = 2;
     double shear_x_ = 0.0;
     double shear_y_ = 0.0;
+    double grazing_limit_ = 0.0;
     bool valid_ = false;
 };
 
-/// Whether the ray passes through the polygon whose corners are given in loop order, by the
-/// winding number of the ray in its own 2D space. Ties (the ray exactly on an edge or a corner)
-/// are decided by one consistent infinitesimal displacement of the ray, so a ray through a shared
-/// edge or vertex of a closed mesh goes through exactly one of the polygons sharing it.
+/// The exact sign (-1, 0 or +1) of x_a * y_b - y_a * x_b, the edge function of the projected
+/// edge a->b seen from the ray. Antisymmetric by construction: edge_sign(b, a) == -edge_sign(a, b)
+/// for every input, NaN included (which gives 0).
+int edge_sign(double xa, double ya, double xb, double yb);
+
+/// The winding number of the ray around the loop of corners (in loop order), the ray being moved
+/// by one consistent infinitesimal displacement so that it never meets an edge or a corner.
+/// 0 for an invalid RaySpace or fewer than 3 corners.
+int winding_number(const RaySpace& space, std::span<const Vec3> corners);
+int winding_number(const RaySpace& space, const Scene& scene, std::uint32_t polygon);
+
+/// Whether the ray's line passes through the polygon: a nonzero winding number (so the middle of a
+/// self-crossing star counts as inside).
 bool ray_passes_through(const RaySpace& space, std::span<const Vec3> corners);
 
-/// The t at which the ray meets the plane through `point` with normal `normal`, if the ray is
-/// not parallel to it.
+/// The t at which the ray meets the plane through `point` with normal `normal`:
+/// dot(normal, point - origin) / dot(normal, direction); none for a ray parallel to the plane or
+/// a non-finite t.
 std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& normal);
 
-/// The t of the ray's hit on scene polygon `polygon`, strictly inside the interval.
+/// The t of the ray's hit on the polygon with these corners and this unit normal, strictly inside
+/// the interval. Hit or miss is decided by winding_number() alone; t is the plane's, except for a
+/// polygon seen (nearly) edge-on, whose t is kept within its corners' depths along the ray.
+std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> corners,
+                                        const Vec3& normal, Interval t);
+
+/// The t of the ray's hit on scene polygon `polygon`, strictly inside the interval. The form to
+/// call in a loop over polygons: the RaySpace is computed once per ray.
 std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
                                         std::uint32_t polygon, Interval t);
+
+/// As above, preparing the ray itself.
+std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,
+                                        Interval t);
 
 }  // namespace rt
