@@ -36,14 +36,16 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",  "-w",   "-m",       "-tv",    "-c",        "-od",    "-oo",       "-ol",    "-on",
-        "-of", "-op",  "-ss",      "-p",     "-r",        "-Sp",    "-Sg",       "-Stg",   "-Stb",
-        "-R",  "-Wr",  "-Wc",      "-Wt",    "-A",        "-T",     "-Co",       "-Ci",    "-Cf",
-        "-Dx", "-De",  "-Dd",      "-Dt",    "-Da",       "-Dl",    "-Ds",       "-Dr",    "-Df",
-        "-Dp", "-Db",  "-Po",      "-Pt",    "-Ot",       "-Oi",    "-Of",       "-O1",    "-K",
-        "-I",  "-L",   "-E",       "-F",     "-Xp",       "-Xr",    "-M",        "-V",     "-dc",
-        "-ds", "-dsp", "-dso",     "-dl",    "-doo",      "-doi",   "-dof",      "-df",    "-dd",
-        "-dx", "-de",  "--output", "--help", "--version", "--seed", "--threads", "--quiet"};
+        "-n",     "-w",       "-m",     "-tv",       "-c",     "-od",       "-oo",     "-ol",
+        "-on",    "-of",      "-op",    "-ss",       "-p",     "-r",        "-Sp",     "-Sg",
+        "-Stg",   "-Stb",     "-R",     "-Wr",       "-Wc",    "-Wt",       "-A",      "-T",
+        "-Co",    "-Ci",      "-Cf",    "-Dx",       "-De",    "-Dd",       "-Dt",     "-Da",
+        "-Dl",    "-Ds",      "-Dr",    "-Df",       "-Dp",    "-Db",       "-Po",     "-Pt",
+        "-Ot",    "-Oi",      "-Of",    "-O1",       "-K",     "-I",        "-L",      "-E",
+        "-F",     "-Xp",      "-Xr",    "-M",        "-V",     "-dc",       "-ds",     "-dsp",
+        "-dso",   "-dl",      "-doo",   "-doi",      "-dof",   "-df",       "-dd",     "-dx",
+        "-de",    "--output", "--help", "--version", "--seed", "--threads", "--accel", "--zbuffer",
+        "--quiet"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -109,7 +111,9 @@ TEST(SwitchTable, StatusesOfThisRelease) {
         "-n",  "-m",  "-c",  "-A",  "-Da", "-Dl", "-Ds", "-Dr", "-Dt", "-Db", "-T",  "-Dd",
         "-Dx", "-Df", "-Dp", "-Of", "-R",  "-M",  "-Po", "-Pt", "-Sp", "-L",  "-dc", "-df"};
     for (const SwitchSpec& spec : switch_table()) {
-        const bool expected = spec.is_long_option() || implemented.contains(spec.spelling);
+        const std::set<std::string_view> long_not_yet = {"--zbuffer"};
+        const bool expected = (spec.is_long_option() && !long_not_yet.contains(spec.spelling)) ||
+                              implemented.contains(spec.spelling);
         EXPECT_EQ(spec.status == Status::Implemented, expected) << spec.spelling;
     }
 }
@@ -273,6 +277,8 @@ std::map<std::string_view, Expectation> expectations() {
           [](const Options& o) { return o.outputs == std::vector<std::string>{"twocubes.png"}; }}},
         {"--seed", {{}, [](const Options& o) { return o.seed == 7; }}},
         {"--threads", {{}, [](const Options& o) { return o.threads == 2; }}},
+        {"--accel", {{}, [](const Options& o) { return o.accel == "bvh"; }}},
+        {"--zbuffer", flag(&Options::zbuffer_first_hits)},
         {"--quiet", flag(&Options::quiet)},
         {"--help", flag(&Options::show_help)},
         {"--version", flag(&Options::show_version)},

@@ -73,6 +73,8 @@ struct Options {
     std::optional<int> seed_size_power;          ///< -ss
     bool profile = false;                        ///< -p
     bool random_rays = false;                    ///< -r
+    std::optional<std::string> accel;            ///< --accel NAME: overrides the scene header
+    bool zbuffer_first_hits = false;             ///< --zbuffer: eye rays from an item buffer
 
     // --- debugging --------------------------------------------------------------------------
     bool print_columns = false;        ///< -dc

@@ -5,9 +5,11 @@
 #include <ctime>
 
 #include "rt/accel/brute_force.h"
+#include "rt/accel/make_accelerator.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
+#include "rt/core/text.h"
 #include "rt/image/image_writer.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/load_scene.h"
@@ -67,17 +69,54 @@ FilmWindow render_window(const Scene& scene, const Options& o) {
     return window;
 }
 
-void note_spatial_encoding(const Scene& scene, const RunConsole& console) {
+// The intersection method: the scene header's (manual 2.2: 0 0 brute force, 1 depth octree,
+// N 0 SEADS), unless --accel names another; -od overrides the octree depth.
+AccelSettings accel_settings(const Scene& scene, const Options& o) {
+    constexpr int kDefaultOctreeDepth = 8;
+    constexpr int kDefaultSeadsResolution = 32;
     const SceneHeader& h = scene.header;
-    if (h.sptncde == 0) {
-        return;
+    AccelSettings a;
+    a.kind = h.sptncde == 0   ? AccelKind::BruteForce
+             : h.sptncde == 1 ? AccelKind::Octree
+                              : AccelKind::Seads;
+    a.octree_depth = h.sptncde == 1 ? h.octr : kDefaultOctreeDepth;
+    a.seads_resolution = h.sptncde > 1 ? h.sptncde : kDefaultSeadsResolution;
+    if (o.accel) {
+        const std::optional<AccelKind> kind = accel_kind_from_name(*o.accel);
+        if (!kind) {
+            throw UsageError("--accel: expected brute, octree, seads, bvh or embree, found " +
+                             quote_token(*o.accel));
+        }
+        a.kind = *kind;
     }
-    const std::string asked = h.sptncde == 1 ? "an octree of depth " + std::to_string(h.octr)
-                                             : "SEADS with " + std::to_string(h.sptncde) +
-                                                   " voxels a side";
-    console.note("the scene asks for " + asked +
-                 "; spatial encoding is not implemented yet, so every ray is tested against "
-                 "every polygon (the picture is the same)");
+    if (o.octree_depth) {
+        a.octree_depth = *o.octree_depth;
+    }
+    a.octlist_power = o.octlist_power;
+    a.seed_size_power = o.seed_size_power;
+    a.new_fillplane = o.new_fillplane;
+    a.accept_near_hits = o.accept_near_hits;
+    a.no_fudge = o.no_fudge;
+    a.terminate_after_voxels = o.terminate_after_voxels;
+    return a;
+}
+
+// A method the scene header asks for but this build lacks falls back to brute force, which gives
+// the same picture; one asked for by --accel is refused.
+std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options& o,
+                                               const RunConsole& console) {
+    const AccelSettings settings = accel_settings(scene, o);
+    try {
+        return make_accelerator(scene, settings);
+    } catch (const NotImplementedError& e) {
+        if (o.accel) {
+            throw;
+        }
+        console.note(std::string(e.what()) +
+                     "; every ray is tested against every polygon instead (the picture is the "
+                     "same)");
+        return make_brute_force(scene);
+    }
 }
 
 class ConsoleObserver : public RenderObserver {
@@ -145,14 +184,13 @@ RunOutcome run(const Options& options, const RunConsole& console) {
         diagnostics.set_trace_sink(console.trace);
     }
     const Scene scene = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
-    note_spatial_encoding(scene, console);
 
     RenderSettings settings;
     settings.shading = shading_settings(options);
     settings.window = render_window(scene, options);
     settings.threads = options.threads;
 
-    const std::unique_ptr<Accelerator> accel = make_brute_force(scene);
+    const std::unique_ptr<Accelerator> accel = build_accelerator(scene, options, console);
     ConsoleObserver observer(console, options.print_columns);
     RenderStatistics statistics;
     Film film = render(scene, *accel, settings, observer, statistics);

@@ -400,6 +400,20 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .first = {"N", whole(0, 1024)},
      .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
      .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2"},
+    {.spelling = "--accel", .form = SeparateText, .topic = SpatialEncoding,
+     .first = {"NAME", {}}, .apply = [](Options& o, A a) { o.accel = a.text; },
+     .summary = "Intersection method: brute, octree, seads, bvh or embree",
+     .details = "Overrides the third and fourth numbers of the scene header; octree and seads take "
+                "their depth or size from the header or 8 (octree depth, -od) and 32 (SEADS "
+                "voxels a side) when the header names another method.",
+     .section = "new", .example = "--accel bvh"},
+    {.spelling = "--zbuffer", .topic = SpatialEncoding,
+     .apply = [](Options& o, A) { o.zbuffer_first_hits = true; },
+     .summary = "Find the eye rays' first hits with a z-buffer",
+     .details = "Rasterises the polygons into an item buffer and takes each eye ray's first "
+                "polygon from it; the rest of the ray tree uses the intersection method.",
+     .section = "3.1", .example = "--zbuffer", .status = NotYet,
+     .feature = "z-buffer first hits"},
     {.spelling = "--quiet", .topic = Program, .apply = [](Options& o, A) { o.quiet = true; },
      .summary = "No progress and no notes; warnings and errors still show", .section = "new",
      .example = "--quiet"},

@@ -1,0 +1,52 @@
+#include "rt/accel/make_accelerator.h"
+
+#include <array>
+#include <string>
+
+#include "rt/accel/brute_force.h"
+#include "rt/core/error.h"
+
+namespace rt {
+
+namespace {
+
+constexpr std::array<std::pair<AccelKind, std::string_view>, 5> kNames{{
+    {AccelKind::BruteForce, "brute"},
+    {AccelKind::Octree, "octree"},
+    {AccelKind::Seads, "seads"},
+    {AccelKind::Bvh, "bvh"},
+    {AccelKind::Embree, "embree"},
+}};
+
+}  // namespace
+
+std::string_view accel_kind_name(AccelKind kind) {
+    for (const auto& [k, name] : kNames) {
+        if (k == kind) {
+            return name;
+        }
+    }
+    return "?";
+}
+
+std::optional<AccelKind> accel_kind_from_name(std::string_view name) {
+    for (const auto& [k, n] : kNames) {
+        if (n == name) {
+            return k;
+        }
+    }
+    return std::nullopt;
+}
+
+std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& settings) {
+    switch (settings.kind) {
+        case AccelKind::BruteForce:
+            return make_brute_force(scene);
+        default:
+            throw NotImplementedError(std::string("the ") +
+                                      std::string(accel_kind_name(settings.kind)) +
+                                      " intersection method is not implemented yet");
+    }
+}
+
+}  // namespace rt
