@@ -1,0 +1,58 @@
+#include "rt/sampling/directions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rt {
+
+namespace {
+
+// cos^(n+1) of the cone's edge: the distribution of c = cos(angle) over the cone has the
+// cumulative (1 - c^(n+1)) / (1 - edge), so inverting it is one power.
+double edge_power(const CosPowerCone& cone) {
+    const double half_angle = std::clamp(cone.half_angle, 0.0, std::numbers::pi / 2);
+    return std::pow(std::cos(half_angle), cone.exponent + 1.0);
+}
+
+Vec3 around(const Vec3& axis, double cos_theta, double phi) {
+    Vec3 tangent;
+    Vec3 bitangent;
+    orthonormal_basis(axis, tangent, bitangent);
+    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+    return tangent * (sin_theta * std::cos(phi)) + bitangent * (sin_theta * std::sin(phi)) +
+           axis * cos_theta;
+}
+
+}  // namespace
+
+void orthonormal_basis(const Vec3& n, Vec3& tangent, Vec3& bitangent) {
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    tangent = {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+    bitangent = {b, sign + n.y * n.y * a, -n.y};
+}
+
+Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u2) {
+    const double edge = edge_power(cone);
+    const double cos_theta = std::pow(1.0 - u1 * (1.0 - edge), 1.0 / (cone.exponent + 1.0));
+    return around(axis, cos_theta, 2.0 * std::numbers::pi * u2);
+}
+
+double mean_cosine(const CosPowerCone& cone) {
+    // E[c] = (n+1)/(n+2) * (1 - c0^(n+2)) / (1 - c0^(n+1)) with c0 the edge's cosine.
+    const double n = cone.exponent;
+    const double c0 = std::cos(std::clamp(cone.half_angle, 0.0, std::numbers::pi / 2));
+    const double lower = 1.0 - std::pow(c0, n + 1.0);
+    if (!(lower > 0.0)) {
+        return 1.0;  // a cone of no width
+    }
+    return (n + 1.0) / (n + 2.0) * (1.0 - std::pow(c0, n + 2.0)) / lower;
+}
+
+Vec3 sample_cosine_hemisphere(const Vec3& normal, double u1, double u2) {
+    return around(normal, std::sqrt(1.0 - u1), 2.0 * std::numbers::pi * u2);
+}
+
+}  // namespace rt

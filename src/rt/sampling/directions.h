@@ -1,0 +1,31 @@
+// Random directions for distributed ray tracing (Cook, Porter and Carpenter 1984; manual 1.3 and
+// 2.3): a specularly reflected or refracted ray is "distributed in a cone with an angle theta and
+// according to a cosine to the power n law".
+#pragma once
+
+#include "rt/core/vec3.h"
+
+namespace rt {
+
+/// Two unit vectors completing the unit axis to a right-handed orthonormal basis (Duff et al.,
+/// "Building an orthonormal basis, revisited", JCGT 2017).
+void orthonormal_basis(const Vec3& axis, Vec3& tangent, Vec3& bitangent);
+
+/// The cone of a distributed ray: directions within `half_angle` radians of the axis, with
+/// density proportional to cos^exponent of the angle to the axis (per unit solid angle).
+struct CosPowerCone {
+    double half_angle = 0.0;  ///< (0, pi/2]: wider cones are clamped to the hemisphere
+    double exponent = 0.0;    ///< >= 0; 0 is uniform over the cone's solid angle
+};
+
+/// A direction of the cone around the unit axis from two uniform numbers in [0, 1): the angle
+/// to the axis by inverting the cone's distribution exactly, the turn around it uniformly.
+Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u2);
+
+/// The mean of cos(angle to the axis) over the cone's distribution (for tests and for -K).
+double mean_cosine(const CosPowerCone& cone);
+
+/// A cosine-weighted direction of the hemisphere around the unit normal (diffuse rays of -Ds).
+Vec3 sample_cosine_hemisphere(const Vec3& normal, double u1, double u2);
+
+}  // namespace rt

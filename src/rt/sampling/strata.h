@@ -1,0 +1,26 @@
+// Stratified, jittered sampling of a unit square in a progressive order: the pixel's n x n strata
+// (manual 2.2, "sample resolution") and the strata of distributed rays are visited so that every
+// prefix is spread over the whole square, which is what lets adaptive sampling stop early.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace rt {
+
+class ProgressiveStrata {
+public:
+    /// nx x ny strata, both at least 1.
+    ProgressiveStrata(int nx, int ny);
+
+    std::uint32_t size() const { return static_cast<std::uint32_t>(order_.size()); }
+    /// The point of the index-th stratum (in progressive order) jittered by (u1, u2) in [0, 1).
+    void point(std::uint32_t index, double u1, double u2, double& x, double& y) const;
+
+private:
+    int nx_;
+    int ny_;
+    std::vector<std::uint32_t> order_;  ///< stratum j * nx + i, in visiting order
+};
+
+}  // namespace rt
