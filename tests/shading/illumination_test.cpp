@@ -42,7 +42,7 @@ struct FloorAndLight {
         const Ray down{{0, 5, 0}, {0, -1, 0}};
         const SurfacePoint s = describe_hit(scene, settings, down, Hit{5.0, 0});
         TraceCounters counters;
-        return local_illumination(context, s, {0, 1, 0}, counters);
+        return local_illumination(context, s, {0, 1, 0}, true, counters);
     }
     test::SceneBuilder builder;
 };

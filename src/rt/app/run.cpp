@@ -51,6 +51,17 @@ ShadingSettings shading_settings(const Options& o) {
     s.both_sides_emit = !o.single_sided_emitters;
     s.far_side_feelers = o.specular_refraction_feelers;
     s.smooth_shaded_opaque = o.phong == PhongShading::Opaque;
+    SamplingSettings& sampling = s.sampling;
+    sampling.seed = o.seed;
+    sampling.distribute = !o.disable_distribution;
+    sampling.adaptive = !o.disable_adaptive;
+    sampling.illuminate_distributed = o.illuminate_distributed;
+    if (o.pixel_stop_probability) {
+        sampling.pixel_stop = {*o.pixel_stop_probability, o.pixel_stop_variance};
+    }
+    if (o.ray_stop_probability) {
+        sampling.ray_stop = {*o.ray_stop_probability, o.ray_stop_variance};
+    }
     return s;
 }
 
@@ -121,8 +132,8 @@ std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options
 
 class ConsoleObserver : public RenderObserver {
 public:
-    ConsoleObserver(const RunConsole& console, bool print_columns)
-        : console_(console), print_columns_(print_columns) {}
+    ConsoleObserver(const RunConsole& console, bool print_columns, bool print_samples)
+        : console_(console), print_columns_(print_columns), print_samples_(print_samples) {}
     void row_done(int /*y*/, int rows_done, int rows_total) override {
         if (console_.progress) {
             console_.progress(rows_done, rows_total);
@@ -132,11 +143,20 @@ public:
     void pixel_started(int x, int y) override {
         console_.trace("line " + std::to_string(y) + " column " + std::to_string(x));
     }
+    bool wants_sample_reports() const override { return print_samples_; }
+    void pixel_sampled(int x, int y, const PixelReport& report) override {
+        console_.trace("pixel " + std::to_string(x) + " " + std::to_string(y) + ": " +
+                       std::to_string(report.samples) + " samples, " +
+                       std::to_string(report.tree.distributed_intersections) +
+                       " intersections distributing " +
+                       std::to_string(report.tree.distributed_rays) + " rays");
+    }
     bool should_stop() override { return console_.should_stop && console_.should_stop(); }
 
 private:
     const RunConsole& console_;
     bool print_columns_;
+    bool print_samples_;
 };
 
 void write_outputs(const Film& film, const Options& options) {
@@ -191,7 +211,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.threads = options.threads;
 
     const std::unique_ptr<Accelerator> accel = build_accelerator(scene, options, console);
-    ConsoleObserver observer(console, options.print_columns);
+    ConsoleObserver observer(console, options.print_columns, options.debug_chi_square);
     RenderStatistics statistics;
     Film film = render(scene, *accel, settings, observer, statistics);
     film.mapping = {options.display_multiplier, options.clip_intensity};

@@ -287,9 +287,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-I", .topic = Illumination,
      .apply = [](Options& o, A) { o.illuminate_distributed = true; },
      .summary = "apply illum. model to distrib. rays as well as shadow feelers",
-     .details = "Gives the distributed rays the full illumination model treatment.",
-     .section = "App.", .example = "-I", .status = NotYet,
-     .feature = "the full illumination model"},
+     .details = "Gives the distributed rays the full illumination model treatment: highlights, and "
+                "distribution of their own reflected and refracted rays (down to maxdist).",
+     .section = "App.", .example = "-I"},
     {.spelling = "-L", .form = Integer, .first = {"the line", whole(0, 1000000)},
      .apply = [](Options& o, A a) { o.start_line = static_cast<int>(a.integer); },
      .summary = "draws only from line 250 up",
@@ -313,8 +313,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
          o.pixel_stop_variance = a.second;
      },
      .summary = "Stop sampling pixels when prob that variance 0.05 is .1",
-     .details = "Chi-square adaptive sampling of pixels; the defaults are 0.2 and 0.2.",
-     .section = "App.", .example = "-Xp0.1,0.05", .status = NotYet, .feature = kAdaptive},
+     .details = "Chi-square adaptive sampling of the n x n samples of a pixel: sampling stops once "
+                "the chance that the variance of the pixel's mean exceeds var (in display levels "
+                "squared) is below prob. The defaults are 0.2 and 0.2.",
+     .section = "App.", .example = "-Xp0.1,0.05"},
     {.spelling = "-Xr", .form = Pair, .topic = AdaptiveSampling,
      .first = {"the probability", kProbability}, .second = {"the variance", kPositive},
      .apply = [](Options& o, A a) {
@@ -322,8 +324,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
          o.ray_stop_variance = a.second;
      },
      .summary = "Ditto, except with distributed rays and not pixels",
-     .details = "Chi-square adaptive sampling of distributed rays.", .section = "App.",
-     .example = "-Xr0.1,0.05", .status = NotYet, .feature = kAdaptive},
+     .details = "Chi-square adaptive sampling of the distributed rays at an intersection (at most "
+                "n x n of them, n the sample resolution), with the same rule as -Xp.", .section = "App.",
+     .example = "-Xr0.1,0.05"},
     {.spelling = "-M", .topic = FileFormat, .apply = [](Options& o, A) { o.dialect.marks = true; },
      .summary = "op surf files mark polys; Shape file name in .scn file",
      .details = "Used if and only if the .scn has a $@shapes line (not with Phigs or Chen's "
@@ -375,8 +378,8 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-dd", .status = NotYet, .feature = "the color debug output"},
     {.spelling = "-dx", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_chi_square = true; }, .summary = "Debug chi-square stuff",
-     .details = "Prints the number of samples at each pixel.", .section = "App.", .example = "-dx",
-     .status = NotYet, .feature = kAdaptive},
+     .details = "Prints, for each pixel, the samples taken, the intersections that distributed rays "
+                "and the distributed rays sent.", .section = "App.", .example = "-dx"},
     {.spelling = "-de", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_exit_culling = true; },
      .summary = "Debug exit ray culling",

@@ -28,7 +28,7 @@ private:
     Vec3 right_;
     Vec3 up_;
     double screen_distance_ = 1.0;
-    double half_width_ = 1.0;   ///< on the screen, in scene units
+    double half_width_ = 1.0;  ///< on the screen, in scene units
     double half_height_ = 1.0;
     double pixels_x_ = 1.0;
     double pixels_y_ = 1.0;

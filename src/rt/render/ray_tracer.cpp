@@ -1,7 +1,10 @@
 #include "rt/render/ray_tracer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
+#include "rt/sampling/chi_square.h"
 #include "rt/shading/optics.h"
 #include "rt/shading/surface_point.h"
 
@@ -20,32 +23,61 @@ double scene_epsilon(const Scene& scene) {
     return kRelativeEpsilon * std::max(1.0, length(hi - lo));
 }
 
+double radians(double degrees) {
+    return degrees * std::numbers::pi / 180.0;
+}
+
+// A distributed direction that fell on the wrong side of the surface is mirrored back across it,
+// so the lobe keeps its energy instead of losing the part cut off by the surface.
+Vec3 keep_on_side(const Vec3& direction, const Vec3& side_normal, bool same_side) {
+    const double along = dot(direction, side_normal);
+    if ((same_side && along > 0.0) || (!same_side && along < 0.0)) {
+        return direction;
+    }
+    return normalize(direction - side_normal * (2.0 * along));
+}
+
 }  // namespace
 
-RayTracer::RayTracer(const Scene& scene, const Accelerator& accel,
-                     const ShadingSettings& settings)
+/// Where the rays of one lobe go: around `axis`, within `cone`, on the `outside` of the surface
+/// (the side the ray came from) or through it; `diffuse` lobes are cosine-weighted hemispheres.
+struct RayTracer::Lobe {
+    Vec3 axis;
+    CosPowerCone cone;
+    bool outside = true;
+    bool diffuse = false;
+};
+
+RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings)
     : scene_(scene),
       accel_(accel),
       settings_(settings),
+      ray_strata_(scene.view.sample_resolution_x, scene.view.sample_resolution_y),
       epsilon_(scene_epsilon(scene)),
-      max_depth_(scene.header.maxdepth) {
+      max_depth_(scene.header.maxdepth),
+      max_distributed_depth_(scene.header.maxdist) {
     if (settings_.shadow_feelers) {
         lights_ = collect_point_lights(scene, scene.header.lghtick);
     }
+    diffuse_rays_ = !settings_.shadow_feelers || scene.header.lghtick == 0;
 }
 
-Rgb RayTracer::trace(const Ray& ray, int depth, TraceCounters& counters) const {
-    ++counters.rays;
-    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
+Rgb RayTracer::trace(const Ray& ray, int depth, bool distributed, SampleContext& sample) const {
+    ++sample.counters.rays;
+    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, sample.counters);
     if (!hit) {
         return {};  // the background is black
     }
-    ++counters.hits;
+    ++sample.counters.hits;
     const SurfacePoint s = describe_hit(scene_, settings_, ray, *hit);
+    // Without -I a distributed ray's hit gets the simple model: no highlights and no further
+    // distribution (manual Appendix -I: "the distributed rays are not given the full
+    // illumination model treatment").
+    const bool full = !distributed || settings_.sampling.illuminate_distributed;
     const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_};
-    Rgb result = local_illumination(context, s, -ray.direction, counters);
+    Rgb result = local_illumination(context, s, -ray.direction, full, sample.counters);
     if (depth < max_depth_) {
-        result += secondary_rays(ray, s, depth, counters);
+        result += secondary_rays(ray, s, depth, full, sample);
     }
     if (settings_.attenuate_rays) {
         result *= settings_.attenuation(hit->t);
@@ -53,28 +85,49 @@ Rgb RayTracer::trace(const Ray& ray, int depth, TraceCounters& counters) const {
     return result;
 }
 
-Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth,
-                              TraceCounters& counters) const {
-    Rgb result;
+Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
+                              SampleContext& sample) const {
     const Attribute& a = *s.attribute;
+    const bool distribute =
+        full && settings_.sampling.distribute && depth <= max_distributed_depth_;
+    bool distributed_here = false;
+    Rgb result;
     if (settings_.reflection && a.specular > 0.0) {
         Vec3 mirrored = reflect(ray.direction, s.shading_normal);
         if (dot(mirrored, s.facing_normal) <= 0.0) {
             mirrored = reflect(ray.direction, s.facing_normal);  // smoothing bent it inside
         }
-        result += trace({s.position, normalize(mirrored)}, depth + 1, counters) * a.specular;
+        const Lobe lobe{normalize(mirrored),
+                        {radians(a.reflect_cone_degrees), a.reflect_cone_exponent},
+                        true,
+                        false};
+        distributed_here = distributed_here || (distribute && lobe.cone.half_angle > 0.0);
+        result += gather(lobe, s, depth, distribute, !full, sample) * a.specular;
     }
     if (s.transmission > 0.0) {
-        result += refracted_rays(ray, s, depth, counters) * a.color * s.transmission;
+        distributed_here = distributed_here || (distribute && a.refract_cone_degrees > 0.0);
+        result +=
+            refracted_rays(ray, s, depth, distribute, !full, sample) * a.color * s.transmission;
+    }
+    if (diffuse_rays_ && a.diffuse > 0.0) {
+        // Without shadow feelers light reaches a point only along rays that find emitters
+        // (manual Appendix -Ds); diffuse reflection then needs rays of its own.
+        const Lobe lobe{s.shading_normal, {}, true, true};
+        distributed_here = distributed_here || distribute;
+        result += gather(lobe, s, depth, distribute, !full, sample) * a.color * a.diffuse;
+    }
+    if (distributed_here) {
+        ++sample.tree.distributed_intersections;
     }
     return result;
 }
 
 // One refracted ray, or with -R and differing indices one per colour channel, each keeping only
 // its own channel. Total internal reflection sends the ray back inside.
-Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth,
-                              TraceCounters& counters) const {
-    const Rgb& index = s.attribute->refraction_index;
+Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, bool distribute,
+                              bool simple, SampleContext& sample) const {
+    const Attribute& a = *s.attribute;
+    const Rgb& index = a.refraction_index;
     const bool split = index.r != index.g || index.g != index.b;
     Rgb result;
     for (int channel = 0; channel < (split ? 3 : 1); ++channel) {
@@ -87,13 +140,46 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth,
         if (bent && !goes_through) {
             direction = ray.direction;  // smoothing tilted it back out: go straight through
         }
-        const Rgb traced = trace({s.position, direction}, depth + 1, counters);
+        const Lobe lobe{direction,
+                        {radians(a.refract_cone_degrees), a.refract_cone_exponent},
+                        !bent,  // totally reflected light stays on the ray's side
+                        false};
+        const Rgb traced = gather(lobe, s, depth, distribute, simple, sample);
         if (!split) {
             return traced;
         }
         result[channel] = traced[channel];
     }
     return result;
+}
+
+Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool distribute,
+                      bool simple, SampleContext& sample) const {
+    const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
+    if (!spread) {
+        return trace({s.position, lobe.axis}, depth + 1, simple, sample);
+    }
+    const SamplingSettings& sampling = settings_.sampling;
+    const std::uint32_t total = distribute ? ray_strata_.size() : 1;
+    const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
+    RunningStatistics statistics;
+    for (std::uint32_t k = 0; k < total; ++k) {
+        double u1 = 0.0;
+        double u2 = 0.0;
+        const double j1 = sample.stream.uniform();
+        const double j2 = sample.stream.uniform();
+        ray_strata_.point(k, j1, j2, u1, u2);
+        Vec3 direction = lobe.diffuse ? sample_cosine_hemisphere(lobe.axis, u1, u2)
+                                      : sample_cone(lobe.cone, lobe.axis, u1, u2);
+        direction = keep_on_side(direction, s.facing_normal, lobe.outside);
+        statistics.add(trace({s.position, direction}, depth + 1, true, sample));
+        ++sample.tree.distributed_rays;
+        if (sampling.adaptive && k + 1 >= minimum &&
+            sampling.ray_stop.satisfied(statistics.count(), statistics.display_variance())) {
+            break;
+        }
+    }
+    return statistics.mean();
 }
 
 }  // namespace rt

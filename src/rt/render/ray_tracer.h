@@ -1,11 +1,17 @@
 // The ray tree (manual 1.3): a ray finds its first polygon, takes the local illumination there,
-// and spawns a mirror-reflected and a refracted ray down to the header's maxdepth.
+// and spawns reflected and refracted rays (and, without shadow feelers, diffuse rays) down to the
+// header's maxdepth. Down to maxdist they are distributed in their cones by the cos^n law, as
+// many as the adaptive rule (-Xr) asks for; deeper, or with -Dd, one ray each.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "rt/accel/accelerator.h"
 #include "rt/core/rgb.h"
+#include "rt/sampling/directions.h"
+#include "rt/sampling/sample_stream.h"
+#include "rt/sampling/strata.h"
 #include "rt/scene/scene.h"
 #include "rt/shading/illumination.h"
 #include "rt/shading/lights.h"
@@ -13,31 +19,53 @@
 
 namespace rt {
 
+/// What one sample's ray tree did, for -dx.
+struct RayTreeCounts {
+    std::uint32_t distributed_intersections = 0;  ///< hits that distributed rays
+    std::uint32_t distributed_rays = 0;           ///< rays they sent
+};
+
+/// The state of one sample being traced: its random numbers and counters.
+struct SampleContext {
+    SampleStream& stream;
+    TraceCounters& counters;
+    RayTreeCounts& tree;
+};
+
 class RayTracer {
 public:
-    /// shadow_feeling: the header's lghtick (0 none, 1 vertices, 2 centres), before -Ds.
     RayTracer(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings);
 
     /// Intensity arriving along the ray (unit direction) from its origin's side; depth 1 is the
     /// eye ray. Light picked up at distance d is attenuated by the -A formula unless -Da.
-    Rgb trace(const Ray& ray, int depth, TraceCounters& counters) const;
+    /// `distributed`: the ray is one of a distribution, or descends from one (without -I it gets
+    /// the simple model).
+    Rgb trace(const Ray& ray, int depth, bool distributed, SampleContext& sample) const;
 
     /// Distance under which a hit counts as the surface a ray leaves from.
     double epsilon() const { return epsilon_; }
     const std::vector<PointLight>& lights() const { return lights_; }
 
 private:
-    Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth,
-                       TraceCounters& counters) const;
-    Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth,
-                       TraceCounters& counters) const;
+    struct Lobe;
+    Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
+                       SampleContext& sample) const;
+    Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, bool distribute,
+                       bool simple, SampleContext& sample) const;
+    /// The mean intensity over a lobe: one ray along its axis, or a distribution of rays.
+    /// `simple`: the rays descend from a distributed ray and keep its simple model (no -I).
+    Rgb gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool distribute, bool simple,
+               SampleContext& sample) const;
 
     const Scene& scene_;
     const Accelerator& accel_;
     ShadingSettings settings_;
     std::vector<PointLight> lights_;
+    ProgressiveStrata ray_strata_;  ///< the strata of distributed rays at one intersection
     double epsilon_ = 1e-9;
     int max_depth_ = 1;
+    double max_distributed_depth_ = 0.0;  ///< the header's maxdist
+    bool diffuse_rays_ = false;           ///< no shadow feelers: light arrives by diffuse rays
 };
 
 }  // namespace rt

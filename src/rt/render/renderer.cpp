@@ -8,6 +8,9 @@
 
 #include "rt/render/camera.h"
 #include "rt/render/ray_tracer.h"
+#include "rt/sampling/chi_square.h"
+#include "rt/sampling/sample_stream.h"
+#include "rt/sampling/strata.h"
 
 namespace rt {
 
@@ -19,38 +22,53 @@ struct RenderJob {
     const RenderSettings& settings;
     const Camera camera;
     const RayTracer tracer;
+    const ProgressiveStrata pixel_strata;
     RenderObserver& observer;
     Film& film;
-    std::atomic<int> next_row_index{0};   // rows are handed out bottom first
+    std::atomic<int> next_row_index{0};  // rows are handed out bottom first
     std::atomic<bool> stopping{false};
-    std::mutex observer_mutex;            // guards the observer, finished and rows_done
-    std::vector<char> finished;           // per window row
+    std::mutex observer_mutex;   // guards the observer, finished and rows_done
+    std::vector<char> finished;  // per window row
     int rows_done = 0;
 
-    RenderJob(const Scene& s, const Accelerator& accel, const RenderSettings& rs,
-              RenderObserver& o, Film& f)
+    RenderJob(const Scene& s, const Accelerator& accel, const RenderSettings& rs, RenderObserver& o,
+              Film& f)
         : scene(s),
           settings(rs),
           camera(Camera::from_view(s.view)),
           tracer(s, accel, rs.shading),
+          pixel_strata(s.view.sample_resolution_x, s.view.sample_resolution_y),
           observer(o),
           film(f),
           finished(static_cast<std::size_t>(rs.window.height()), 0) {}
 };
 
-// The pixel's value: the mean of an n x n grid of samples at the centres of its strata.
-Rgb render_pixel(RenderJob& job, int x, int y, TraceCounters& counters) {
-    const int nx = std::max(1, job.scene.view.sample_resolution_x);
-    const int ny = std::max(1, job.scene.view.sample_resolution_y);
-    Rgb sum;
-    for (int j = 0; j < ny; ++j) {
-        for (int i = 0; i < nx; ++i) {
-            const double px = x + (i + 0.5) / nx;
-            const double py = y + (j + 0.5) / ny;
-            sum += job.tracer.trace(job.camera.primary_ray(px, py), 1, counters);
+// The pixel's value: the mean of up to n x n samples (manual 2.2), jittered in their strata
+// and taken in progressive order until the chi-square rule (-Xp) is satisfied, or all of them
+// with -Dx. One sample per pixel looks through the pixel's centre, as the original did.
+Rgb render_pixel(RenderJob& job, int x, int y, TraceCounters& counters, PixelReport& report) {
+    const SamplingSettings& sampling = job.settings.shading.sampling;
+    const std::uint32_t total = job.pixel_strata.size();
+    const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
+    RunningStatistics statistics;
+    for (std::uint32_t k = 0; k < total; ++k) {
+        SampleStream stream(sampling.seed, x, y, k);
+        double px = 0.5;
+        double py = 0.5;
+        if (total > 1) {
+            const double j1 = stream.uniform();
+            const double j2 = stream.uniform();
+            job.pixel_strata.point(k, j1, j2, px, py);
+        }
+        SampleContext sample{stream, counters, report.tree};
+        statistics.add(job.tracer.trace(job.camera.primary_ray(x + px, y + py), 1, false, sample));
+        if (sampling.adaptive && k + 1 >= minimum &&
+            sampling.pixel_stop.satisfied(statistics.count(), statistics.display_variance())) {
+            break;
         }
     }
-    return sum * (1.0 / (nx * ny));
+    report.samples = statistics.count();
+    return statistics.mean();
 }
 
 void record_finished_row(RenderJob& job, int y) {
@@ -72,6 +90,7 @@ void record_finished_row(RenderJob& job, int y) {
 void render_rows(RenderJob& job, TraceCounters& counters) {
     const FilmWindow& w = job.settings.window;
     const bool pixel_events = job.observer.wants_pixel_events();
+    const bool sample_events = job.observer.wants_sample_reports();
     while (!job.stopping) {
         const int index = job.next_row_index++;
         if (index >= w.height()) {
@@ -83,7 +102,12 @@ void render_rows(RenderJob& job, TraceCounters& counters) {
                 std::lock_guard lock(job.observer_mutex);
                 job.observer.pixel_started(x, y);
             }
-            job.film.set_pixel(x, y, render_pixel(job, x, y, counters));
+            PixelReport report;
+            job.film.set_pixel(x, y, render_pixel(job, x, y, counters, report));
+            if (sample_events) {
+                std::lock_guard lock(job.observer_mutex);
+                job.observer.pixel_sampled(x, y, report);
+            }
         }
         record_finished_row(job, y);
     }
@@ -112,9 +136,7 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
         t.join();
     }
     for (const TraceCounters& c : counters) {
-        statistics.counters.rays += c.rays;
-        statistics.counters.polygon_tests += c.polygon_tests;
-        statistics.counters.hits += c.hits;
+        statistics.counters += c;
     }
     statistics.rows_done = job.rows_done;
     statistics.interrupted = job.stopping && !film.complete();

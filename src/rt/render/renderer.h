@@ -3,8 +3,11 @@
 // the thread count.
 #pragma once
 
+#include <cstdint>
+
 #include "rt/accel/accelerator.h"
 #include "rt/image/film.h"
+#include "rt/render/ray_tracer.h"
 #include "rt/scene/scene.h"
 #include "rt/shading/shading_settings.h"
 
@@ -12,8 +15,14 @@ namespace rt {
 
 struct RenderSettings {
     ShadingSettings shading;
-    FilmWindow window;   ///< the part of the view area to render (output matrix, -L)
-    int threads = 0;     ///< 0: one per core
+    FilmWindow window;  ///< the part of the view area to render (output matrix, -L)
+    int threads = 0;    ///< 0: one per core
+};
+
+/// How a pixel was sampled (-dx).
+struct PixelReport {
+    std::uint32_t samples = 0;  ///< eye rays taken (at most n x n)
+    RayTreeCounts tree;         ///< summed over its samples
 };
 
 /// Told about progress; asked whether to stop (Ctrl-C). Called from worker threads, but never
@@ -33,6 +42,13 @@ public:
         (void)y;
     }
     virtual bool wants_pixel_events() const { return false; }
+    /// The pixel (x, y) is done (-dx); only called when wants_sample_reports().
+    virtual void pixel_sampled(int x, int y, const PixelReport& report) {
+        (void)x;
+        (void)y;
+        (void)report;
+    }
+    virtual bool wants_sample_reports() const { return false; }
     virtual bool should_stop() { return false; }
 };
 

@@ -15,12 +15,15 @@ double cos_power(double cosine, double exponent) {
 
 // Diffuse and specular reflection of one light on the viewer's side of the polygon.
 Rgb reflected_light(const SurfacePoint& s, const Vec3& view, const Vec3& to_light,
-                    const Rgb& received) {
+                    const Rgb& received, bool highlights) {
     const Attribute& a = *s.attribute;
     const double lambert = std::fmax(0.0, dot(s.shading_normal, to_light));
-    const Vec3 mirrored = reflect(-to_light, s.shading_normal);
-    const double phong = cos_power(dot(mirrored, view), a.specular_exponent);
-    return received * a.color * (a.diffuse * lambert) + received * (a.specular * phong);
+    Rgb result = received * a.color * (a.diffuse * lambert);
+    if (highlights) {
+        const Vec3 mirrored = reflect(-to_light, s.shading_normal);
+        result += received * (a.specular * cos_power(dot(mirrored, view), a.specular_exponent));
+    }
+    return result;
 }
 
 // -T: a light behind a non-opaque polygon shines through it, in a cos^tpow lobe around the
@@ -41,8 +44,8 @@ Rgb transmitted_light(const SurfacePoint& s, const Vec3& view, const Vec3& to_li
 
 }  // namespace
 
-Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s,
-                       const Vec3& view, TraceCounters& counters) {
+Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s, const Vec3& view,
+                       bool highlights, TraceCounters& counters) {
     const Attribute& a = *s.attribute;
     const ShadingSettings& settings = context.settings;
     Rgb result = a.color * (a.ambient * settings.ambient_light);
@@ -55,15 +58,15 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
         }
         const Vec3 to_light = normalize(light.position - s.position);
         const bool viewer_side = dot(to_light, s.facing_normal) > 0.0;
-        if (!viewer_side && !(settings.far_side_feelers && s.transmission > 0.0)) {
+        if (!viewer_side && !(highlights && settings.far_side_feelers && s.transmission > 0.0)) {
             continue;
         }
-        const Rgb received = feel_light(context.scene, context.accel, settings, s.position,
-                                        light, context.epsilon, counters);
+        const Rgb received = feel_light(context.scene, context.accel, settings, s.position, light,
+                                        context.epsilon, counters);
         if (max_component(received) <= 0.0) {
             continue;
         }
-        result += viewer_side ? reflected_light(s, view, to_light, received)
+        result += viewer_side ? reflected_light(s, view, to_light, received, highlights)
                               : transmitted_light(s, view, to_light, received);
     }
     return result;

@@ -24,7 +24,8 @@ struct IlluminationContext {
 };
 
 /// Light leaving the surface toward `view` (unit, pointing from the surface to the viewer).
+/// Without `highlights` (a distributed ray's hit, unless -I) only emission, ambient and diffuse.
 Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& surface,
-                       const Vec3& view, TraceCounters& counters);
+                       const Vec3& view, bool highlights, TraceCounters& counters);
 
 }  // namespace rt

@@ -9,7 +9,9 @@
 namespace rt {
 
 /// Reflects incoming direction d about the unit normal n.
-inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - n * (2.0 * dot(d, n)); }
+inline Vec3 reflect(const Vec3& d, const Vec3& n) {
+    return d - n * (2.0 * dot(d, n));
+}
 
 /// Refracts unit direction d through a surface with unit normal n facing against d
 /// (dot(d, n) < 0), from index n1 into index n2. Nothing on total internal reflection.

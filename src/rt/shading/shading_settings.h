@@ -1,20 +1,36 @@
-// The illumination switches as plain settings (manual Appendix: -A -Da -Dl -Ds -Dr -Dt -Db -T -Po).
+// The illumination and sampling switches as plain settings (manual Appendix: -A -Da -Dl -Ds -Dr
+// -Dt -Db -T -Po -Dd -Dx -Xp -Xr -I).
 #pragma once
+
+#include <cstdint>
+
+#include "rt/sampling/chi_square.h"
 
 namespace rt {
 
+/// Distributed ray tracing and adaptive supersampling (manual 1.3, 2.2, -D d, -D x, -X, -I).
+struct SamplingSettings {
+    std::uint64_t seed = 0;               ///< --seed: the same seed, the same picture
+    bool distribute = true;               ///< off with -Dd: one reflected, one refracted ray
+    bool adaptive = true;                 ///< off with -Dx: always every sample
+    ChiSquareStop pixel_stop;             ///< -Xp prob,var
+    ChiSquareStop ray_stop;               ///< -Xr prob,var
+    bool illuminate_distributed = false;  ///< -I: the full model at distributed rays' hits
+};
+
 struct ShadingSettings {
-    double attenuation_distance = 200.0;   ///< -A d,c: intensity divided by dist/d + c
+    double attenuation_distance = 200.0;  ///< -A d,c: intensity divided by dist/d + c
     double attenuation_constant = 1.0;
-    bool attenuate_rays = true;            ///< off with -Da
-    bool attenuate_feelers = true;         ///< off with -Dl
-    bool shadow_feelers = true;            ///< off with -Ds (and when lghtick is 0)
+    bool attenuate_rays = true;                ///< off with -Da
+    bool attenuate_feelers = true;             ///< off with -Dl
+    bool shadow_feelers = true;                ///< off with -Ds (and when lghtick is 0)
     bool feelers_stop_at_transparent = false;  ///< -Dt
-    bool reflection = true;                ///< off with -Dr
-    bool both_sides_emit = true;           ///< off with -Db
-    bool far_side_feelers = false;         ///< -T
-    bool smooth_shaded_opaque = false;     ///< -Po: smooth-shaded polygons are opaque
-    double ambient_light = 1.0;            ///< white ambient light the ambient weight reflects
+    bool reflection = true;                    ///< off with -Dr
+    bool both_sides_emit = true;               ///< off with -Db
+    bool far_side_feelers = false;             ///< -T
+    bool smooth_shaded_opaque = false;         ///< -Po: smooth-shaded polygons are opaque
+    double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
+    SamplingSettings sampling;
 
     /// The manual's attenuation factor 1 / (dist/d + c).
     double attenuation(double distance) const {

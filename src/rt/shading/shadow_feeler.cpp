@@ -10,8 +10,7 @@ constexpr int kMaxTransparentLayers = 64;
 }  // namespace
 
 Rgb feel_light(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings,
-               const Vec3& from, const PointLight& light, double epsilon,
-               TraceCounters& counters) {
+               const Vec3& from, const PointLight& light, double epsilon, TraceCounters& counters) {
     const Vec3 to_light = light.position - from;
     const double distance = length(to_light);
     if (!(distance > epsilon)) {

@@ -14,7 +14,6 @@ namespace rt {
 /// nothing if an opaque polygon (or, with -Dt, any polygon) stands between. `epsilon` is the
 /// distance below which hits near `from` count as the surface itself.
 Rgb feel_light(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings,
-               const Vec3& from, const PointLight& light, double epsilon,
-               TraceCounters& counters);
+               const Vec3& from, const PointLight& light, double epsilon, TraceCounters& counters);
 
 }  // namespace rt

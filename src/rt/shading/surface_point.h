@@ -12,12 +12,12 @@ namespace rt {
 
 struct SurfacePoint {
     Vec3 position;
-    Vec3 facing_normal;    ///< geometric normal turned toward where the ray came from
-    Vec3 shading_normal;   ///< smoothed (-Po/-Pt, mark 1) or inferred (-M) normal, same side
+    Vec3 facing_normal;   ///< geometric normal turned toward where the ray came from
+    Vec3 shading_normal;  ///< smoothed (-Po/-Pt, mark 1) or inferred (-M) normal, same side
     std::uint32_t polygon = 0;
     const Attribute* attribute = nullptr;
-    bool front = true;           ///< the ray arrived on the outward side
-    double transmission = 0.0;   ///< the attribute's, or 0 where -Po forces opaqueness
+    bool front = true;          ///< the ray arrived on the outward side
+    double transmission = 0.0;  ///< the attribute's, or 0 where -Po forces opaqueness
 };
 
 /// Describes the hit of ray (unit direction) on its polygon.
