@@ -83,10 +83,13 @@ TEST(SwitchHelp, Synopses) {
     };
     EXPECT_EQ(of("-Dd"), "-Dd | ");
     EXPECT_EQ(of("-Stg"), "-Stg<m> | m > 0, attached or separate");
-    EXPECT_EQ(of("-A"), "-A<distance>,<constant> | distance > 0, constant > 0, attached or separate");
+    EXPECT_EQ(of("-A"),
+              "-A<distance>,<constant> | distance > 0, constant > 0, attached or separate");
     EXPECT_EQ(of("-Wc"), "-Wc <angle> | angle in (0, pi], attached or separate");
     EXPECT_EQ(of("-L"), "-L<line> | line from 0 to 1000000, attached or separate");
-    EXPECT_EQ(of("-Xp"), "-Xp<probability>,<variance> | probability in (0, 1), variance > 0, attached or separate");
+    EXPECT_EQ(
+        of("-Xp"),
+        "-Xp<probability>,<variance> | probability in (0, 1), variance > 0, attached or separate");
     EXPECT_EQ(of("--output"), "--output FILE | ");
     EXPECT_EQ(of("--threads"), "--threads N | N from 0 to 1024");
 }

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <csignal>
+
 #include <unistd.h>
 
 namespace rt {
@@ -24,6 +25,8 @@ void install_interrupt_handler() {
     std::signal(SIGTERM, on_interrupt);
 }
 
-bool interrupt_requested() { return g_interrupted.load(); }
+bool interrupt_requested() {
+    return g_interrupted.load();
+}
 
 }  // namespace rt

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 
 #include "rt/accel/brute_force.h"
@@ -51,6 +52,10 @@ ShadingSettings shading_settings(const Options& o) {
     s.both_sides_emit = !o.single_sided_emitters;
     s.far_side_feelers = o.specular_refraction_feelers;
     s.smooth_shaded_opaque = o.phong == PhongShading::Opaque;
+    if (o.fuzzy_distangle) {
+        s.fuzzy.angle = *o.fuzzy_distangle;
+        s.fuzzy.count = std::max(1, static_cast<int>(std::ceil(o.fuzzy_distfac)));
+    }
     SamplingSettings& sampling = s.sampling;
     sampling.seed = o.seed;
     sampling.distribute = !o.disable_distribution;

@@ -159,7 +159,9 @@ private:
 };
 
 // Every argument may be attached ("-m2.0") or follow after a space ("-m 2.0", "-Wc 0.7").
-bool takes_separate(ArgForm form) { return form != ArgForm::None; }
+bool takes_separate(ArgForm form) {
+    return form != ArgForm::None;
+}
 
 SwitchArgument read_argument(const SwitchSpec& spec, std::string_view text) {
     SwitchArgument argument;

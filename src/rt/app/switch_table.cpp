@@ -304,8 +304,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .second = {"distfac", kPositive},
      .apply = [](Options& o, A a) { o.fuzzy_distangle = a.first; o.fuzzy_distfac = a.second; },
      .summary = "Fuzzy shadow feeler: 0.3 is distangle, 2.0 is distfac",
-     .details = "Distributes the shadow feeler to produce fuzzy shadows.", .section = "App.",
-     .example = "-F0.3,2.0", .status = NotYet, .feature = "the fuzzy shadow feeler"},
+     .details = "Distributes the shadow feeler to produce fuzzy shadows: distfac feelers per light "
+                "(rounded up), each turned at random by up to distangle radians from the light.", .section = "App.",
+     .example = "-F0.3,2.0"},
     {.spelling = "-Xp", .form = Pair, .topic = AdaptiveSampling,
      .first = {"the probability", kProbability}, .second = {"the variance", kPositive},
      .apply = [](Options& o, A a) {

@@ -74,7 +74,7 @@ Rgb RayTracer::trace(const Ray& ray, int depth, bool distributed, SampleContext&
     // distribution (manual Appendix -I: "the distributed rays are not given the full
     // illumination model treatment").
     const bool full = !distributed || settings_.sampling.illuminate_distributed;
-    const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_};
+    const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_, &sample.stream};
     Rgb result = local_illumination(context, s, -ray.direction, full, sample.counters);
     if (depth < max_depth_) {
         result += secondary_rays(ray, s, depth, full, sample);

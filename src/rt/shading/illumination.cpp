@@ -52,6 +52,8 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
     if (s.front || settings.both_sides_emit) {
         result += a.color * a.emission;
     }
+    const FeelerContext feeler{context.scene, context.accel, settings, context.epsilon,
+                               context.stream};
     for (const PointLight& light : context.lights) {
         if (light.polygon == s.polygon) {
             continue;  // an emitter does not light itself
@@ -61,8 +63,7 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
         if (!viewer_side && !(highlights && settings.far_side_feelers && s.transmission > 0.0)) {
             continue;
         }
-        const Rgb received = feel_light(context.scene, context.accel, settings, s.position, light,
-                                        context.epsilon, counters);
+        const Rgb received = feel_light(feeler, s.position, light, counters);
         if (max_component(received) <= 0.0) {
             continue;
         }

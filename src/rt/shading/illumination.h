@@ -8,6 +8,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/core/rgb.h"
+#include "rt/sampling/sample_stream.h"
 #include "rt/scene/scene.h"
 #include "rt/shading/lights.h"
 #include "rt/shading/shading_settings.h"
@@ -21,6 +22,7 @@ struct IlluminationContext {
     const ShadingSettings& settings;
     std::span<const PointLight> lights;  ///< empty when shadow feeling is off
     double epsilon;                      ///< self-intersection distance
+    SampleStream* stream = nullptr;      ///< the sample's random numbers (fuzzy feelers)
 };
 
 /// Light leaving the surface toward `view` (unit, pointing from the surface to the viewer).

@@ -18,6 +18,14 @@ struct SamplingSettings {
     bool illuminate_distributed = false;  ///< -I: the full model at distributed rays' hits
 };
 
+/// -F distangle,distfac: distributed shadow feelers for fuzzy shadows. distfac is read as the
+/// number of feelers per light (rounded up).
+struct FuzzyFeelers {
+    double angle = 0.0;  ///< distangle, radians: 0 is off
+    int count = 1;
+    bool enabled() const { return angle > 0.0; }
+};
+
 struct ShadingSettings {
     double attenuation_distance = 200.0;  ///< -A d,c: intensity divided by dist/d + c
     double attenuation_constant = 1.0;
@@ -31,6 +39,7 @@ struct ShadingSettings {
     bool smooth_shaded_opaque = false;         ///< -Po: smooth-shaded polygons are opaque
     double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
     SamplingSettings sampling;
+    FuzzyFeelers fuzzy;  ///< -F
 
     /// The manual's attenuation factor 1 / (dist/d + c).
     double attenuation(double distance) const {

@@ -1,5 +1,10 @@
 #include "rt/shading/shadow_feeler.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "rt/sampling/directions.h"
+
 namespace rt {
 
 namespace {
@@ -9,34 +14,62 @@ constexpr int kMaxTransparentLayers = 64;
 
 }  // namespace
 
-Rgb feel_light(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings,
-               const Vec3& from, const PointLight& light, double epsilon, TraceCounters& counters) {
-    const Vec3 to_light = light.position - from;
-    const double distance = length(to_light);
-    if (!(distance > epsilon)) {
+Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const Vec3& span,
+                         std::uint32_t light_polygon, TraceCounters& counters) {
+    const double distance = length(span);
+    if (!(distance > context.epsilon)) {
         return {};
     }
-    // t runs from 0 at the point to 1 at the light; stop just short of the light itself.
-    const Ray feeler{from, to_light};
-    Interval span{epsilon / distance, 1.0 - epsilon / distance};
+    const Ray feeler{from, span};
+    Interval along{context.epsilon / distance, 1.0 - context.epsilon / distance};
     Rgb filter{1.0, 1.0, 1.0};
     for (int layer = 0; layer <= kMaxTransparentLayers; ++layer) {
-        const std::optional<Hit> hit = accel.closest_hit(feeler, span, counters);
-        if (!hit || hit->polygon == light.polygon) {
-            const double fall_off =
-                settings.attenuate_feelers ? settings.attenuation(distance) : 1.0;
-            return light.intensity * filter * fall_off;
+        const std::optional<Hit> hit = context.accel.closest_hit(feeler, along, counters);
+        if (!hit || hit->polygon == light_polygon) {
+            return filter;
         }
-        const Attribute& a = scene.attribute_of(scene.polygons[hit->polygon]);
-        const bool forced_opaque =
-            settings.smooth_shaded_opaque && scene.polygons[hit->polygon].smooth;
-        if (a.is_opaque() || forced_opaque || settings.feelers_stop_at_transparent) {
+        const Polygon& p = context.scene.polygons[hit->polygon];
+        const Attribute& a = context.scene.attribute_of(p);
+        const bool forced_opaque = context.settings.smooth_shaded_opaque && p.smooth;
+        if (a.is_opaque() || forced_opaque || context.settings.feelers_stop_at_transparent) {
             return {};
         }
         filter = filter * a.color * a.transmission;
-        span.min = hit->t;
+        along.min = hit->t;
     }
     return {};
+}
+
+Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight& light,
+               TraceCounters& counters) {
+    const ShadingSettings& settings = context.settings;
+    const Vec3 span = light.position - from;
+    const double distance = length(span);
+    if (!(distance > context.epsilon)) {
+        return {};
+    }
+    Rgb passed;
+    const FuzzyFeelers& fuzzy = settings.fuzzy;
+    if (fuzzy.enabled() && context.stream != nullptr) {
+        // Each feeler turned at random within distangle of the light's direction (uniform over
+        // the cone's solid angle), as long as the light is far.
+        const CosPowerCone cone{fuzzy.angle, 0.0};
+        const Vec3 axis = span / distance;
+        for (int k = 0; k < fuzzy.count; ++k) {
+            const double u1 = context.stream->uniform();
+            const double u2 = context.stream->uniform();
+            const Vec3 turned = sample_cone(cone, axis, u1, u2) * distance;
+            passed += feeler_transmittance(context, from, turned, light.polygon, counters);
+        }
+        passed *= 1.0 / fuzzy.count;
+    } else {
+        passed = feeler_transmittance(context, from, span, light.polygon, counters);
+    }
+    if (max_component(passed) <= 0.0) {
+        return {};
+    }
+    const double fall_off = settings.attenuate_feelers ? settings.attenuation(distance) : 1.0;
+    return light.intensity * passed * fall_off;
 }
 
 }  // namespace rt
