@@ -40,6 +40,19 @@ std::string utc_now() {
     return text;
 }
 
+// -Oi: the earliest version's illumination (docs/rendering.md): Whitted's model as first
+// written, before attenuation, transparent shadows and distribution were added, and with the
+// lights not yet shared among their point sources.
+void apply_early_model(ShadingSettings& s) {
+    s.attenuate_rays = false;
+    s.attenuate_feelers = false;
+    s.feelers_stop_at_transparent = true;
+    s.far_side_feelers = false;
+    s.share_light_among_points = false;
+    s.sampling.distribute = false;
+    s.fuzzy = {};
+}
+
 ShadingSettings shading_settings(const Options& o) {
     ShadingSettings s;
     s.attenuation_distance = o.attenuation_distance;
@@ -66,6 +79,12 @@ ShadingSettings shading_settings(const Options& o) {
     }
     if (o.ray_stop_probability) {
         sampling.ray_stop = {*o.ray_stop_probability, o.ray_stop_variance};
+    }
+    if (o.old_illumination || o.old_version) {
+        apply_early_model(s);
+    }
+    if (o.old_version) {
+        s.sampling.adaptive = false;  // the first version took every sample
     }
     return s;
 }

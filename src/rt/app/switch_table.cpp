@@ -265,9 +265,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .section = "App.", .example = "-Ot", .status = NotYet, .feature = "the old intersection test"},
     {.spelling = "-Oi", .topic = OldVersions,
      .apply = [](Options& o, A) { o.old_illumination = true; }, .summary = "Old illumination model",
-     .details = "Simulates the earliest version of the raytracer, bugs included.",
-     .section = "App.", .example = "-Oi", .status = NotYet,
-     .feature = "the old illumination model"},
+     .details = "Simulates the earliest version of the raytracer: no attenuation with distance, "
+                "shadow feelers that stop at any polygon, no distributed rays, and every point "
+                "source of an emitter at the emitter's full power (see docs/rendering.md).",
+     .section = "App.", .example = "-Oi"},
     {.spelling = "-Of", .topic = FileFormat,
      .apply = [](Options& o, A) {
          o.dialect.attributes_inline = true;
@@ -276,9 +277,8 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Old format", .details = "Same as -Df -Dp.", .section = "2.3", .example = "-Of"},
     {.spelling = "-O1", .topic = OldVersions, .apply = [](Options& o, A) { o.old_version = true; },
      .summary = "Behave like an early version of the CMU raytracer",
-     .details = "Before certain bugs had been ironed out. It must be used alone, without other "
-                "switches.", .section = "2.1", .example = "-O1", .status = NotYet,
-     .feature = "the early version's behaviour"},
+     .details = "Before certain bugs had been ironed out: -Oi, taking every sample of every pixel. "
+                "It must be used alone, without other switches.", .section = "2.1", .example = "-O1"},
     {.spelling = "-K", .topic = Illumination,
      .apply = [](Options& o, A) { o.scale_weights = true; },
      .summary = "scale down ka, ks, etc. so that intensity need not be clipped",

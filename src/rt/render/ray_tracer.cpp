@@ -57,7 +57,8 @@ RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const Shading
       max_depth_(scene.header.maxdepth),
       max_distributed_depth_(scene.header.maxdist) {
     if (settings_.shadow_feelers) {
-        lights_ = collect_point_lights(scene, scene.header.lghtick);
+        lights_ =
+            collect_point_lights(scene, scene.header.lghtick, settings_.share_light_among_points);
     }
     diffuse_rays_ = !settings_.shadow_feelers || scene.header.lghtick == 0;
 }

@@ -14,7 +14,7 @@ Vec3 polygon_centre(const Scene& scene, const Polygon& p) {
 
 }  // namespace
 
-std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick) {
+std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick, bool share) {
     std::vector<PointLight> lights;
     if (lghtick != 1 && lghtick != 2) {
         return lights;
@@ -30,9 +30,9 @@ std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick) {
             lights.push_back({polygon_centre(scene, p), total, id});
             continue;
         }
-        const Rgb share = total * (1.0 / static_cast<double>(p.corner_count));
+        const Rgb each = share ? total * (1.0 / static_cast<double>(p.corner_count)) : total;
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-            lights.push_back({scene.corner_position(p, k), share, id});
+            lights.push_back({scene.corner_position(p, k), each, id});
         }
     }
     return lights;

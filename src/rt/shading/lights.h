@@ -20,6 +20,8 @@ struct PointLight {
 /// Collects the point lights for the header's lghtick (0 gives none). Each emissive polygon is
 /// one light of intensity colour * emission, split equally among its point sources, so that
 /// lghtick 1 and 2 light a scene equally brightly.
-std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick);
+/// With `share` false (-Oi, the earliest version) every point source carries the polygon's whole
+/// intensity, so lghtick 1 lights a scene once per vertex.
+std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick, bool share = true);
 
 }  // namespace rt

@@ -39,7 +39,8 @@ struct ShadingSettings {
     bool smooth_shaded_opaque = false;         ///< -Po: smooth-shaded polygons are opaque
     double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
     SamplingSettings sampling;
-    FuzzyFeelers fuzzy;  ///< -F
+    FuzzyFeelers fuzzy;                    ///< -F
+    bool share_light_among_points = true;  ///< off with -Oi: every point source at full power
 
     /// The manual's attenuation factor 1 / (dist/d + c).
     double attenuation(double distance) const {
