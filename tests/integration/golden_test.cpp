@@ -1,10 +1,11 @@
 // Whole pictures: the shipped scenes against reference images, and independence from threads.
 #include <filesystem>
 
-#include <gtest/gtest.h>
-
 #include "rt/image/compare.h"
 #include "rt/image/png_format.h"
+
+#include <gtest/gtest.h>
+
 #include "support/run_program.h"
 #include "support/temp_dir.h"
 

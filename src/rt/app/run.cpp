@@ -173,7 +173,8 @@ public:
                        std::to_string(report.samples) + " samples, " +
                        std::to_string(report.tree.distributed_intersections) +
                        " intersections distributing " +
-                       std::to_string(report.tree.distributed_rays) + " rays");
+                       std::to_string(report.tree.distributed_rays) + " rays, " +
+                       std::to_string(report.probes) + " probes");
     }
     bool should_stop() override { return console_.should_stop && console_.should_stop(); }
 

@@ -67,6 +67,7 @@ Rgb RayTracer::trace(const Ray& ray, int depth, bool distributed, SampleContext&
     ++sample.counters.rays;
     const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, sample.counters);
     if (!hit) {
+        sample.last_polygon = -1;
         return {};  // the background is black
     }
     ++sample.counters.hits;
@@ -83,7 +84,14 @@ Rgb RayTracer::trace(const Ray& ray, int depth, bool distributed, SampleContext&
     if (settings_.attenuate_rays) {
         result *= settings_.attenuation(hit->t);
     }
+    sample.last_polygon = hit->polygon;  // after the subtree, which overwrote it
     return result;
+}
+
+std::int64_t RayTracer::first_polygon(const Ray& ray, TraceCounters& counters) const {
+    ++counters.rays;
+    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
+    return hit ? static_cast<std::int64_t>(hit->polygon) : -1;
 }
 
 Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
@@ -164,6 +172,8 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
     const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
     RunningStatistics statistics;
+    std::int64_t polygon = -2;  // none yet
+    bool one_polygon = true;    // the rule may stop early only while every ray meets one polygon
     for (std::uint32_t k = 0; k < total; ++k) {
         double u1 = 0.0;
         double u2 = 0.0;
@@ -175,7 +185,9 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
         statistics.add(trace({s.position, direction}, depth + 1, true, sample));
         ++sample.tree.distributed_rays;
-        if (sampling.adaptive && k + 1 >= minimum &&
+        one_polygon = one_polygon && (polygon == -2 || polygon == sample.last_polygon);
+        polygon = sample.last_polygon;
+        if (sampling.adaptive && k + 1 >= minimum && one_polygon &&
             sampling.ray_stop.satisfied(statistics.count(), statistics.display_variance())) {
             break;
         }

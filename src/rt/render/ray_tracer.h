@@ -30,6 +30,7 @@ struct SampleContext {
     SampleStream& stream;
     TraceCounters& counters;
     RayTreeCounts& tree;
+    std::int64_t last_polygon = -1;  ///< the polygon the last traced ray met, -1 for none
 };
 
 class RayTracer {
@@ -41,6 +42,9 @@ public:
     /// `distributed`: the ray is one of a distribution, or descends from one (without -I it gets
     /// the simple model).
     Rgb trace(const Ray& ray, int depth, bool distributed, SampleContext& sample) const;
+
+    /// The polygon a ray meets first (-1 for none), without shading it.
+    std::int64_t first_polygon(const Ray& ray, TraceCounters& counters) const;
 
     /// Distance under which a hit counts as the surface a ray leaves from.
     double epsilon() const { return epsilon_; }
