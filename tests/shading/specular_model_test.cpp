@@ -68,12 +68,12 @@ TEST(Fresnel, IndexFromReflectanceInvertsNormalIncidence) {
 // (n.h) d(omega) is area on the unit disk, so a midpoint grid over the disk does it.
 template <typename D>
 double projected_integral(D distribution) {
-    constexpr int n = 2000;
-    const double h = 2.0 / n;
+    constexpr int kGrid = 2000;
+    const double h = 2.0 / kGrid;
     double sum = 0.0;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < kGrid; ++i) {
         const double x = -1.0 + (i + 0.5) * h;
-        for (int j = 0; j < n; ++j) {
+        for (int j = 0; j < kGrid; ++j) {
             const double y = -1.0 + (j + 0.5) * h;
             const double r2 = x * x + y * y;
             if (r2 < 1.0) {
@@ -115,7 +115,7 @@ TEST(MicrofacetDistribution, PeakValuesAndBelowTheSurface) {
     EXPECT_EQ(gaussian_distribution(-0.5, 0.3, 1.0), 0.0);
 }
 
-const Vec3 kNormal{0.0, 0.0, 1.0};
+constexpr Vec3 kNormal{0.0, 0.0, 1.0};
 
 Vec3 at_angle(double theta, double phi) {
     return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};

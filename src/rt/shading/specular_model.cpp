@@ -123,14 +123,14 @@ double gaussian_normaliser(double m) {
     // 2 pi * integral over [0, pi/2] of exp(-(b/m)^2) cos b sin b db by Simpson's rule; beyond
     // b = 8m the integrand is below e^-64 of its scale and is left out.
     const double upper = std::min(std::numbers::pi / 2.0, 8.0 * m);
-    constexpr int intervals = 4096;  // even
-    const double h = upper / intervals;
+    constexpr int kIntervals = 4096;  // even
+    const double h = upper / kIntervals;
     const auto f = [m](double b) {
         const double x = b / m;
         return std::exp(-x * x) * std::cos(b) * std::sin(b);
     };
     double sum = f(0.0) + f(upper);
-    for (int i = 1; i < intervals; ++i) {
+    for (int i = 1; i < kIntervals; ++i) {
         sum += f(i * h) * (i % 2 == 1 ? 4.0 : 2.0);
     }
     const double integral = 2.0 * std::numbers::pi * sum * h / 3.0;
