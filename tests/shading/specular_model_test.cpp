@@ -1,0 +1,291 @@
+// The specular laws, Fresnel reflectance and highlight tints against numbers worked out by hand.
+#include "rt/shading/specular_model.h"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "rt/core/error.h"
+
+#include <gtest/gtest.h>
+
+namespace rt {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Fresnel reflectance in the form of Cook and Torrance (and Rogers), from air onto index n:
+// g^2 = n^2 + c^2 - 1, F = (g-c)^2/(2(g+c)^2) [1 + (c(g+c)-1)^2 / (c(g-c)+1)^2].
+double cook_torrance_fresnel(double c, double n) {
+    const double g = std::sqrt(n * n + c * c - 1.0);
+    const double a = (g - c) / (g + c);
+    const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    return 0.5 * a * a * (1.0 + b * b);
+}
+
+TEST(Fresnel, MatchesTheCookTorranceFormAtSeveralAngles) {
+    for (const double n : {1.05, 1.33, 1.5, 2.4}) {
+        for (const double degrees : {0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0}) {
+            const double c = std::cos(degrees * kPi / 180.0);
+            EXPECT_NEAR(fresnel_dielectric(c, 1.0, n), cook_torrance_fresnel(c, n), 1e-12)
+                << "n " << n << " at " << degrees << " degrees";
+        }
+    }
+}
+
+TEST(Fresnel, NormalIncidenceIsTheSquaredIndexRatio) {
+    for (const double n : {1.05, 1.5, 2.0}) {
+        const double expected = std::pow((n - 1.0) / (n + 1.0), 2.0);
+        EXPECT_NEAR(fresnel_dielectric(1.0, 1.0, n), expected, 1e-15);
+        EXPECT_NEAR(fresnel_dielectric(1.0, n, 1.0), expected, 1e-15);  // either way round
+    }
+    EXPECT_NEAR(fresnel_dielectric(1.0, 1.0, 1.5), 0.04, 1e-15);
+    EXPECT_EQ(fresnel_dielectric(0.7, 1.3, 1.3), 0.0);
+}
+
+TEST(Fresnel, GrazingIncidenceReflectsEverything) {
+    EXPECT_NEAR(fresnel_dielectric(0.0, 1.0, 1.5), 1.0, 1e-12);
+}
+
+TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
+    // Glass (1.5) to air: critical angle asin(1/1.5) = 41.81 degrees.
+    const double critical = std::asin(1.0 / 1.5);
+    EXPECT_EQ(fresnel_dielectric(std::cos(critical + 0.01), 1.5, 1.0), 1.0);
+    EXPECT_EQ(fresnel_dielectric(std::cos(kPi / 3.0), 1.5, 1.0), 1.0);
+    EXPECT_LT(fresnel_dielectric(std::cos(critical - 0.05), 1.5, 1.0), 1.0);
+    EXPECT_EQ(fresnel_dielectric(-std::cos(kPi / 3.0), 1.5, 1.0), 1.0);  // sign ignored
+}
+
+TEST(Fresnel, IndexFromReflectanceInvertsNormalIncidence) {
+    for (const double f0 : {0.0, 0.04, 0.2, 0.5, 0.98}) {
+        EXPECT_NEAR(fresnel_dielectric(1.0, 1.0, index_from_reflectance(f0)), f0, 1e-12);
+    }
+    EXPECT_NEAR(index_from_reflectance(0.04), 1.5, 1e-12);
+    EXPECT_TRUE(std::isfinite(index_from_reflectance(1.0)));  // clamped below 1
+}
+
+// Integral over the hemisphere of D(h) (n.h) d(omega): the projected solid angle
+// (n.h) d(omega) is area on the unit disk, so a midpoint grid over the disk does it.
+template <typename D>
+double projected_integral(D distribution) {
+    constexpr int kGrid = 2000;
+    const double h = 2.0 / kGrid;
+    double sum = 0.0;
+    for (int i = 0; i < kGrid; ++i) {
+        const double x = -1.0 + (i + 0.5) * h;
+        for (int j = 0; j < kGrid; ++j) {
+            const double y = -1.0 + (j + 0.5) * h;
+            const double r2 = x * x + y * y;
+            if (r2 < 1.0) {
+                sum += distribution(std::sqrt(1.0 - r2));
+            }
+        }
+    }
+    return sum * h * h;
+}
+
+TEST(MicrofacetDistribution, GaussianIsNormalised) {
+    for (const double m : {0.1, 0.3, 1.0}) {
+        const double c = gaussian_normaliser(m);
+        const double integral = projected_integral(
+            [&](double cos_beta) { return gaussian_distribution(cos_beta, m, c); });
+        EXPECT_NEAR(integral, 1.0, 1e-3) << "m " << m;
+    }
+}
+
+TEST(MicrofacetDistribution, GaussianNormaliserTendsToOneOverPiMSquared) {
+    // For small m the facet angles are small: integral ~ 2 pi int b exp(-b^2/m^2) db = pi m^2.
+    const double m = 0.01;
+    EXPECT_NEAR(gaussian_normaliser(m) * kPi * m * m, 1.0, 1e-3);
+}
+
+TEST(MicrofacetDistribution, BeckmannIsNormalised) {
+    for (const double m : {0.1, 0.3, 1.0}) {
+        const double integral =
+            projected_integral([&](double cos_beta) { return beckmann_distribution(cos_beta, m); });
+        EXPECT_NEAR(integral, 1.0, 1e-3) << "m " << m;
+    }
+}
+
+TEST(MicrofacetDistribution, PeakValuesAndBelowTheSurface) {
+    EXPECT_NEAR(beckmann_distribution(1.0, 0.3), 1.0 / (kPi * 0.09), 1e-12);
+    EXPECT_NEAR(gaussian_distribution(1.0, 0.3, 7.0), 7.0, 1e-12);
+    EXPECT_NEAR(gaussian_distribution(std::cos(0.3), 0.3, 1.0), std::exp(-1.0), 1e-12);
+    EXPECT_EQ(beckmann_distribution(0.0, 0.3), 0.0);
+    EXPECT_EQ(gaussian_distribution(-0.5, 0.3, 1.0), 0.0);
+}
+
+constexpr Vec3 kNormal{0.0, 0.0, 1.0};
+
+Vec3 at_angle(double theta, double phi) {
+    return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+TEST(GeometricAttenuation, OneAtNormalIncidence) {
+    EXPECT_DOUBLE_EQ(geometric_attenuation(kNormal, kNormal, kNormal), 1.0);
+}
+
+TEST(GeometricAttenuation, NeverAboveOneNorBelowZero) {
+    std::mt19937 engine(12345);
+    std::uniform_real_distribution<double> theta(0.0, kPi / 2.0);
+    std::uniform_real_distribution<double> phi(0.0, 2.0 * kPi);
+    for (int i = 0; i < 10000; ++i) {
+        const double g = geometric_attenuation(kNormal, at_angle(theta(engine), phi(engine)),
+                                               at_angle(theta(engine), phi(engine)));
+        ASSERT_GE(g, 0.0);
+        ASSERT_LE(g, 1.0);
+    }
+}
+
+TEST(GeometricAttenuation, GrazingMirrorConfigurationIsMasked) {
+    // V and L both 80 degrees from N, opposite azimuths: H = N, V.H = cos 80,
+    // 2 (N.H)(N.V)/(V.H) = 2: no masking. Same azimuth, V at 80, L at 10: H at 45 degrees.
+    EXPECT_DOUBLE_EQ(geometric_attenuation(kNormal, at_angle(1.396, 0.0), at_angle(1.396, kPi)),
+                     1.0);
+    const double t = 80.0 * kPi / 180.0;
+    const Vec3 v = at_angle(t, 0.0);
+    const Vec3 l = at_angle(10.0 * kPi / 180.0, 0.0);
+    const Vec3 h = normalize(v + l);
+    const double expected = 2.0 * dot(kNormal, h) * dot(kNormal, v) / dot(v, h);
+    EXPECT_NEAR(geometric_attenuation(kNormal, v, l), expected, 1e-12);
+    EXPECT_LT(expected, 1.0);
+}
+
+Attribute shiny() {
+    Attribute a;
+    a.color = {0.8, 0.2, 0.05};
+    a.specular = 0.6;
+    a.specular_exponent = 10.0;
+    a.refraction_index = {1.5, 1.5, 1.5};
+    return a;
+}
+
+TEST(SpecularHighlight, PhongAtTheMirrorDirectionIsTheSpecularWeight) {
+    const Attribute a = shiny();
+    const Vec3 l = at_angle(0.5, 0.0);
+    const Vec3 v = at_angle(0.5, kPi);
+    const Rgb h = specular_highlight({}, a, kNormal, l, v);
+    EXPECT_NEAR(h.r, 0.6, 1e-12);
+    EXPECT_NEAR(h.g, 0.6, 1e-12);
+    EXPECT_NEAR(h.b, 0.6, 1e-12);
+}
+
+TEST(SpecularHighlight, PhongFollowsCosToThePow) {
+    const Attribute a = shiny();
+    const Vec3 l = kNormal;
+    const Vec3 v = at_angle(0.3, 1.0);  // mirrored light is N: alpha = 0.3
+    EXPECT_NEAR(specular_highlight({}, a, kNormal, l, v).g, 0.6 * std::pow(std::cos(0.3), 10.0),
+                1e-12);
+}
+
+TEST(SpecularHighlight, NothingWhenLightOrViewerIsBelow) {
+    const Attribute a = shiny();
+    const Vec3 below = at_angle(2.0, 0.0);
+    for (const SpecularLaw law :
+         {SpecularLaw::Phong, SpecularLaw::PhongGeometric, SpecularLaw::TorranceSparrowGaussian,
+          SpecularLaw::TorranceSparrowBeckmann}) {
+        const SpecularSettings s = make_specular_settings(law, 0.3, HighlightTint::LightColor);
+        EXPECT_EQ(specular_highlight(s, a, kNormal, below, kNormal), Rgb{});
+        EXPECT_EQ(specular_highlight(s, a, kNormal, kNormal, below), Rgb{});
+    }
+}
+
+TEST(SpecularHighlight, PhongGeometricIsPhongTimesG) {
+    const Attribute a = shiny();
+    const Vec3 l = at_angle(1.3, 0.0);
+    const Vec3 v = at_angle(1.2, kPi + 0.2);
+    const SpecularSettings sg =
+        make_specular_settings(SpecularLaw::PhongGeometric, 1.0, HighlightTint::LightColor);
+    const double phong = specular_highlight({}, a, kNormal, l, v).g;
+    EXPECT_GT(phong, 0.0);
+    EXPECT_NEAR(specular_highlight(sg, a, kNormal, l, v).g,
+                phong * geometric_attenuation(kNormal, v, l), 1e-12);
+    EXPECT_NEAR(specular_highlight(sg, a, kNormal, kNormal, kNormal).g, 0.6, 1e-12);
+}
+
+TEST(SpecularHighlight, TorranceSparrowAtNormalIncidence) {
+    // L = V = N: H = N, G = 1, N.V = 1, F = ((n-1)/(n+1))^2 = 0.04 for n = 1.5.
+    const Attribute a = shiny();
+    const double m = 0.3;
+    const SpecularSettings beckmann =
+        make_specular_settings(SpecularLaw::TorranceSparrowBeckmann, m, HighlightTint::LightColor);
+    EXPECT_NEAR(specular_highlight(beckmann, a, kNormal, kNormal, kNormal).r,
+                0.6 * 0.04 / (kPi * m * m) / 4.0, 1e-12);
+    const SpecularSettings gaussian =
+        make_specular_settings(SpecularLaw::TorranceSparrowGaussian, m, HighlightTint::LightColor);
+    EXPECT_NEAR(gaussian.gaussian_normaliser, gaussian_normaliser(m), 0.0);
+    EXPECT_NEAR(specular_highlight(gaussian, a, kNormal, kNormal, kNormal).b,
+                0.6 * 0.04 * gaussian_normaliser(m) / 4.0, 1e-12);
+    SpecularSettings uncached = gaussian;
+    uncached.gaussian_normaliser = 0.0;
+    EXPECT_NEAR(specular_highlight(uncached, a, kNormal, kNormal, kNormal).b,
+                specular_highlight(gaussian, a, kNormal, kNormal, kNormal).b, 1e-12);
+}
+
+TEST(SpecularHighlight, TorranceSparrowUsesTheGreenIndex) {
+    Attribute a = shiny();
+    a.refraction_index = {1.2, 2.0, 3.0};
+    const SpecularSettings s = make_specular_settings(SpecularLaw::TorranceSparrowBeckmann, 0.5,
+                                                      HighlightTint::LightColor);
+    const double f = 1.0 / 9.0;  // ((2-1)/(2+1))^2
+    EXPECT_NEAR(specular_highlight(s, a, kNormal, kNormal, kNormal).r, 0.6 * f / (kPi * 0.25) / 4.0,
+                1e-12);
+}
+
+TEST(SpecularHighlight, ObjectColorFiltersTheHighlight) {
+    const Attribute a = shiny();
+    const Vec3 l = at_angle(0.5, 0.0);
+    const Vec3 v = at_angle(0.4, kPi);
+    const SpecularSettings co =
+        make_specular_settings(SpecularLaw::Phong, 1.0, HighlightTint::ObjectColor);
+    const Rgb grey = specular_highlight({}, a, kNormal, l, v);
+    const Rgb tinted = specular_highlight(co, a, kNormal, l, v);
+    EXPECT_NEAR(tinted.r, grey.r * 0.8, 1e-12);
+    EXPECT_NEAR(tinted.g, grey.g * 0.2, 1e-12);
+    EXPECT_NEAR(tinted.b, grey.b * 0.05, 1e-12);
+}
+
+TEST(SpecularHighlight, FresnelTintDiffersByChannel) {
+    const Attribute a = shiny();
+    const SpecularSettings cf =
+        make_specular_settings(SpecularLaw::Phong, 1.0, HighlightTint::Fresnel);
+    // At normal incidence each channel's reflectance is the colour itself.
+    const Rgb normal = specular_highlight(cf, a, kNormal, kNormal, kNormal);
+    EXPECT_NEAR(normal.r, 0.6 * 0.8, 1e-12);
+    EXPECT_NEAR(normal.g, 0.6 * 0.2, 1e-12);
+    EXPECT_NEAR(normal.b, 0.6 * 0.05, 1e-12);
+    // Toward grazing every channel whitens, the dark ones the most.
+    const Vec3 l = at_angle(1.4, 0.0);
+    const Vec3 v = at_angle(1.4, kPi);
+    const Rgb grazing = specular_highlight(cf, a, kNormal, l, v);
+    const double c = std::cos(1.4);  // V.H at the mirror direction
+    EXPECT_NEAR(grazing.r, 0.6 * fresnel_dielectric(c, 1.0, index_from_reflectance(0.8)), 1e-12);
+    EXPECT_NEAR(grazing.g, 0.6 * fresnel_dielectric(c, 1.0, index_from_reflectance(0.2)), 1e-12);
+    EXPECT_NEAR(grazing.b, 0.6 * fresnel_dielectric(c, 1.0, index_from_reflectance(0.05)), 1e-12);
+    EXPECT_GT(grazing.r, grazing.g);
+    EXPECT_GT(grazing.g, grazing.b);
+    EXPECT_GT(grazing.b / normal.b, grazing.r / normal.r);
+}
+
+TEST(SpecularHighlight, FresnelTintReplacesTheScalarFresnelTerm) {
+    const Attribute a = shiny();
+    const SpecularSettings cf =
+        make_specular_settings(SpecularLaw::TorranceSparrowBeckmann, 0.3, HighlightTint::Fresnel);
+    const Rgb h = specular_highlight(cf, a, kNormal, kNormal, kNormal);
+    const double dg = 1.0 / (kPi * 0.09) / 4.0;
+    EXPECT_NEAR(h.r, 0.6 * 0.8 * dg, 1e-12);
+    EXPECT_NEAR(h.b, 0.6 * 0.05 * dg, 1e-12);
+}
+
+TEST(SpecularSettings, SlopeMustBePositiveForTorranceSparrow) {
+    EXPECT_THROW(make_specular_settings(SpecularLaw::TorranceSparrowGaussian, 0.0,
+                                        HighlightTint::LightColor),
+                 UsageError);
+    EXPECT_THROW(make_specular_settings(SpecularLaw::TorranceSparrowBeckmann, -1.0,
+                                        HighlightTint::LightColor),
+                 UsageError);
+    EXPECT_NO_THROW(make_specular_settings(SpecularLaw::Phong, 0.0, HighlightTint::LightColor));
+}
+
+}  // namespace
+}  // namespace rt
