@@ -119,11 +119,8 @@ TEST(SwitchParser, AttachedOrSeparateArguments) {
     EXPECT_EQ(parse_command_line({"s", "-A", "40,2"}).attenuation_constant, 2.0);
     EXPECT_EQ(parse_command_line({"s", "-m", "2.5", "-n"}).given_switches,
               (std::vector<std::string>{"-m 2.5", "-n"}));
-    // -Wc is not implemented yet: reaching that verdict means its argument was read and checked.
-    EXPECT_EQ(usage_error({"s", "-Wc", "0.7"}),
-              "not implemented: -Wc: the conical Warn light is not implemented yet");
-    EXPECT_EQ(usage_error({"s", "-Wc0.7"}),
-              "not implemented: -Wc: the conical Warn light is not implemented yet");
+    EXPECT_EQ(parse_command_line({"s", "-Wc", "0.7"}).warn_parameter, 0.7);
+    EXPECT_EQ(parse_command_line({"s", "-Wc0.7"}).warn_parameter, 0.7);
     EXPECT_EQ(usage_error({"s", "-Wc", "x"}), "-Wc: expected a number after -Wc, found 'x'");
     EXPECT_EQ(usage_error({"s", "-Wc"}), "-Wc: expected a number after -Wc, found nothing");
     EXPECT_EQ(usage_error({"s", "-L"}), "-L: expected a whole number after -L, found nothing");
@@ -135,9 +132,8 @@ TEST(SwitchParser, LongestSpellingWins) {
               "not implemented: -dsp: the ddda strike check is not implemented yet");
     EXPECT_EQ(usage_error({"s", "-doo"}),
               "not implemented: -doo: octree debugging is not implemented yet");
-    EXPECT_EQ(usage_error({"s", "-Stg1.0"}),
-              "not implemented: -Stg: Torrance-Sparrow with Gaussian distribution is not "
-              "implemented yet");
+    EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).specular,
+              SpecularModel::TorranceSparrowGaussian);
     EXPECT_TRUE(parse_command_line({"s", "-Dp"}).dialect.no_power_fields);
     EXPECT_EQ(usage_error({"s", "-Dpx"}), "unknown switch '-Dpx'");
 }

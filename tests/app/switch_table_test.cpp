@@ -108,9 +108,10 @@ TEST(SwitchTable, NotYetRowsAreRefusedByName) {
 
 TEST(SwitchTable, StatusesOfThisRelease) {
     const std::set<std::string_view> implemented = {
-        "-n",  "-m",  "-c",  "-A",  "-Da", "-Dl", "-Ds", "-Dr", "-Dt", "-Db", "-T",
-        "-Dd", "-Dx", "-Df", "-Dp", "-Of", "-R",  "-M",  "-Po", "-Pt", "-Sp", "-L",
-        "-dc", "-df", "-I",  "-Xp", "-Xr", "-dx", "-F",  "-Oi", "-O1"};
+        "-n",   "-m",  "-c",  "-A",  "-Da", "-Dl", "-Ds", "-Dr", "-Dt", "-Db", "-T",
+        "-Dd",  "-Dx", "-Df", "-Dp", "-Of", "-R",  "-M",  "-Po", "-Pt", "-Sp", "-L",
+        "-dc",  "-df", "-I",  "-Xp", "-Xr", "-dx", "-F",  "-Oi", "-O1", "-Sg", "-Stg",
+        "-Stb", "-Co", "-Ci", "-Cf", "-Wr", "-Wc", "-Wt", "-K"};
     for (const SwitchSpec& spec : switch_table()) {
         const std::set<std::string_view> long_not_yet = {"--zbuffer"};
         const bool expected = (spec.is_long_option() && !long_not_yet.contains(spec.spelling)) ||
@@ -178,10 +179,10 @@ std::map<std::string_view, Expectation> expectations() {
                      o.microfacet_slope == 1.0;
           }}},
         {"-Stb",
-         {number(0.5),
+         {number(1.0),
           [](const Options& o) {
               return o.specular == SpecularModel::TorranceSparrowBeckmann &&
-                     o.microfacet_slope == 0.5;
+                     o.microfacet_slope == 1.0;
           }}},
         {"-R", {{}, [](const Options& o) { return o.dialect.rgb_refraction; }}},
         {"-Wr", {{}, [](const Options& o) { return o.warn == WarnLight::Rogers; }}},

@@ -1,5 +1,9 @@
 // Whole pictures: the shipped scenes against reference images, and independence from threads.
+#include <algorithm>
 #include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
 
 #include "rt/image/compare.h"
 #include "rt/image/png_format.h"
@@ -31,23 +35,55 @@ fs::path render(const TempDir& dir, const std::string& scene, const std::string&
     return dir.path() / output;
 }
 
-TEST(Golden, TwocubesMatchesItsReference) {
+// One shipped scene under one combination of switches, and the reference it must match.
+struct GoldenCase {
+    std::string name;  ///< tests/data/golden/<name>.png
+    std::string scene;
+    std::vector<std::string> switches;
+};
+
+std::ostream& operator<<(std::ostream& out, const GoldenCase& c) {
+    return out << c.name;
+}
+
+class Golden : public ::testing::TestWithParam<GoldenCase> {};
+
+TEST_P(Golden, MatchesItsReference) {
+    const GoldenCase& c = GetParam();
     const TempDir dir;
-    const fs::path made = render(dir, "twocubes", "twocubes.png");
+    const fs::path made = render(dir, c.scene, c.name + ".png", c.switches);
     const Image8 got = read_png(made);
-    const Image8 want = read_png(source_dir() / "tests/data/golden/twocubes.png");
+    const Image8 want = read_png(source_dir() / "tests/data/golden" / (c.name + ".png"));
     ASSERT_EQ(got.width, want.width);
     ASSERT_EQ(got.height, want.height);
     const ImageDifference d = compare_images(got, want, kChannelTolerance);
     EXPECT_LE(d.fraction_over_threshold, kPixelFractionTolerance);
     EXPECT_LE(d.mean_absolute_difference, kMeanTolerance);
     if (HasFailure()) {
-        fs::copy_file(made, fs::temp_directory_path() / "rt-golden-twocubes-got.png",
-                      fs::copy_options::overwrite_existing);
-        ADD_FAILURE() << "the render was kept as " << fs::temp_directory_path()
-                      << "/rt-golden-twocubes-got.png";
+        const fs::path kept = fs::temp_directory_path() / ("rt-golden-" + c.name + "-got.png");
+        fs::copy_file(made, kept, fs::copy_options::overwrite_existing);
+        ADD_FAILURE() << "the render was kept as " << kept;
     }
 }
+
+// Regenerate a reference, on purpose only, with
+//   build/bin/rt scenes/SCENE -n --quiet SWITCHES --output tests/data/golden/NAME.png
+INSTANTIATE_TEST_SUITE_P(
+    Shipped, Golden,
+    ::testing::Values(GoldenCase{"twocubes", "twocubes", {}},
+                      GoldenCase{"twocubes-Dd", "twocubes", {"-Dd"}},
+                      GoldenCase{"twocubes-Ds", "twocubes", {"-Ds"}},
+                      GoldenCase{"twocubes-Stb-Cf", "twocubes", {"-Stb0.3", "-Cf"}},
+                      GoldenCase{"twocubes-Sg-Co", "twocubes", {"-Sg", "-Co"}},
+                      GoldenCase{"twocubes-Wr-T", "twocubes", {"-Wr", "-T"}},
+                      GoldenCase{"twocubes-K-Da", "twocubes", {"-K", "-Da"}},
+                      GoldenCase{"twocubes-F-I", "twocubes", {"-F0.05,4", "-I", "--seed", "3"}},
+                      GoldenCase{"twocubes-Oi", "twocubes", {"-Oi"}}),
+    [](const ::testing::TestParamInfo<GoldenCase>& info) {
+        std::string name = info.param.name;
+        std::replace(name.begin(), name.end(), '-', '_');
+        return name;
+    });
 
 TEST(Golden, SamePictureWhateverTheThreadCount) {
     const TempDir dir;

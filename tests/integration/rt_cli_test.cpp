@@ -55,7 +55,7 @@ TEST_F(RtProgram, UnknownSwitchIsAUsageError) {
 }
 
 TEST_F(RtProgram, SwitchNotDoneYetFailsClearly) {
-    const ProgramResult r = rt({"scenes/twocubes", "-Sg"});
+    const ProgramResult r = rt({"scenes/twocubes", "-w"});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("not implemented yet"), std::string::npos);
     EXPECT_FALSE(fs::exists(at("twocubes.gro")));

@@ -14,6 +14,8 @@
 #include "rt/image/image_writer.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/load_scene.h"
+#include "rt/shading/lights.h"
+#include "rt/shading/weight_scaling.h"
 
 namespace rt {
 
@@ -38,6 +40,58 @@ std::string utc_now() {
     char text[32];
     std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
     return text;
+}
+
+SpecularSettings specular_settings(const Options& o) {
+    SpecularLaw law = SpecularLaw::Phong;
+    switch (o.specular) {
+        case SpecularModel::Phong:
+            law = SpecularLaw::Phong;
+            break;
+        case SpecularModel::PhongGeometric:
+            law = SpecularLaw::PhongGeometric;
+            break;
+        case SpecularModel::TorranceSparrowGaussian:
+            law = SpecularLaw::TorranceSparrowGaussian;
+            break;
+        case SpecularModel::TorranceSparrowBeckmann:
+            law = SpecularLaw::TorranceSparrowBeckmann;
+            break;
+    }
+    HighlightTint tint = HighlightTint::LightColor;  // the default and -Ci
+    if (o.highlight == HighlightColor::ObjectAttenuates) {
+        tint = HighlightTint::ObjectColor;
+    } else if (o.highlight == HighlightColor::Fresnel) {
+        tint = HighlightTint::Fresnel;
+    }
+    return make_specular_settings(law, o.microfacet_slope, tint);
+}
+
+WarnSettings warn_settings(const Options& o) {
+    switch (o.warn) {
+        case WarnLight::Rogers:
+            return {WarnMode::Rogers, 0.0, 0.0};
+        case WarnLight::Conical:
+            return {WarnMode::Conical, o.warn_parameter, 0.0};
+        case WarnLight::Thibadeau:
+            return {WarnMode::Thibadeau, 0.0, o.warn_parameter};
+        case WarnLight::None:
+            break;
+    }
+    return {};
+}
+
+// -K: every attribute's weights scaled down so that intensities need not be clipped
+// (docs/illumination-models.md), before anything reads them.
+void scale_weights_down(Scene& scene, const ShadingSettings& settings) {
+    const std::vector<PointLight> lights =
+        settings.shadow_feelers
+            ? collect_point_lights(scene, scene.header.lghtick, settings.share_light_among_points)
+            : std::vector<PointLight>{};
+    const WeightScalingInputs inputs = weight_scaling_inputs(settings, lights);
+    for (Attribute& a : scene.attributes) {
+        a = scale_weights(a, weight_scale(a, inputs));
+    }
 }
 
 // -Oi: the earliest version's illumination (docs/rendering.md): Whitted's model as first
@@ -80,6 +134,8 @@ ShadingSettings shading_settings(const Options& o) {
     if (o.ray_stop_probability) {
         sampling.ray_stop = {*o.ray_stop_probability, o.ray_stop_variance};
     }
+    s.specular = specular_settings(o);
+    s.warn = warn_settings(o);
     if (o.old_illumination || o.old_version) {
         apply_early_model(s);
     }
@@ -228,10 +284,13 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     if (options.trace_parsing) {
         diagnostics.set_trace_sink(console.trace);
     }
-    const Scene scene = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
+    Scene scene = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
 
     RenderSettings settings;
     settings.shading = shading_settings(options);
+    if (options.scale_weights) {
+        scale_weights_down(scene, settings.shading);
+    }
     settings.window = render_window(scene, options);
     settings.threads = options.threads;
 

@@ -4,6 +4,7 @@
 
 #include "rt/shading/optics.h"
 #include "rt/shading/shadow_feeler.h"
+#include "rt/shading/specular_model.h"
 
 namespace rt {
 
@@ -14,14 +15,14 @@ double cos_power(double cosine, double exponent) {
 }
 
 // Diffuse and specular reflection of one light on the viewer's side of the polygon.
-Rgb reflected_light(const SurfacePoint& s, const Vec3& view, const Vec3& to_light,
-                    const Rgb& received, bool highlights) {
+Rgb reflected_light(const ShadingSettings& settings, const SurfacePoint& s, const Vec3& view,
+                    const Vec3& to_light, const Rgb& received, bool highlights) {
     const Attribute& a = *s.attribute;
     const double lambert = std::fmax(0.0, dot(s.shading_normal, to_light));
     Rgb result = received * a.color * (a.diffuse * lambert);
     if (highlights) {
-        const Vec3 mirrored = reflect(-to_light, s.shading_normal);
-        result += received * (a.specular * cos_power(dot(mirrored, view), a.specular_exponent));
+        result += received * specular_highlight(settings.specular, a, s.shading_normal, to_light,
+                                                view);
     }
     return result;
 }
@@ -67,7 +68,7 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
         if (max_component(received) <= 0.0) {
             continue;
         }
-        result += viewer_side ? reflected_light(s, view, to_light, received, highlights)
+        result += viewer_side ? reflected_light(settings, s, view, to_light, received, highlights)
                               : transmitted_light(s, view, to_light, received);
     }
     return result;

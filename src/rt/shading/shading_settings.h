@@ -5,6 +5,8 @@
 #include <cstdint>
 
 #include "rt/sampling/chi_square.h"
+#include "rt/shading/specular_model.h"
+#include "rt/shading/warn_light.h"
 
 namespace rt {
 
@@ -40,6 +42,8 @@ struct ShadingSettings {
     double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
     SamplingSettings sampling;
     FuzzyFeelers fuzzy;                    ///< -F
+    SpecularSettings specular;             ///< -S and -C: the highlight's law and colour
+    WarnSettings warn;                     ///< -Wr -Wc -Wt
     bool share_light_among_points = true;  ///< off with -Oi: every point source at full power
 
     /// The manual's attenuation factor 1 / (dist/d + c).

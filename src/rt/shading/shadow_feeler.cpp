@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rt/geometry/ray_polygon.h"
 #include "rt/sampling/directions.h"
+#include "rt/shading/warn_light.h"
 
 namespace rt {
 
@@ -43,22 +45,41 @@ Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const V
 Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight& light,
                TraceCounters& counters) {
     const ShadingSettings& settings = context.settings;
-    const Vec3 span = light.position - from;
-    const double distance = length(span);
+    const double distance = length(light.position - from);
     if (!(distance > context.epsilon)) {
         return {};
     }
+    // Warn lights aim the feeler (at a displaced source for -Wt) and weigh what it brings.
+    double warn = 1.0;
+    Vec3 target = light.position;
+    if (settings.warn.mode != WarnMode::None) {
+        const Polygon& emitter_polygon = context.scene.polygons[light.polygon];
+        const WarnEmitter emitter{emitter_polygon.normal,
+                                  context.scene.attribute_of(emitter_polygon).specular_exponent,
+                                  settings.both_sides_emit};
+        target = warn_feeler_target(settings.warn, emitter, light.position, from);
+        const bool crosses =
+            settings.warn.mode == WarnMode::Thibadeau &&
+            intersect_polygon(Ray{from, target - from}, context.scene, light.polygon, {0.0, 1.0})
+                .has_value();
+        warn = warn_factor(settings.warn, emitter, normalize(from - target), crosses);
+        if (!(warn > 0.0)) {
+            return {};
+        }
+    }
+    const Vec3 span = target - from;
     Rgb passed;
     const FuzzyFeelers& fuzzy = settings.fuzzy;
     if (fuzzy.enabled() && context.stream != nullptr) {
         // Each feeler turned at random within distangle of the light's direction (uniform over
         // the cone's solid angle), as long as the light is far.
         const CosPowerCone cone{fuzzy.angle, 0.0};
-        const Vec3 axis = span / distance;
+        const double length_to_target = length(span);
+        const Vec3 axis = span / length_to_target;
         for (int k = 0; k < fuzzy.count; ++k) {
             const double u1 = context.stream->uniform();
             const double u2 = context.stream->uniform();
-            const Vec3 turned = sample_cone(cone, axis, u1, u2) * distance;
+            const Vec3 turned = sample_cone(cone, axis, u1, u2) * length_to_target;
             passed += feeler_transmittance(context, from, turned, light.polygon, counters);
         }
         passed *= 1.0 / fuzzy.count;
@@ -69,7 +90,7 @@ Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight&
         return {};
     }
     const double fall_off = settings.attenuate_feelers ? settings.attenuation(distance) : 1.0;
-    return light.intensity * passed * fall_off;
+    return light.intensity * passed * (fall_off * warn);
 }
 
 }  // namespace rt
