@@ -16,7 +16,9 @@ std::vector<std::string> dollar_words(const SourceText& text) {
     while (reader.next(line)) {
         std::string words = std::to_string(line.line) + ":";
         for (const Token& t : line.tokens) {
-            words += " " + std::string(t.text) + "@" + std::to_string(t.column);
+            // Appended piece by piece: `" " + std::string(...)` trips a GCC 12 -Wrestrict
+            // false alarm.
+            words.append(" ").append(t.text).append("@").append(std::to_string(t.column));
         }
         out.push_back(words);
     }

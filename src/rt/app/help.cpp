@@ -138,7 +138,7 @@ std::string rules_list(std::size_t width) {
             const std::string_view word = rule.substr(start, space - start);
             if (width > 0 && line.size() + 1 + word.size() > width) {
                 text += cat({line, "\n"});
-                line = " ";
+                line.assign(1, ' ');  // not = " ": that trips a GCC 12 -Wrestrict false alarm
             }
             line += cat({" ", word});
             start = space == std::string_view::npos ? rule.size() : space + 1;

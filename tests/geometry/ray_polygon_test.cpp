@@ -1,0 +1,280 @@
+// intersect_polygon on single polygons: triangles, quads, concave and self-crossing loops, many
+// corners; rays parallel to or in the polygon's plane; invalid rays; the open interval.
+#include "rt/geometry/ray_polygon.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/scene_builder.h"
+
+namespace rt {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr Interval kWholeLine{-1e300, 1e300};
+const Vec3 kUp{0, 0, 1};
+
+// A ray straight down onto the point (x, y) of the plane z = 0, from z = 5.
+Ray down_onto(double x, double y) {
+    return {{x, y, 5.0}, {0, 0, -1}};
+}
+
+std::optional<double> hit_flat(const std::vector<Vec3>& corners, const Ray& ray,
+                               Interval t = kWholeLine) {
+    return intersect_polygon(ray, corners, kUp, t);
+}
+
+bool hits_flat(const std::vector<Vec3>& corners, double x, double y) {
+    return hit_flat(corners, down_onto(x, y)).has_value();
+}
+
+// Corners on a circle (z = 0), counter-clockwise seen from +z; radius per corner alternating
+// between `outer` and `inner` makes a concave star.
+std::vector<Vec3> circle_loop(int count, double outer, double inner) {
+    std::vector<Vec3> loop;
+    for (int k = 0; k < count; ++k) {
+        const double phi = 2.0 * std::numbers::pi * k / count;
+        const double r = k % 2 == 0 ? outer : inner;
+        loop.push_back({r * std::cos(phi), r * std::sin(phi), 0.0});
+    }
+    return loop;
+}
+
+// Reference: even-odd crossing test in the plane z = 0 (right for simple polygons away from the
+// boundary, which is all it is asked about).
+bool inside_by_crossings(const std::vector<Vec3>& loop, double x, double y) {
+    bool inside = false;
+    for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const Vec3& a = loop[i];
+        const Vec3& b = loop[j];
+        if ((a.y > y) != (b.y > y) && x < (b.x - a.x) * (y - a.y) / (b.y - a.y) + a.x) {
+            inside = !inside;
+        }
+    }
+    return inside;
+}
+
+// Distance from (x, y) to the loop's boundary, to keep the reference away from its weak spot.
+double distance_to_boundary(const std::vector<Vec3>& loop, double x, double y) {
+    double nearest = kInf;
+    for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const Vec3 p{x, y, 0};
+        const Vec3 edge = loop[i] - loop[j];
+        const double s = std::clamp(dot(p - loop[j], edge) / dot(edge, edge), 0.0, 1.0);
+        nearest = std::min(nearest, length(p - (loop[j] + edge * s)));
+    }
+    return nearest;
+}
+
+const std::vector<Vec3> kTriangle{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}};
+const std::vector<Vec3> kSquare{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+// An L: the square [0,2]^2 without its upper right quarter [1,2]x[1,2].
+const std::vector<Vec3> kLShape{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+
+TEST(IntersectPolygon, TriangleHitAndDepth) {
+    const std::optional<double> t = hit_flat(kTriangle, down_onto(1, 1));
+    ASSERT_TRUE(t);
+    EXPECT_DOUBLE_EQ(*t, 5.0);
+    EXPECT_FALSE(hits_flat(kTriangle, 3, 2));  // beyond the hypotenuse
+    EXPECT_FALSE(hits_flat(kTriangle, -0.1, 1));
+    EXPECT_FALSE(hits_flat(kTriangle, 1, -0.1));
+}
+
+TEST(IntersectPolygon, DepthScalesWithTheDirectionsLength) {
+    const Ray slow{{1, 1, 5}, {0, 0, -0.5}};
+    const std::optional<double> t = hit_flat(kTriangle, slow);
+    ASSERT_TRUE(t);
+    EXPECT_DOUBLE_EQ(*t, 10.0);
+}
+
+TEST(IntersectPolygon, EitherLoopOrientationAndEitherSideHit) {
+    std::vector<Vec3> reversed(kSquare.rbegin(), kSquare.rend());
+    EXPECT_TRUE(hits_flat(reversed, 1, 1));
+    const Ray from_below{{1, 1, -5}, {0, 0, 1}};
+    EXPECT_TRUE(hit_flat(kSquare, from_below));
+    EXPECT_TRUE(hit_flat(reversed, from_below));
+}
+
+TEST(IntersectPolygon, ObliqueRayThroughATiltedQuad) {
+    // The unit square tilted about the x axis; the ray aims at its centre from an angle.
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    const std::vector<Vec3> quad{{0, 0, 0}, {1, 0, 0}, {1, c, s}, {0, c, s}};
+    const Vec3 normal = test::newell_normal(quad);
+    const Vec3 centre{0.5, 0.5 * c, 0.5 * s};
+    const Vec3 direction{0.3, -0.4, -1.0};
+    const Ray ray{centre - direction * 7.0, direction};
+    const std::optional<double> t = intersect_polygon(ray, quad, normal, kWholeLine);
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(*t, 7.0, 1e-12);
+    const Ray beside{centre + Vec3{1.2, 0, 0} - direction * 7.0, direction};
+    EXPECT_FALSE(intersect_polygon(beside, quad, normal, kWholeLine));
+}
+
+TEST(IntersectPolygon, LShapeMissesItsNotch) {
+    EXPECT_TRUE(hits_flat(kLShape, 0.5, 0.5));
+    EXPECT_TRUE(hits_flat(kLShape, 1.5, 0.5));
+    EXPECT_TRUE(hits_flat(kLShape, 0.5, 1.5));
+    EXPECT_FALSE(hits_flat(kLShape, 1.5, 1.5));  // the notch
+    EXPECT_FALSE(hits_flat(kLShape, 1.01, 1.01));
+    EXPECT_TRUE(hits_flat(kLShape, 0.99, 0.99));
+}
+
+TEST(IntersectPolygon, ConcaveStarMissesBetweenItsPoints) {
+    const std::vector<Vec3> star = circle_loop(10, 2.0, 0.5);
+    EXPECT_TRUE(hits_flat(star, 0, 0));
+    EXPECT_TRUE(hits_flat(star, 1.8, 0));  // near the tip at angle 0
+    // Between two tips (angle 36 degrees, where the inner corner is at radius 0.5).
+    const double phi = 2.0 * std::numbers::pi / 10;
+    EXPECT_FALSE(hits_flat(star, 1.0 * std::cos(phi), 1.0 * std::sin(phi)));
+    EXPECT_TRUE(hits_flat(star, 0.4 * std::cos(phi), 0.4 * std::sin(phi)));
+}
+
+TEST(IntersectPolygon, SelfCrossingPentagramCountsItsCentre) {
+    // Corners 0, 2, 4, 1, 3 of a pentagon: the centre is wound twice, the points once.
+    const std::vector<Vec3> pentagon = circle_loop(5, 1.0, 1.0);
+    const std::vector<Vec3> pentagram{pentagon[0], pentagon[2], pentagon[4], pentagon[1],
+                                      pentagon[3]};
+    const RaySpace centre(down_onto(0, 0));
+    EXPECT_EQ(std::abs(winding_number(centre, pentagram)), 2);
+    EXPECT_TRUE(hits_flat(pentagram, 0, 0));
+    EXPECT_TRUE(hits_flat(pentagram, 0.8, 0));  // inside the point at corner 0
+    EXPECT_FALSE(hits_flat(pentagram, 0.7 * std::cos(0.63), 0.7 * std::sin(0.63)));  // a notch
+}
+
+TEST(IntersectPolygon, ManyCornersAgreeWithACrossingTest) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> coordinate(-2.2, 2.2);
+    for (const int corners : {20, 21, 200}) {
+        for (const double inner : {2.0, 1.2, 0.3}) {  // convex, then two concave stars
+            const std::vector<Vec3> loop = circle_loop(corners, 2.0, inner);
+            int hits = 0;
+            for (int i = 0; i < 2000; ++i) {
+                const double x = coordinate(random), y = coordinate(random);
+                if (distance_to_boundary(loop, x, y) < 1e-9) {
+                    continue;
+                }
+                const bool hit = hits_flat(loop, x, y);
+                ASSERT_EQ(hit, inside_by_crossings(loop, x, y))
+                    << corners << " corners, inner " << inner << " at " << x << "," << y;
+                hits += hit ? 1 : 0;
+            }
+            EXPECT_GT(hits, 0);
+            EXPECT_LT(hits, 2000);
+        }
+    }
+}
+
+TEST(IntersectPolygon, WindingNumberFollowsTheLoopsOrientation) {
+    const RaySpace down(down_onto(1, 1));
+    const std::vector<Vec3> reversed(kSquare.rbegin(), kSquare.rend());
+    const int forward = winding_number(down, kSquare);
+    EXPECT_EQ(std::abs(forward), 1);
+    EXPECT_EQ(winding_number(down, reversed), -forward);
+    const RaySpace up(Ray{{1, 1, -5}, {0, 0, 1}});
+    EXPECT_EQ(std::abs(winding_number(up, kSquare)), 1);  // from the other side: hit too
+    EXPECT_EQ(winding_number(RaySpace(down_onto(3, 3)), kSquare), 0);
+    EXPECT_TRUE(ray_passes_through(down, kSquare));
+}
+
+TEST(IntersectPolygon, FewerThanThreeCornersNeverHit) {
+    const std::vector<Vec3> two{{-1, -1, 0}, {1, 1, 0}};
+    EXPECT_FALSE(hit_flat(two, down_onto(0, 0)));
+    EXPECT_EQ(winding_number(RaySpace(down_onto(0, 0)), two), 0);
+    EXPECT_FALSE(hit_flat({}, down_onto(0, 0)));
+}
+
+TEST(IntersectPolygon, RayParallelToThePlaneMisses) {
+    EXPECT_FALSE(hit_flat(kSquare, Ray{{1, 1, 1}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, 1, 1e-9}, {1, 0.2, 0}}));
+}
+
+TEST(IntersectPolygon, RayInThePlaneMisses) {
+    // Exactly in the plane, through the middle and along an edge: the projection has no area.
+    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, 1, 0}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, 0, 0}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, -5, 0}, {1, 1, 0}}));  // the diagonal
+    EXPECT_FALSE(hit_flat(kLShape, Ray{{-5, 1.5, 0}, {1, 0, 0}}));
+}
+
+TEST(IntersectPolygon, NearlyParallelRayHitsWhereItCrossesThePlane) {
+    // Dropping 1e-9 over 5 units: the plane z = 0 is met at x = 1, inside the square, by a ray
+    // far below the grazing limit.
+    const Ray ray{{-4, 1, 1e-9}, {1, 0, -2e-10}};
+    const std::optional<double> t = hit_flat(kSquare, ray);
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(*t, 5.0, 1e-6);
+    const Ray beside{{-4, 3, 1e-9}, {1, 0, -2e-10}};
+    EXPECT_FALSE(hit_flat(kSquare, beside));
+    const Ray short_of_it{{-4, 1, 1e-9}, {1, 0, -1e-10}};  // would meet the plane at x = 6
+    EXPECT_FALSE(hit_flat(kSquare, short_of_it));
+}
+
+TEST(IntersectPolygon, InvalidRaysMiss) {
+    const Vec3 origin{1, 1, 5};
+    for (const Vec3& direction : {Vec3{0, 0, 0}, Vec3{0, 0, kNaN}, Vec3{kNaN, kNaN, kNaN},
+                                  Vec3{0, 0, -kInf}, Vec3{kInf, 0, -1}, Vec3{0, 0, -0.0}}) {
+        const Ray ray{origin, direction};
+        EXPECT_FALSE(RaySpace(ray).valid());
+        EXPECT_FALSE(hit_flat(kSquare, ray));
+        EXPECT_EQ(winding_number(RaySpace(ray), kSquare), 0);
+    }
+    for (const Vec3& bad_origin : {Vec3{kNaN, 1, 5}, Vec3{1, kInf, 5}}) {
+        EXPECT_FALSE(RaySpace(Ray{bad_origin, {0, 0, -1}}).valid());
+        EXPECT_FALSE(hit_flat(kSquare, Ray{bad_origin, {0, 0, -1}}));
+    }
+}
+
+TEST(IntersectPolygon, NonFiniteCornersMiss) {
+    const std::vector<Vec3> broken{{0, 0, 0}, {2, 0, 0}, {kNaN, 2, 0}, {0, 2, 0}};
+    const std::vector<Vec3> huge{{0, 0, 0}, {kInf, 0, 0}, {kInf, kInf, 0}, {0, kInf, 0}};
+    EXPECT_FALSE(hit_flat(broken, down_onto(1.5, 0.5)));
+    EXPECT_FALSE(hit_flat(huge, down_onto(1, 1)));
+}
+
+TEST(IntersectPolygon, IntervalIsOpenAtBothEnds) {
+    const Ray ray = down_onto(1, 1);  // meets the square at t = 5 exactly
+    EXPECT_TRUE(hit_flat(kSquare, ray, {4.0, 6.0}));
+    EXPECT_FALSE(hit_flat(kSquare, ray, {5.0, 6.0}));
+    EXPECT_FALSE(hit_flat(kSquare, ray, {4.0, 5.0}));
+    EXPECT_TRUE(hit_flat(kSquare, ray, {std::nextafter(5.0, 0.0), std::nextafter(5.0, 6.0)}));
+    EXPECT_FALSE(hit_flat(kSquare, Ray{{1, 1, -5}, {0, 0, -1}}, {0.0, 1e300}));  // behind
+}
+
+TEST(PlaneHit, DepthOfThePlane) {
+    const std::optional<double> t = plane_hit(Ray{{0, 0, 5}, {0, 0, -2}}, {7, 8, 1}, kUp);
+    ASSERT_TRUE(t);
+    EXPECT_DOUBLE_EQ(*t, 2.0);
+    EXPECT_FALSE(plane_hit(Ray{{0, 0, 5}, {1, 0, 0}}, {0, 0, 0}, kUp));
+    EXPECT_FALSE(plane_hit(Ray{{0, 0, 5}, {0, 0, kNaN}}, {0, 0, 0}, kUp));
+    EXPECT_FALSE(plane_hit(Ray{{0, 0, 1e300}, {0, 0, -1e-300}}, {0, 0, 0}, kUp));  // t overflows
+}
+
+TEST(RaySpace, ProjectsTheRayToTheOrigin) {
+    std::mt19937_64 random(8);
+    std::uniform_real_distribution<double> any(-10.0, 10.0);
+    for (int i = 0; i < 1000; ++i) {
+        const Ray ray{{any(random), any(random), any(random)},
+                      {any(random), any(random), any(random)}};
+        const RaySpace space(ray);
+        ASSERT_TRUE(space.valid());
+        double x = 1.0, y = 1.0;
+        space.project(ray.origin, x, y);
+        EXPECT_EQ(x, 0.0);
+        EXPECT_EQ(y, 0.0);
+        space.project(ray.at(3.0), x, y);
+        EXPECT_NEAR(x, 0.0, 1e-12);
+        EXPECT_NEAR(y, 0.0, 1e-12);
+        // A point off the line projects off the origin.
+        space.project(ray.origin + cross(ray.direction, Vec3{1, 2, 3}), x, y);
+        EXPECT_GT(std::hypot(x, y), 1e-9);
+    }
+}
+
+}  // namespace
+}  // namespace rt
