@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rt/accel/brute_force.h"
+#include "rt/accel/seads/seads.h"
 #include "rt/core/error.h"
 
 namespace rt {
@@ -42,6 +43,8 @@ std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSet
     switch (settings.kind) {
         case AccelKind::BruteForce:
             return make_brute_force(scene);
+        case AccelKind::Seads:
+            return make_seads(scene, settings);
         default:
             throw NotImplementedError(std::string("the ") +
                                       std::string(accel_kind_name(settings.kind)) +

@@ -1,0 +1,112 @@
+#include "rt/accel/seads/seads_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "rt/accel/voxel/polygon_box_overlap.h"
+#include "rt/core/error.h"
+
+namespace rt {
+
+namespace {
+
+void check_side(int side) {
+    if (side < 1) {
+        throw UsageError("SEADS needs at least 1 voxel a side, not " + std::to_string(side));
+    }
+    const auto n = static_cast<std::uint64_t>(side);
+    if (n > 1024 || n * n * n > kMaxSeadsVoxels) {
+        throw UsageError("SEADS with " + std::to_string(side) + " voxels a side would need " +
+                         std::to_string(n * n * n) + " voxels; at most " +
+                         std::to_string(kMaxSeadsVoxels) +
+                         " are built (322 a side): lower the scene header's first number");
+    }
+}
+
+// The voxels along one axis that the range [lo, hi] may touch.
+std::pair<int, int> voxel_range(const SeadsGrid& grid, int axis, double lo, double hi) {
+    const double start = grid.world.lo[axis];
+    const double size = grid.voxel_size[axis];
+    auto cell = [&](double x) {
+        const double c = std::floor((x - start) / size);
+        return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.side - 1)));
+    };
+    return {cell(lo), cell(hi)};
+}
+
+using VoxelAndPolygon = std::pair<std::uint32_t, std::uint32_t>;
+
+void file_polygon(const Scene& scene, const SeadsGrid& grid, double fudge, std::uint32_t id,
+                  std::vector<VoxelAndPolygon>& out) {
+    const Box bounds = polygon_bounds(scene, id).padded(fudge);
+    const auto [x0, x1] = voxel_range(grid, 0, bounds.lo.x, bounds.hi.x);
+    const auto [y0, y1] = voxel_range(grid, 1, bounds.lo.y, bounds.hi.y);
+    const auto [z0, z1] = voxel_range(grid, 2, bounds.lo.z, bounds.hi.z);
+    if (x0 == x1 && y0 == y1 && z0 == z1) {
+        // Small polygons, the common case, need no overlap test.
+        out.emplace_back(static_cast<std::uint32_t>(grid.index(x0, y0, z0)), id);
+        return;
+    }
+    for (int z = z0; z <= z1; ++z) {
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x) {
+                if (polygon_overlaps_box(scene, id, grid.voxel_box(x, y, z).padded(fudge))) {
+                    out.emplace_back(static_cast<std::uint32_t>(grid.index(x, y, z)), id);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+Box SeadsGrid::voxel_box(int x, int y, int z) const {
+    const Vec3 lo{world.lo.x + x * voxel_size.x, world.lo.y + y * voxel_size.y,
+                  world.lo.z + z * voxel_size.z};
+    // The last voxel ends exactly at the world's face, whatever the rounding of lo + n * size.
+    const Vec3 hi{x + 1 == side ? world.hi.x : world.lo.x + (x + 1) * voxel_size.x,
+                  y + 1 == side ? world.hi.y : world.lo.y + (y + 1) * voxel_size.y,
+                  z + 1 == side ? world.hi.z : world.lo.z + (z + 1) * voxel_size.z};
+    return {lo, hi};
+}
+
+SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
+    check_side(side);
+    SeadsGrid grid;
+    grid.side = side;
+    grid.world = world_box(scene, false);
+    grid.voxel_size = grid.world.extent() / static_cast<double>(side);
+    const double fudge = voxel_fudge(grid.world, no_fudge);
+
+    // One pass collects (voxel, polygon) pairs in polygon order; a counting sort by voxel then
+    // lays them out, so each voxel's ids stay ascending.
+    std::vector<VoxelAndPolygon> pairs;
+    pairs.reserve(scene.polygons.size() + scene.polygons.size() / 2);
+    const auto count = static_cast<std::uint32_t>(scene.polygons.size());
+    for (std::uint32_t id = 0; id < count; ++id) {
+        file_polygon(scene, grid, fudge, id, pairs);
+    }
+    if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {
+        throw UsageError("SEADS: more than 2^32 polygon references; use fewer voxels a side");
+    }
+
+    // Counts, then running ends; filling backwards moves each end down to its voxel's start.
+    const std::size_t voxels = static_cast<std::size_t>(side) * side * side;
+    grid.offsets.assign(voxels + 1, 0);
+    for (const auto& [voxel, id] : pairs) {
+        ++grid.offsets[voxel];
+    }
+    for (std::size_t v = 1; v <= voxels; ++v) {
+        grid.offsets[v] += grid.offsets[v - 1];
+    }
+    grid.polygons.resize(pairs.size());
+    for (auto it = pairs.rbegin(); it != pairs.rend(); ++it) {
+        grid.polygons[--grid.offsets[it->first]] = it->second;
+    }
+    return grid;
+}
+
+}  // namespace rt

@@ -1,0 +1,42 @@
+// The SEADS grid (manual 2.2: "N 0" in the scene header): N x N x N equal voxels over the world
+// box, each with the ids of the polygons that touch it, in one flat array with an offset table.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rt/accel/voxel/box.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+/// The largest grid built: 2^25 voxels (322 a side), whose offset table alone is 128 MiB.
+inline constexpr std::uint64_t kMaxSeadsVoxels = std::uint64_t{1} << 25;
+
+struct SeadsGrid {
+    Box world;
+    int side = 1;                         ///< voxels along each axis
+    Vec3 voxel_size;                      ///< world extent / side, per axis
+    std::vector<std::uint32_t> offsets;   ///< side^3 + 1: voxel v holds [offsets[v], offsets[v+1])
+    std::vector<std::uint32_t> polygons;  ///< the voxels' polygon ids, voxel after voxel
+
+    std::size_t index(int x, int y, int z) const {
+        return (static_cast<std::size_t>(z) * side + y) * side + x;
+    }
+    std::span<const std::uint32_t> voxel(std::size_t v) const {
+        return {polygons.data() + offsets[v], polygons.data() + offsets[v + 1]};
+    }
+    /// Box of voxel (x, y, z), unpadded.
+    Box voxel_box(int x, int y, int z) const;
+    std::size_t memory_bytes() const {
+        return offsets.capacity() * sizeof(std::uint32_t) +
+               polygons.capacity() * sizeof(std::uint32_t);
+    }
+};
+
+/// Files every polygon in each voxel it touches, each voxel grown by the fudge for the test.
+/// Throws UsageError for a side below 1 or a grid above kMaxSeadsVoxels, before allocating.
+SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge);
+
+}  // namespace rt

@@ -1,0 +1,87 @@
+#include "rt/accel/voxel/box.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+namespace {
+
+// The world's margin, relative to its largest side: far larger than any rounding, far smaller
+// than any voxel of interest (2^-20 of the world is the finest octree level).
+constexpr double kWorldMargin = 0x1p-12;
+
+}  // namespace
+
+double Box::largest_extent() const {
+    const Vec3 e = extent();
+    return std::max({e.x, e.y, e.z});
+}
+
+Box Box::padded(double pad) const {
+    const Vec3 p{pad, pad, pad};
+    return {lo - p, hi + p};
+}
+
+double voxel_fudge(const Box& world, bool no_fudge) {
+    return no_fudge ? 0.0 : world.largest_extent() * 0x1p-24;
+}
+
+Box world_box(const Scene& scene, bool cube) {
+    Box box;
+    scene.bounds(box.lo, box.hi);
+    double side = box.largest_extent();
+    if (!(side > 0.0)) {
+        // One point (or no polygon at all): any size will do, relative to where it is.
+        side = std::max({1.0, std::fabs(box.lo.x), std::fabs(box.lo.y), std::fabs(box.lo.z)});
+    }
+    const double margin = side * kWorldMargin;
+    for (int axis = 0; axis < 3; ++axis) {
+        // A flat axis gets a thickness, and with `cube` every axis the full side.
+        const double want = cube ? side : std::max(box.hi[axis] - box.lo[axis], side * 0x1p-8);
+        const double middle = 0.5 * (box.lo[axis] + box.hi[axis]);
+        box.lo[axis] = std::min(box.lo[axis], middle - 0.5 * want) - margin;
+        box.hi[axis] = std::max(box.hi[axis], middle + 0.5 * want) + margin;
+    }
+    return box;
+}
+
+Box polygon_bounds(const Scene& scene, std::uint32_t polygon) {
+    const Polygon& p = scene.polygons[polygon];
+    Box box{scene.corner_position(p, 0), scene.corner_position(p, 0)};
+    for (std::uint32_t k = 1; k < p.corner_count; ++k) {
+        const Vec3 c = scene.corner_position(p, k);
+        box.lo = min_components(box.lo, c);
+        box.hi = max_components(box.hi, c);
+    }
+    return box;
+}
+
+bool clip_to_box(const Ray& ray, const Box& box, Interval within, Interval& inside) {
+    double near = within.min;
+    double far = within.max;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis];
+        const double d = ray.direction[axis];
+        if (d == 0.0) {
+            if (o < box.lo[axis] || o > box.hi[axis]) {
+                return false;
+            }
+            continue;
+        }
+        double t0 = (box.lo[axis] - o) / d;
+        double t1 = (box.hi[axis] - o) / d;
+        if (t0 > t1) {
+            std::swap(t0, t1);
+        }
+        near = std::max(near, t0);
+        far = std::min(far, t1);
+    }
+    if (!(near <= far)) {
+        return false;
+    }
+    inside = {near, far};
+    return true;
+}
+
+}  // namespace rt

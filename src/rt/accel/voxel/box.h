@@ -1,0 +1,41 @@
+// Axis-aligned boxes for the voxel methods (SEADS and the octree): the world box, voxel bounds,
+// and where a ray enters and leaves one.
+#pragma once
+
+#include "rt/core/vec3.h"
+#include "rt/geometry/ray.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+struct Box {
+    Vec3 lo;
+    Vec3 hi;
+
+    Vec3 extent() const { return hi - lo; }
+    double largest_extent() const;
+    /// The box grown by `pad` on every side.
+    Box padded(double pad) const;
+};
+
+/// The box the voxel methods subdivide: the scene's bounds grown by a small margin (so that no
+/// polygon lies on the world's own faces) and never flat (a planar scene still gets some depth).
+/// With `cube`, every side is the largest (the octree halves one cube).
+Box world_box(const Scene& scene, bool cube);
+
+/// "The fudge" (-of turns it off): how far every voxel is grown when deciding which polygons go
+/// into it, 2^-24 of the world's largest side. It makes the voxel methods exact: a hit computed in
+/// floating point may stray from its polygon by rounding, and the walk's voxel boundaries by a
+/// little more; with every polygon also filed in the voxels within the fudge of it, a polygon
+/// the walk has not met yet cannot have a t below the current voxel's exit (see
+/// docs/accelerators.md). Zero with -of.
+double voxel_fudge(const Box& world, bool no_fudge);
+
+/// The smallest box around the polygon's corners.
+Box polygon_bounds(const Scene& scene, std::uint32_t polygon);
+
+/// The part of the ray's t range inside the closed box, intersected with `within`; none if empty.
+/// A direction component of zero is handled exactly (no 0 * infinity).
+bool clip_to_box(const Ray& ray, const Box& box, Interval within, Interval& inside);
+
+}  // namespace rt

@@ -1,0 +1,55 @@
+// When a voxel walk may stop (manual 3.1, "near hits"). A hit found while testing one voxel's
+// polygons may lie beyond that voxel; a polygon met only in a later voxel could then be nearer.
+// By default such a near hit is kept as a candidate and accepted only once the walk reaches it
+// (the voxel whose exit lies at or beyond its t), or when the walk runs out of voxels: the answer
+// is then exactly brute force's (docs/accelerators.md argues why). -on accepts it at once; -tv
+// gives up after so many voxels without any hit.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+#include "rt/accel/accel_settings.h"
+#include "rt/accel/accelerator.h"
+
+namespace rt {
+
+struct WalkRules {
+    bool accept_near_hits = false;                                                    ///< -on
+    std::uint64_t fruitless_voxel_limit = std::numeric_limits<std::uint64_t>::max();  ///< -tv
+
+    static WalkRules from(const AccelSettings& settings);
+};
+
+class NearHitRule {
+public:
+    explicit NearHitRule(const WalkRules& rules) : rules_(rules) {}
+
+    /// Called after each voxel's polygons are tested, with the nearest hit so far and the t at
+    /// which the ray leaves that voxel: whether the walk ends here. Counts the voxel and any new
+    /// near hit.
+    bool ends_walk(const std::optional<Hit>& nearest, double t_exit, TraceCounters& counters) {
+        ++counters.voxels_stepped;
+        if (!nearest) {
+            return ++fruitless_ >= rules_.fruitless_voxel_limit;
+        }
+        if (nearest->t <= t_exit) {
+            return true;
+        }
+        if (!counted_any_ || last_.t != nearest->t || last_.polygon != nearest->polygon) {
+            ++counters.near_hits;
+            last_ = *nearest;
+            counted_any_ = true;
+        }
+        return rules_.accept_near_hits;
+    }
+
+private:
+    WalkRules rules_;
+    std::uint64_t fruitless_ = 0;
+    Hit last_;  ///< the last near hit counted (a plain Hit: GCC 12 misreads an optional here)
+    bool counted_any_ = false;
+};
+
+}  // namespace rt

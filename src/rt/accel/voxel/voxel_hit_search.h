@@ -1,0 +1,75 @@
+// What the SEADS and octree walks share: testing a voxel's polygons against one ray, remembering
+// the nearest hit so far, and skipping polygons this ray has already tested (a polygon lies in
+// every voxel it touches, so a ray meets it again and again).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+
+#include "rt/accel/accelerator.h"
+#include "rt/geometry/ray_polygon.h"
+
+namespace rt {
+
+/// The per-ray tested-polygon set: a small direct-mapped cache of polygon ids, on the stack, so
+/// that one const accelerator serves many threads. A collision only forgets a polygon, which is
+/// then tested again with the same result: never wrong, just slower.
+class TestedPolygons {
+public:
+    TestedPolygons() { slots_.fill(kEmpty); }
+    /// True if `id` was tested already; otherwise records it and returns false.
+    bool seen(std::uint32_t id) {
+        std::uint32_t& slot = slots_[id % kSlots];
+        if (slot == id) {
+            return true;
+        }
+        slot = id;
+        return false;
+    }
+
+private:
+    static constexpr std::uint32_t kSlots = 64;
+    static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+    std::array<std::uint32_t, kSlots> slots_;
+};
+
+/// The nearest hit over every polygon tested so far along one ray: nearest t strictly inside the
+/// interval, equal t to the lowest id (the same rule as brute force, so the same answer).
+class NearestHitSearch {
+public:
+    NearestHitSearch(const Scene& scene, const RaySpace& space, Interval t, TraceCounters& counters)
+        : scene_(scene), space_(space), t_(t), counters_(counters) {}
+
+    void test(std::span<const std::uint32_t> polygons);
+    const std::optional<Hit>& nearest() const { return nearest_; }
+
+private:
+    const Scene& scene_;
+    const RaySpace& space_;
+    Interval t_;
+    TraceCounters& counters_;
+    TestedPolygons tested_;
+    std::optional<Hit> nearest_;
+};
+
+/// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).
+class AnyHitSearch {
+public:
+    AnyHitSearch(const Scene& scene, const RaySpace& space, Interval t, TraceCounters& counters)
+        : scene_(scene), space_(space), t_(t), counters_(counters) {}
+
+    /// True as soon as one of them is hit.
+    bool test(std::span<const std::uint32_t> polygons);
+
+private:
+    const Scene& scene_;
+    const RaySpace& space_;
+    Interval t_;
+    TraceCounters& counters_;
+    TestedPolygons tested_;
+};
+
+}  // namespace rt
