@@ -43,7 +43,7 @@ TEST(Camera, PlusXIsRightAndPlusYIsUpWhenLookingAlongZ) {
     const Camera c = Camera::from_view(looking_along_z());
     EXPECT_GT(c.primary_ray(199.0, 50.0).direction.x, 0.0);  // right edge looks toward +x
     EXPECT_LT(c.primary_ray(1.0, 50.0).direction.x, 0.0);
-    EXPECT_GT(c.primary_ray(100.0, 1.0).direction.y, 0.0);   // top row looks toward +y
+    EXPECT_GT(c.primary_ray(100.0, 1.0).direction.y, 0.0);  // top row looks toward +y
     EXPECT_LT(c.primary_ray(100.0, 99.0).direction.y, 0.0);
 }
 

@@ -24,10 +24,10 @@ Traced trace_once(const Scene& scene, const ShadingSettings& settings, const Ray
     const auto accel = make_brute_force(scene);
     const RayTracer tracer(scene, *accel, settings);
     SampleStream stream(settings.sampling.seed, 0, 0, sample_index);
-    TraceCounters counters;
+    KindCounters counters;
     Traced out;
     SampleContext sample{stream, counters, out.tree};
-    out.light = tracer.trace(ray, 1, false, sample);
+    out.light = tracer.trace(ray, RayKind::Eye, 1, false, sample);
     return out;
 }
 

@@ -8,7 +8,6 @@
 #include <memory>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
 #include "rt/app/help.h"
 #include "rt/app/interrupt.h"
@@ -16,11 +15,15 @@
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
 
+#include <unistd.h>
+
 namespace {
 
 enum ExitCode { kOk = 0, kBadInput = 1, kUsage = 2, kIo = 3, kInternal = 4, kInterrupted = 130 };
 
-void print_line(const std::string& line) { std::cerr << line << '\n'; }
+void print_line(const std::string& line) {
+    std::cerr << line << '\n';
+}
 
 // A progress line on a terminal, at most every quarter second.
 std::function<void(int, int)> progress_printer(bool quiet) {
@@ -48,6 +51,7 @@ rt::RunConsole make_console(const rt::Options& options) {
         }
     };
     console.trace = print_line;
+    console.report = [](const std::string& text) { std::fputs(text.c_str(), stdout); };
     console.progress = progress_printer(options.quiet);
     console.should_stop = rt::interrupt_requested;
     return console;

@@ -7,11 +7,13 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/make_accelerator.h"
+#include "rt/app/profile_report.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
 #include "rt/core/text.h"
 #include "rt/image/image_writer.h"
+#include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/load_scene.h"
 #include "rt/shading/lights.h"
@@ -284,7 +286,14 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     if (options.trace_parsing) {
         diagnostics.set_trace_sink(console.trace);
     }
+    using Clock = std::chrono::steady_clock;
+    const auto seconds_since = [](Clock::time_point start) {
+        return std::chrono::duration<double>(Clock::now() - start).count();
+    };
+    PhaseTimes times;
+    auto phase = Clock::now();
     Scene scene = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
+    times.load_seconds = seconds_since(phase);
 
     RenderSettings settings;
     settings.shading = shading_settings(options);
@@ -294,14 +303,39 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.window = render_window(scene, options);
     settings.threads = options.threads;
 
+    phase = Clock::now();
     const std::unique_ptr<Accelerator> accel = build_accelerator(scene, options, console);
+    times.build_seconds = seconds_since(phase);
+    const auto print_profile = [&](const KindCounters& counters) {
+        if (options.profile && console.report) {
+            console.report(profile_report(
+                {accel->name(), scene.polygons.size(), accel->memory_bytes(), times, &counters}));
+        }
+    };
+    if (options.random_rays) {
+        // -r: as many random rays as the window has pixels; no picture, so no output file.
+        phase = Clock::now();
+        const auto count = static_cast<std::uint64_t>(settings.window.width()) *
+                           static_cast<std::uint64_t>(settings.window.height());
+        const KindCounters counters =
+            fire_random_rays(scene, *accel, count, options.seed, options.threads);
+        times.trace_seconds = seconds_since(phase);
+        console.note("-r: fired " + std::to_string(count) + " random rays; no picture is written");
+        print_profile(counters);
+        return RunOutcome::Finished;
+    }
     ConsoleObserver observer(console, options.print_columns, options.debug_chi_square);
     RenderStatistics statistics;
+    phase = Clock::now();
     Film film = render(scene, *accel, settings, observer, statistics);
+    times.trace_seconds = seconds_since(phase);
     film.mapping = {options.display_multiplier, options.clip_intensity};
     film.provenance = {options.scene, join(options.given_switches),
                        std::string("rt ") + std::string(kVersion), utc_now()};
+    phase = Clock::now();
     write_outputs(film, options);
+    times.write_seconds = seconds_since(phase);
+    print_profile(statistics.by_kind);
     return statistics.interrupted ? RunOutcome::Interrupted : RunOutcome::Finished;
 }
 

@@ -12,11 +12,12 @@ namespace rt {
 
 /// Where the run reports what a user should see; main() points these at stderr.
 struct RunConsole {
-    std::function<void(const std::string&)> warning;  ///< "rt: warning: ..."
-    std::function<void(const std::string&)> note;     ///< informational lines
-    std::function<void(const std::string&)> trace;    ///< -df parse trace, -dc columns
+    std::function<void(const std::string&)> warning;              ///< "rt: warning: ..."
+    std::function<void(const std::string&)> note;                 ///< informational lines
+    std::function<void(const std::string&)> trace;                ///< -df parse trace, -dc columns
+    std::function<void(const std::string&)> report;               ///< -p tables, on standard output
     std::function<void(int rows_done, int rows_total)> progress;  ///< may be empty
-    std::function<bool()> should_stop;                ///< Ctrl-C; may be empty
+    std::function<bool()> should_stop;                            ///< Ctrl-C; may be empty
 };
 
 enum class RunOutcome { Finished, Interrupted };

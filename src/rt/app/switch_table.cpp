@@ -103,12 +103,16 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-ss10", .status = NotYet, .feature = kSpatialEncoding},
     {.spelling = "-p", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.profile = true; },
      .summary = "Profile ddda operation.",
-     .details = "Prints various internal metrics at the end of the run; useful with -r.",
-     .section = "App.", .example = "-p", .status = NotYet, .feature = "profiling the ddda"},
+     .details = "Prints, at the end of the run on standard output, per kind of ray (eye, reflected, "
+                "refracted, diffuse, shadow feeler, probe, random): rays traced, voxels stepped, "
+                "nodes visited, polygons tested, hits, near hits and culled exits; the intersection "
+                "structure's memory; and the time of each phase.",
+     .section = "App.", .example = "-p"},
     {.spelling = "-r", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.random_rays = true; }, .summary = "Fire random rays.",
-     .details = "Produces no .gro file; only useful with -p or in debugging.", .section = "App.",
-     .example = "-r", .status = NotYet, .feature = "firing random rays"},
+     .details = "Fires as many random rays as the window has pixels (origins in the doubled bounding "
+                "box, uniform directions) and writes no picture. Useful with -p.", .section = "App.",
+     .example = "-r"},
     {.spelling = "-Sp", .group = Exclusive::SpecularModel, .topic = Specular,
      .apply = [](Options& o, A) { o.specular = SpecularModel::Phong; }, .summary = "Phong",
      .details = "The default specular reflection model.", .section = "App.", .example = "-Sp"},

@@ -46,6 +46,7 @@ struct RayTracer::Lobe {
     CosPowerCone cone;
     bool outside = true;
     bool diffuse = false;
+    RayKind kind = RayKind::Reflected;
 };
 
 RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings)
@@ -63,21 +64,24 @@ RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const Shading
     diffuse_rays_ = !settings_.shadow_feelers || scene.header.lghtick == 0;
 }
 
-Rgb RayTracer::trace(const Ray& ray, int depth, bool distributed, SampleContext& sample) const {
-    ++sample.counters.rays;
-    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, sample.counters);
+Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
+                     SampleContext& sample) const {
+    TraceCounters& counters = sample.counters[kind];
+    ++counters.rays;
+    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
     if (!hit) {
         sample.last_polygon = -1;
         return {};  // the background is black
     }
-    ++sample.counters.hits;
+    ++counters.hits;
     const SurfacePoint s = describe_hit(scene_, settings_, ray, *hit);
     // Without -I a distributed ray's hit gets the simple model: no highlights and no further
     // distribution (manual Appendix -I: "the distributed rays are not given the full
     // illumination model treatment").
     const bool full = !distributed || settings_.sampling.illuminate_distributed;
     const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_, &sample.stream};
-    Rgb result = local_illumination(context, s, -ray.direction, full, sample.counters);
+    Rgb result = local_illumination(context, s, -ray.direction, full,
+                                    sample.counters[RayKind::ShadowFeeler]);
     if (depth < max_depth_) {
         result += secondary_rays(ray, s, depth, full, sample);
     }
@@ -109,7 +113,8 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
         const Lobe lobe{normalize(mirrored),
                         {radians(a.reflect_cone_degrees), a.reflect_cone_exponent},
                         true,
-                        false};
+                        false,
+                        RayKind::Reflected};
         distributed_here = distributed_here || (distribute && lobe.cone.half_angle > 0.0);
         result += gather(lobe, s, depth, distribute, !full, sample) * a.specular;
     }
@@ -121,7 +126,7 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
     if (diffuse_rays_ && a.diffuse > 0.0) {
         // Without shadow feelers light reaches a point only along rays that find emitters
         // (manual Appendix -Ds); diffuse reflection then needs rays of its own.
-        const Lobe lobe{s.shading_normal, {}, true, true};
+        const Lobe lobe{s.shading_normal, {}, true, true, RayKind::Diffuse};
         distributed_here = distributed_here || distribute;
         result += gather(lobe, s, depth, distribute, !full, sample) * a.color * a.diffuse;
     }
@@ -152,7 +157,8 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
         const Lobe lobe{direction,
                         {radians(a.refract_cone_degrees), a.refract_cone_exponent},
                         !bent,  // totally reflected light stays on the ray's side
-                        false};
+                        false,
+                        RayKind::Refracted};
         const Rgb traced = gather(lobe, s, depth, distribute, simple, sample);
         if (!split) {
             return traced;
@@ -166,7 +172,7 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
                       bool simple, SampleContext& sample) const {
     const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
     if (!spread) {
-        return trace({s.position, lobe.axis}, depth + 1, simple, sample);
+        return trace({s.position, lobe.axis}, lobe.kind, depth + 1, simple, sample);
     }
     const SamplingSettings& sampling = settings_.sampling;
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
@@ -183,7 +189,7 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
         Vec3 direction = lobe.diffuse ? sample_cosine_hemisphere(lobe.axis, u1, u2)
                                       : sample_cone(lobe.cone, lobe.axis, u1, u2);
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
-        statistics.add(trace({s.position, direction}, depth + 1, true, sample));
+        statistics.add(trace({s.position, direction}, lobe.kind, depth + 1, true, sample));
         ++sample.tree.distributed_rays;
         one_polygon = one_polygon && (polygon == -2 || polygon == sample.last_polygon);
         polygon = sample.last_polygon;

@@ -9,6 +9,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/core/rgb.h"
+#include "rt/render/ray_kinds.h"
 #include "rt/sampling/directions.h"
 #include "rt/sampling/sample_stream.h"
 #include "rt/sampling/strata.h"
@@ -28,7 +29,7 @@ struct RayTreeCounts {
 /// The state of one sample being traced: its random numbers and counters.
 struct SampleContext {
     SampleStream& stream;
-    TraceCounters& counters;
+    KindCounters& counters;
     RayTreeCounts& tree;
     std::int64_t last_polygon = -1;  ///< the polygon the last traced ray met, -1 for none
 };
@@ -41,7 +42,8 @@ public:
     /// eye ray. Light picked up at distance d is attenuated by the -A formula unless -Da.
     /// `distributed`: the ray is one of a distribution, or descends from one (without -I it gets
     /// the simple model).
-    Rgb trace(const Ray& ray, int depth, bool distributed, SampleContext& sample) const;
+    Rgb trace(const Ray& ray, RayKind kind, int depth, bool distributed,
+              SampleContext& sample) const;
 
     /// The polygon a ray meets first (-1 for none), without shading it.
     std::int64_t first_polygon(const Ray& ray, TraceCounters& counters) const;

@@ -45,13 +45,13 @@ struct RenderJob {
 
 // Whether the centre rays of the four neighbouring pixels meet the same polygon (or all miss):
 // an edge can pass between a pixel's first samples unseen, but rarely past its neighbours too.
-bool neighbours_see(RenderJob& job, int x, int y, std::int64_t polygon, TraceCounters& counters) {
+bool neighbours_see(RenderJob& job, int x, int y, std::int64_t polygon, KindCounters& counters) {
     const int offsets[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     for (const auto& offset : offsets) {
         const int nx = std::clamp(x + offset[0], 0, job.scene.view.width - 1);
         const int ny = std::clamp(y + offset[1], 0, job.scene.view.height - 1);
         const Ray ray = job.camera.primary_ray(nx + 0.5, ny + 0.5);
-        if (job.tracer.first_polygon(ray, counters) != polygon) {
+        if (job.tracer.first_polygon(ray, counters[RayKind::Probe]) != polygon) {
             return false;
         }
     }
@@ -63,7 +63,7 @@ bool neighbours_see(RenderJob& job, int x, int y, std::int64_t polygon, TraceCou
 // with -Dx. The rule may stop early only where every sample so far, and the centres of the four
 // neighbouring pixels, see the same polygon. One sample per pixel looks through the pixel's
 // centre, as the original did.
-Rgb render_pixel(RenderJob& job, int x, int y, TraceCounters& counters, PixelReport& report) {
+Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelReport& report) {
     const SamplingSettings& sampling = job.settings.shading.sampling;
     const std::uint32_t total = job.pixel_strata.size();
     const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
@@ -81,7 +81,8 @@ Rgb render_pixel(RenderJob& job, int x, int y, TraceCounters& counters, PixelRep
             job.pixel_strata.point(k, j1, j2, px, py);
         }
         SampleContext sample{stream, counters, report.tree};
-        statistics.add(job.tracer.trace(job.camera.primary_ray(x + px, y + py), 1, false, sample));
+        statistics.add(job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1,
+                                        false, sample));
         one_polygon = one_polygon && (polygon == -2 || polygon == sample.last_polygon);
         polygon = sample.last_polygon;
         if (!sampling.adaptive || k + 1 < minimum || !one_polygon ||
@@ -117,7 +118,7 @@ void record_finished_row(RenderJob& job, int y) {
     }
 }
 
-void render_rows(RenderJob& job, TraceCounters& counters) {
+void render_rows(RenderJob& job, KindCounters& counters) {
     const FilmWindow& w = job.settings.window;
     const bool pixel_events = job.observer.wants_pixel_events();
     const bool sample_events = job.observer.wants_sample_reports();
@@ -155,7 +156,7 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
     Film film(scene.view.width, scene.view.height, settings.window);
     RenderJob job(scene, accel, settings, observer, film);
     const int n = thread_count(settings.threads, settings.window.height());
-    std::vector<TraceCounters> counters(static_cast<std::size_t>(n));
+    std::vector<KindCounters> counters(static_cast<std::size_t>(n));
     std::vector<std::thread> workers;
     for (int i = 1; i < n; ++i) {
         workers.emplace_back(
@@ -165,9 +166,10 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
     for (std::thread& t : workers) {
         t.join();
     }
-    for (const TraceCounters& c : counters) {
-        statistics.counters += c;
+    for (const KindCounters& c : counters) {
+        statistics.by_kind += c;
     }
+    statistics.counters = statistics.by_kind.total();
     statistics.rows_done = job.rows_done;
     statistics.interrupted = job.stopping && !film.complete();
     return film;

@@ -54,7 +54,8 @@ public:
 };
 
 struct RenderStatistics {
-    TraceCounters counters;
+    KindCounters by_kind;
+    TraceCounters counters;  ///< all kinds together
     int rows_done = 0;
     bool interrupted = false;
 };

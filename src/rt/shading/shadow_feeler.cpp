@@ -26,10 +26,12 @@ Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const V
     Interval along{context.epsilon / distance, 1.0 - context.epsilon / distance};
     Rgb filter{1.0, 1.0, 1.0};
     for (int layer = 0; layer <= kMaxTransparentLayers; ++layer) {
+        ++counters.rays;
         const std::optional<Hit> hit = context.accel.closest_hit(feeler, along, counters);
         if (!hit || hit->polygon == light_polygon) {
             return filter;
         }
+        ++counters.hits;
         const Polygon& p = context.scene.polygons[hit->polygon];
         const Attribute& a = context.scene.attribute_of(p);
         const bool forced_opaque = context.settings.smooth_shaded_opaque && p.smooth;
