@@ -141,3 +141,30 @@ TEST_F(RtProgram, ShowReadsWhatRtWrote) {
 
 }  // namespace
 }  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+TEST(RtProfile, DashPPrintsCountersPerKindOfRay) {
+    const TempDir dir;
+    const ProgramResult r = run_program(
+        "rt", {(source_dir() / "scenes/twocubes").string(), "-n", "--quiet", "-p"}, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("eye"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("shadow feeler"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("structure:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("time: load"), std::string::npos) << r.out;
+}
+
+TEST(RtProfile, DashRFiresRandomRaysAndWritesNoPicture) {
+    const TempDir dir;
+    const ProgramResult r =
+        run_program("rt", {(source_dir() / "scenes/twocubes").string(), "-r", "-p"}, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("random"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("204800"), std::string::npos) << r.out;  // 512 x 400 rays
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "twocubes.gro"));
+}
+
+}  // namespace
+}  // namespace rt::test
