@@ -15,6 +15,7 @@
 #include "rt/image/image_writer.h"
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
+#include "rt/scene/crease_normals.h"
 #include "rt/scene/load_scene.h"
 #include "rt/shading/lights.h"
 #include "rt/shading/weight_scaling.h"
@@ -136,6 +137,7 @@ ShadingSettings shading_settings(const Options& o) {
     if (o.ray_stop_probability) {
         sampling.ray_stop = {*o.ray_stop_probability, o.ray_stop_variance};
     }
+    s.correct_smoothing = !o.old_intersection_test;
     s.specular = specular_settings(o);
     s.warn = warn_settings(o);
     if (o.old_illumination || o.old_version) {
@@ -297,6 +299,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
 
     RenderSettings settings;
     settings.shading = shading_settings(options);
+    if (options.crease_angle) {
+        compute_crease_normals(scene, *options.crease_angle);
+    }
     if (options.scale_weights) {
         scale_weights_down(scene, settings.shading);
     }

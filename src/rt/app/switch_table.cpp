@@ -258,8 +258,11 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-Ot", .topic = OldVersions,
      .apply = [](Options& o, A) { o.old_intersection_test = true; },
      .summary = "Old intersection test",
-     .details = "Disables the correction of smooth-shading intersection problems.",
-     .section = "App.", .example = "-Ot", .status = NotYet, .feature = "the old intersection test"},
+     .details = "Smooth-shaded normals can face away from the ray, and reflected or refracted rays "
+                "can then leave on the wrong side; by default both are corrected (the normal is "
+                "turned back, the ray reflected about the geometric normal or sent straight on). "
+                "-Ot disables the correction.",
+     .section = "App.", .example = "-Ot"},
     {.spelling = "-Oi", .topic = OldVersions,
      .apply = [](Options& o, A) { o.old_illumination = true; }, .summary = "Old illumination model",
      .details = "Simulates the earliest version of the raytracer: no attenuation with distance, "
@@ -295,8 +298,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-E", .form = Number, .topic = Illumination, .first = {"the angle", kAngle},
      .apply = [](Options& o, A a) { o.crease_angle = a.first; },
      .summary = "Sharp breaks in Phong-shaded objects if angle 1.5 radians",
-     .details = "Not fully tested in the original.", .section = "App.", .example = "-E1.5",
-     .status = NotYet, .feature = "sharp breaks in Phong-shaded objects"},
+     .details = "Smooth shading averages the normals of the polygons at a vertex only over those "
+                "within the angle (radians) of the polygon's own normal, so sharper creases stay "
+                "sharp.", .section = "App.", .example = "-E1.5"},
     {.spelling = "-F", .form = Pair, .topic = Lights, .first = {"distangle", kPositive},
      .second = {"distfac", kPositive},
      .apply = [](Options& o, A a) { o.fuzzy_distangle = a.first; o.fuzzy_distfac = a.second; },

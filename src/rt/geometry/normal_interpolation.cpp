@@ -136,9 +136,13 @@ Vec3 interpolated_normal(const Scene& scene, std::uint32_t polygon, const Vec3& 
     Scratch<double> weight_space(p.corner_count);
     const std::span<double> weights = weight_space.get();
     polygon_weights(scene, polygon, point, weights);
+    const bool per_corner = scene.corner_normals.size() == scene.corners.size();
     Vec3 blended;
     for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-        blended += scene.vertex_normals[scene.corners[p.first_corner + k]] * weights[k];
+        const std::uint32_t corner = p.first_corner + k;
+        const Vec3& n =
+            per_corner ? scene.corner_normals[corner] : scene.vertex_normals[scene.corners[corner]];
+        blended += n * weights[k];
     }
     const double len = length(blended);
     if (!(len > kTiny) || !std::isfinite(len)) {

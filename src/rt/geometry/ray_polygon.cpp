@@ -89,7 +89,9 @@ int winding_of(const RaySpace& space, std::uint32_t count, CornerAt corner_at) {
     return winding;
 }
 
-bool inside(double t, Interval interval) { return t > interval.min && t < interval.max; }
+bool inside(double t, Interval interval) {
+    return t > interval.min && t < interval.max;
+}
 
 // Below this |cos| between the normal and the ray the plane's t is ill-conditioned.
 constexpr double kGrazing = 1e-6;
@@ -217,16 +219,18 @@ std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& n
 
 std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> corners,
                                         const Vec3& normal, Interval t) {
-    return hit_of(RaySpace(ray), normal, static_cast<std::uint32_t>(corners.size()),
-                  [&](std::uint32_t k) -> const Vec3& { return corners[k]; }, t);
+    return hit_of(
+        RaySpace(ray), normal, static_cast<std::uint32_t>(corners.size()),
+        [&](std::uint32_t k) -> const Vec3& { return corners[k]; }, t);
 }
 
 std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
                                         std::uint32_t polygon, Interval t) {
     const Polygon& p = scene.polygons[polygon];
     const std::uint32_t* ids = scene.corners.data() + p.first_corner;
-    return hit_of(space, p.normal, p.corner_count,
-                  [&](std::uint32_t k) -> const Vec3& { return scene.positions[ids[k]]; }, t);
+    return hit_of(
+        space, p.normal, p.corner_count,
+        [&](std::uint32_t k) -> const Vec3& { return scene.positions[ids[k]]; }, t);
 }
 
 std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,

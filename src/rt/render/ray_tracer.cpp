@@ -107,7 +107,7 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
     Rgb result;
     if (settings_.reflection && a.specular > 0.0) {
         Vec3 mirrored = reflect(ray.direction, s.shading_normal);
-        if (dot(mirrored, s.facing_normal) <= 0.0) {
+        if (settings_.correct_smoothing && dot(mirrored, s.facing_normal) <= 0.0) {
             mirrored = reflect(ray.direction, s.facing_normal);  // smoothing bent it inside
         }
         const Lobe lobe{normalize(mirrored),
@@ -151,7 +151,7 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
         const std::optional<Vec3> bent = refract(ray.direction, s.shading_normal, n1, n2);
         Vec3 direction = bent ? normalize(*bent) : reflect(ray.direction, s.shading_normal);
         const bool goes_through = dot(direction, s.facing_normal) < 0.0;
-        if (bent && !goes_through) {
+        if (settings_.correct_smoothing && bent && !goes_through) {
             direction = ray.direction;  // smoothing tilted it back out: go straight through
         }
         const Lobe lobe{direction,

@@ -103,6 +103,7 @@ struct Scene {
     std::vector<OpticalSurface> surfaces;
     std::vector<Vec3> positions;         ///< world-space vertices, shared by neighbours
     std::vector<Vec3> vertex_normals;    ///< per position: averaged over its smooth polygons
+    std::vector<Vec3> corner_normals;    ///< per corner, with -E only: overrides vertex_normals
     std::vector<std::uint32_t> corners;  ///< polygon corners in loop order, into positions
     std::vector<Polygon> polygons;
     std::vector<SourceRef> polygon_origin;  ///< per polygon

@@ -21,8 +21,8 @@ Rgb reflected_light(const ShadingSettings& settings, const SurfacePoint& s, cons
     const double lambert = std::fmax(0.0, dot(s.shading_normal, to_light));
     Rgb result = received * a.color * (a.diffuse * lambert);
     if (highlights) {
-        result += received * specular_highlight(settings.specular, a, s.shading_normal, to_light,
-                                                view);
+        result +=
+            received * specular_highlight(settings.specular, a, s.shading_normal, to_light, view);
     }
     return result;
 }

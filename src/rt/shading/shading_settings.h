@@ -44,6 +44,7 @@ struct ShadingSettings {
     FuzzyFeelers fuzzy;                    ///< -F
     SpecularSettings specular;             ///< -S and -C: the highlight's law and colour
     WarnSettings warn;                     ///< -Wr -Wc -Wt
+    bool correct_smoothing = true;  ///< off with -Ot: smoothed normals may face away from the ray
     bool share_light_among_points = true;  ///< off with -Oi: every point source at full power
 
     /// The manual's attenuation factor 1 / (dist/d + c).

@@ -33,7 +33,7 @@ SurfacePoint describe_hit(const Scene& scene, const ShadingSettings& settings, c
     const Vec3 shading = outward_shading_normal(scene, hit.polygon, s.position);
     s.shading_normal = s.front ? shading : -shading;
     // An interpolated normal may lean past the silhouette; never let it face away from the ray.
-    if (dot(s.shading_normal, s.facing_normal) <= 0.0) {
+    if (settings.correct_smoothing && dot(s.shading_normal, s.facing_normal) <= 0.0) {
         s.shading_normal = s.facing_normal;
     }
     const bool forced_opaque = settings.smooth_shaded_opaque && p.smooth;
