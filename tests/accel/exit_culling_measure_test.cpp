@@ -1,6 +1,7 @@
 // Not a check but a measurement for docs/exit-culling-and-zbuffer.md: table build time and size,
 // and the share of rays culled, on twocubes' eye rays and on the random test rays. Prints only;
-// timings are never asserted. Run: build/bin/accel_test --gtest_filter='ExitCullingMeasure*'
+// timings are never asserted. Disabled in the suite; run:
+//   build/bin/accel_test --gtest_also_run_disabled_tests --gtest_filter='*Measure*'
 #include <chrono>
 #include <iostream>
 
@@ -43,7 +44,7 @@ void print(const std::string& what, const ExitCulling& culling, const Tally& tal
                              100.0 * tally.culled / tally.rays);
 }
 
-TEST(ExitCullingMeasure, TwocubesEyeRays) {
+TEST(ExitCullingMeasure, DISABLED_TwocubesEyeRays) {
     const Scene scene = load_twocubes();
     const BruteForce brute(scene);
     const ExitCulling culling(scene, make_brute_force(scene));
@@ -57,7 +58,7 @@ TEST(ExitCullingMeasure, TwocubesEyeRays) {
     print("twocubes eye rays", culling, tally);
 }
 
-TEST(ExitCullingMeasure, RandomRays) {
+TEST(ExitCullingMeasure, DISABLED_RandomRays) {
     const std::vector<std::pair<std::string, Scene>> scenes = {
         {"twocubes", load_twocubes()},
         {"sphere", make_sphere({1, 2, 3}, 5.0, 12, 24, false)},

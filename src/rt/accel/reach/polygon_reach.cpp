@@ -85,6 +85,29 @@ PolygonReach polygon_reach(const Scene& scene, std::uint32_t id, double min_cos,
     return reach;
 }
 
+// A line through X (in the hull) and E' (within `slack` of `point`) has
+// |cos| = |dot(n, X - E')| / |X - E'| >= (h - rho - slack) / (L + slack), where h is the
+// point's distance from the plane through corner 0 and L the farthest corner from it.
+double min_cosine_through(const Scene& scene, std::uint32_t id, const Vec3& point, double slack) {
+    const Polygon& polygon = scene.polygons[id];
+    const double normal_length = length(polygon.normal);
+    if (!std::isfinite(normal_length) || normal_length == 0.0) {
+        return 0.0;
+    }
+    const Vec3 n = polygon.normal / normal_length;
+    const Vec3 c0 = scene.corner_position(polygon, 0);
+    double rho = 0.0;
+    double farthest = 0.0;
+    for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
+        const Vec3 c = scene.corner_position(polygon, k);
+        rho = std::max(rho, std::fabs(dot(n, c - c0)));
+        farthest = std::max(farthest, length(c - point));
+    }
+    const double height = std::fabs(dot(n, c0 - point));
+    const double bound = (height - rho * kSlack - slack) / ((farthest + slack) * kSlack);
+    return std::isfinite(bound) ? std::max(bound * (1.0 - 1e-9), 0.0) : 0.0;
+}
+
 bool slab_meets_box(const PolygonReach& reach, const AxisBox& box) {
     return slab_meets(reach.normal, reach.plane_point, reach.slab_half, box);
 }

@@ -48,6 +48,11 @@ inline constexpr double kGrazingCosine = 1e-6 * (1.0 + 1e-9);
 /// and a corner, and the largest |coordinate|, concerned.
 PolygonReach polygon_reach(const Scene& scene, std::uint32_t id, double min_cos, double rounding);
 
+/// A lower bound on |cos| between polygon `id`'s unit normal and any line that passes through
+/// its convex hull and within `slack` of `point` (0 if such a line can lie in its plane). For
+/// the z-buffer, whose rays all pass (within rounding) through the eye.
+double min_cosine_through(const Scene& scene, std::uint32_t id, const Vec3& point, double slack);
+
 /// Whether the box can contain hit points of the reach's `box` (its slab meets it)...
 bool slab_meets_box(const PolygonReach& reach, const AxisBox& box);
 /// ... and of its `grazing_box`.
