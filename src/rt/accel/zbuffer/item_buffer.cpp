@@ -103,9 +103,9 @@ bool ItemBuffer::fits(std::size_t polygons, std::uint64_t entries) {
     }
     active_ = false;
     inactive_reason_ = fmt::format(
-        "the z-buffer would need {:.0f} MB for {}x{} pixels and {} polygon entries, over its "
-        "limit of {} MB",
-        bytes / 1e6, view_.width, view_.height, entries, max_bytes_ / 1000000);
+        "the z-buffer would need {:.1f} MB for {}x{} pixels and {} polygon entries, over its "
+        "limit of {:.1f} MB",
+        bytes / 1e6, view_.width, view_.height, entries, static_cast<double>(max_bytes_) / 1e6);
     return false;
 }
 
