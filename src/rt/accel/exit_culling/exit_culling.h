@@ -1,0 +1,78 @@
+// Exit-ray culling (manual part three; -De disables it, -de debugs it): an Accelerator wrapping
+// another. A ray the inclusion-cone table says can hit nothing ends at once, counted in
+// TraceCounters::culled_exits; every other ray goes to the wrapped accelerator. The table is
+// conservative, so the picture never changes; -de re-traces every culled ray to prove it.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "rt/accel/accelerator.h"
+#include "rt/accel/exit_culling/exit_culling_table.h"
+
+namespace rt {
+
+struct ExitCullingSettings {
+    int grid_resolution = 0;    ///< cells along each axis (1..64); 0: chosen from the scene
+    int bins_per_side = 8;      ///< direction bins along each edge of a cube face (1..16)
+    bool check_culled = false;  ///< -de: trace every culled ray with the wrapped accelerator too
+};
+
+/// What -p prints for exit culling. The number of culled rays is TraceCounters::culled_exits.
+struct ExitCullingStatistics {
+    int grid_resolution = 0;
+    int bins_per_side = 0;
+    std::size_t regions = 0;         ///< grid cells, each with 6 * bins_per_side^2 bins
+    std::size_t occupied_cells = 0;  ///< cells that may hold a hit point
+    double empty_fraction = 0.0;     ///< share of (cell, bin) entries saying "nothing ahead"
+    std::size_t memory_bytes = 0;    ///< the table alone
+    double build_seconds = 0.0;
+    bool checking = false;              ///< -de
+    std::uint64_t checked = 0;          ///< -de: culled rays re-traced
+    std::uint64_t violations = 0;       ///< -de: culled rays that did hit something
+    std::vector<Ray> first_violations;  ///< -de: up to 10 of them, to reproduce
+};
+
+/// The lines -p (and -de at the end of a run) prints, without trailing newlines.
+std::vector<std::string> describe(const ExitCullingStatistics& statistics);
+
+class ExitCulling : public Accelerator {
+public:
+    /// Builds the table for the scene, which must outlive this, as must `wrapped`'s scene.
+    ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrapped,
+                const ExitCullingSettings& settings = {});
+
+    std::string_view name() const override { return name_; }
+    std::optional<Hit> closest_hit(const Ray& ray, Interval t,
+                                   TraceCounters& counters) const override;
+    bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    /// The table plus the wrapped accelerator.
+    std::size_t memory_bytes() const override;
+
+    const Accelerator& wrapped() const { return *wrapped_; }
+    ExitCullingStatistics statistics() const;
+
+private:
+    /// -de: whether the wrapped accelerator finds a hit on a culled ray; records it if so.
+    void record_if_violated(const Ray& ray, bool violated) const;
+
+    std::unique_ptr<Accelerator> wrapped_;
+    double build_seconds_ = 0.0;  ///< set while table_ is built, so declared before it
+    ExitCullingTable table_;
+    bool check_culled_;
+    std::string name_;
+    mutable std::atomic<std::uint64_t> checked_{0};
+    mutable std::atomic<std::uint64_t> violations_{0};
+    mutable std::mutex violations_mutex_;
+    mutable std::vector<Ray> first_violations_;
+};
+
+/// The grid resolution used when the settings leave it at 0: about twice the cube root of the
+/// polygon count, within 4..8 (build time grows as its sixth power).
+int default_exit_culling_resolution(std::size_t polygon_count);
+
+}  // namespace rt

@@ -1,0 +1,184 @@
+// Why "nothing ahead" is safe. Suppose the ray-polygon test reports a hit at t > t.min >= 0 on a
+// ray starting at p with direction d. The hit point Y = p + t d lies in that polygon's reach, so
+// in the box of some occupied cell (occupied_cells.h), at least margin() inside the world box.
+// - If p is inside the world box, p lies in the box of its cell grown by margin() (the cell is
+//   found by a rounded division, wrong only within rounding of a cell boundary).
+// - If p is outside, the ray must cross the world box to reach Y; q = p + t_entry d, where it
+//   enters, is computed to within far below margin() (origins farther than 100 diagonals from
+//   the corners are not culled), so q too lies in its cell's box grown by margin(), and Y = q + (t
+//   - t_entry) d with t > t_entry. A ray that misses the world box hits nothing.
+// Either way d points from a point of the grown start cell C to a point of an occupied box T, so
+// d / |d| is a direction of the box T - C = [T.lo - C.hi, T.hi - C.lo], and fill_region() added
+// every bin of every such box (direction_bins.cpp). So the ray's bin is set.
+#include "rt/accel/exit_culling/exit_culling_table.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace rt {
+
+namespace {
+
+// Directions from the cell to the target: the box of differences, widened for the rounding of
+// the subtractions.
+AxisBox differences(const AxisBox& target, const AxisBox& start, double widen) {
+    return AxisBox{target.lo - start.hi, target.hi - start.lo}.grown(widen);
+}
+
+}  // namespace
+
+ExitCullingTable::ExitCullingTable(const Scene& scene, int resolution, int bins_per_side)
+    : ExitCullingTable(culling_frame(scene), scene, resolution, bins_per_side) {}
+
+ExitCullingTable::ExitCullingTable(const CullingFrame& frame, const Scene& scene, int resolution,
+                                   int bins_per_side)
+    : ExitCullingTable(frame, reaches_of(scene, frame), resolution, bins_per_side) {}
+
+ExitCullingTable::ExitCullingTable(const CullingFrame& frame,
+                                   const std::vector<PolygonReach>& reaches, int resolution,
+                                   int bins_per_side)
+    : cells_(frame, reaches, resolution), bins_(bins_per_side) {
+    const int count = resolution * resolution * resolution;
+    rows_.assign(static_cast<std::size_t>(count) * bins_.rows(), 0);
+    for (int cell = 0; cell < count; ++cell) {
+        fill_region(cell);
+    }
+    std::vector<std::uint16_t> band(static_cast<std::size_t>(bins_.rows()));
+    for (const PolygonReach& reach : reaches) {
+        add_grazing(reach, band);
+    }
+}
+
+std::vector<PolygonReach> ExitCullingTable::reaches_of(const Scene& scene,
+                                                       const CullingFrame& frame) {
+    std::vector<PolygonReach> reaches;
+    reaches.reserve(scene.polygons.size());
+    for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
+        reaches.push_back(polygon_reach(scene, id, 0.0, frame.rounding));
+    }
+    return reaches;
+}
+
+// A grazing hit is reported at Y within the polygon's grazing box. If the crossing X is ahead of
+// the origin p, the tree pass has the direction already (X is in the polygon's plain reach). If
+// X is behind p, then p lies between X and Y on a line within the grazing angle of the plane, so
+// p is in the grazing box too: only cells meeting it need the grazing directions, and only
+// those in the band of directions that see the polygon edge-on.
+void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::uint16_t>& band) {
+    if (reach.grazing_box.empty()) {
+        return;
+    }
+    bins_.band_of(reach.normal, reach.grazing_cosine, band);
+    const double widen =
+        1e-12 * std::max(reach.grazing_box.magnitude(), cells_.world().magnitude());
+    int first[3];
+    int last[3];
+    cells_.cell_range(reach.grazing_box, first, last);
+    const int r = cells_.resolution();
+    for (int z = first[2]; z <= last[2]; ++z) {
+        for (int y = first[1]; y <= last[1]; ++y) {
+            for (int x = first[0]; x <= last[0]; ++x) {
+                const int cell = x + r * (y + r * z);
+                const AxisBox start = cells_.cell_box(cell).grown(cells_.margin());
+                const AxisBox common = intersection(start, reach.grazing_box);
+                if (common.empty() || !grazing_slab_meets_box(reach, common)) {
+                    continue;
+                }
+                const std::span<std::uint16_t> set{
+                    rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),
+                    static_cast<std::size_t>(bins_.rows())};
+                bins_.add_directions_of(differences(reach.grazing_box, start, widen), set, band);
+            }
+        }
+    }
+}
+
+void ExitCullingTable::fill_region(int cell) {
+    const auto& tree = cells_.tree();
+    if (tree.empty()) {
+        return;
+    }
+    const AxisBox start = cells_.cell_box(cell).grown(cells_.margin());
+    const double widen = 1e-12 * std::max(start.magnitude(), cells_.world().magnitude());
+    const std::span<std::uint16_t> set{rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),
+                                       static_cast<std::size_t>(bins_.rows())};
+    // Depth first; a group whose directions are all set already is skipped whole.
+    std::vector<std::int32_t> stack{0};
+    while (!stack.empty()) {
+        const OccupiedCells::Node& node = tree[stack.back()];
+        stack.pop_back();
+        const AxisBox towards = differences(node.box, start, widen);
+        if (node.first_child < 0) {
+            bins_.add_directions_of(towards, set);
+        } else if (!bins_.holds_directions_of(towards, set)) {
+            stack.push_back(node.first_child + 1);
+            stack.push_back(node.first_child);
+        }
+    }
+}
+
+int ExitCullingTable::entry_cell(const Ray& ray) const {
+    const AxisBox& world = cells_.world();
+    double enter = 0.0;
+    double leave = AxisBox::kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis];
+        const double d = ray.direction[axis];
+        if (d == 0.0) {
+            if (o < world.lo[axis] || o > world.hi[axis]) {
+                return -1;
+            }
+            continue;
+        }
+        double t0 = (world.lo[axis] - o) / d;
+        double t1 = (world.hi[axis] - o) / d;
+        if (t0 > t1) {
+            std::swap(t0, t1);
+        }
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+    }
+    if (enter > leave) {
+        return -1;
+    }
+    Vec3 q = ray.at(enter);
+    q = max_components(world.lo, min_components(world.hi, q));
+    return cells_.cell_of(q);
+}
+
+bool ExitCullingTable::nothing_ahead(const Ray& ray, Interval t) const {
+    if (!(t.min >= 0.0) || !is_finite(ray.origin) || !is_finite(ray.direction) ||
+        (ray.direction.x == 0.0 && ray.direction.y == 0.0 && ray.direction.z == 0.0)) {
+        return false;
+    }
+    if (cells_.tree().empty()) {
+        return true;  // no polygon anywhere
+    }
+    if (distance_to(cells_.frame().positions, ray.origin) > cells_.frame().far_limit) {
+        return false;
+    }
+    const int cell = entry_cell(ray);
+    if (cell < 0) {
+        return true;
+    }
+    return !bins_.contains(region(cell), bins_.bin_of(ray.direction));
+}
+
+double ExitCullingTable::empty_fraction() const {
+    if (rows_.empty()) {
+        return 0.0;
+    }
+    std::size_t set = 0;
+    for (const std::uint16_t row : rows_) {
+        set += static_cast<std::size_t>(std::popcount(row));
+    }
+    const double total = static_cast<double>(rows_.size()) * bins_.side();
+    return 1.0 - static_cast<double>(set) / total;
+}
+
+std::size_t ExitCullingTable::memory_bytes() const {
+    return rows_.capacity() * sizeof(std::uint16_t) + cells_.memory_bytes();
+}
+
+}  // namespace rt

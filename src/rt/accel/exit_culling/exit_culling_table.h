@@ -1,0 +1,57 @@
+// The inclusion-cone table of exit-ray culling (manual part three and the -De switch): for each
+// cell of a coarse grid over the world and each bin of directions, whether a ray starting in the
+// cell with a direction in the bin can hit anything at all. Conservative: "nothing ahead" is
+// only ever said when no polygon can be hit (exit_culling_table.cpp argues why).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "rt/accel/exit_culling/direction_bins.h"
+#include "rt/accel/exit_culling/occupied_cells.h"
+#include "rt/geometry/ray.h"
+
+namespace rt {
+
+class ExitCullingTable {
+public:
+    /// `resolution` grid cells along each axis (1..64), `bins_per_side` bins along each edge of
+    /// each of the 6 faces of the direction cube (1..16).
+    ExitCullingTable(const Scene& scene, int resolution, int bins_per_side);
+    /// The same with the rounding allowances given (tests widen them).
+    ExitCullingTable(const CullingFrame& frame, const Scene& scene, int resolution,
+                     int bins_per_side);
+
+    /// True only if no polygon can be hit by the ray at any t > t.min. Never true for t.min < 0,
+    /// for a zero or non-finite ray, or for an origin more than 100 scene diagonals away.
+    bool nothing_ahead(const Ray& ray, Interval t) const;
+
+    int resolution() const { return cells_.resolution(); }
+    int bins_per_side() const { return bins_.side(); }
+    std::size_t occupied_cells() const { return cells_.occupied_count(); }
+    /// The share of (cell, bin) entries that say "nothing ahead".
+    double empty_fraction() const;
+    std::size_t memory_bytes() const;
+
+private:
+    std::span<const std::uint16_t> region(int cell) const {
+        return {rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),
+                static_cast<std::size_t>(bins_.rows())};
+    }
+    ExitCullingTable(const CullingFrame& frame, const std::vector<PolygonReach>& reaches,
+                     int resolution, int bins_per_side);
+    static std::vector<PolygonReach> reaches_of(const Scene& scene, const CullingFrame& frame);
+    /// The directions towards the reaches' occupied cells, from one cell.
+    void fill_region(int cell);
+    /// The directions of grazing hits on one polygon, from every cell they may start in.
+    void add_grazing(const PolygonReach& reach, std::vector<std::uint16_t>& band);
+    /// The cell a ray starting at `origin` enters the world in; -1 if it never does.
+    int entry_cell(const Ray& ray) const;
+
+    OccupiedCells cells_;
+    DirectionBins bins_;
+    std::vector<std::uint16_t> rows_;  ///< per cell, bins_.rows() row masks
+};
+
+}  // namespace rt

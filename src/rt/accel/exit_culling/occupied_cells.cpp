@@ -1,0 +1,163 @@
+#include "rt/accel/exit_culling/occupied_cells.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rt {
+
+namespace {
+
+// Interleaves the low 6 bits of x, y, z: neighbouring cells stay together when the tree halves
+// the list, which keeps its boxes small.
+std::uint32_t morton(int x, int y, int z) {
+    std::uint32_t code = 0;
+    for (int bit = 0; bit < 6; ++bit) {
+        code |= ((static_cast<std::uint32_t>(x) >> bit) & 1u) << (3 * bit);
+        code |= ((static_cast<std::uint32_t>(y) >> bit) & 1u) << (3 * bit + 1);
+        code |= ((static_cast<std::uint32_t>(z) >> bit) & 1u) << (3 * bit + 2);
+    }
+    return code;
+}
+
+}  // namespace
+
+CullingFrame culling_frame(const Scene& scene) {
+    CullingFrame frame;
+    Vec3 lo;
+    Vec3 hi;
+    scene.bounds(lo, hi);
+    frame.positions = {lo, hi};
+    const double diagonal = length(frame.positions.extent());
+    const double magnitude = frame.positions.magnitude();
+    frame.far_limit = 100.0 * diagonal;
+    // The ray-polygon test rounds to within about 1e-15 of the distance from a ray origin (up to
+    // 101 diagonals from a corner) and of the coordinates; polygon_reach() asks for 1e-13.
+    frame.rounding = 2e-11 * diagonal + 1e-13 * magnitude;
+    // Far above that and above the rounding of entry points and cell lookups, far below a cell.
+    frame.margin = std::max(1e-6 * diagonal + 1e-12 * magnitude, 1e-200);
+    return frame;
+}
+
+OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches,
+                             int resolution)
+    : frame_(frame), resolution_(resolution) {
+    if (resolution < 1 || resolution > 64) {
+        throw std::invalid_argument("exit culling grid resolution must be 1..64");
+    }
+    for (const PolygonReach& reach : reaches) {
+        world_.add(reach.all());
+    }
+    if (world_.empty()) {
+        world_ = frame_.positions;
+    }
+    world_ = world_.grown(frame_.margin);
+    cell_size_ = world_.extent() / resolution_;
+
+    std::vector<AxisBox> cells(static_cast<std::size_t>(resolution_) * resolution_ * resolution_);
+    fill(reaches, cells);
+    std::vector<AxisBox> leaves;
+    std::vector<std::uint32_t> codes;
+    for (int cell = 0; cell < static_cast<int>(cells.size()); ++cell) {
+        if (!cells[cell].empty()) {
+            leaves.push_back(cells[cell]);
+            const int x = cell % resolution_;
+            const int y = (cell / resolution_) % resolution_;
+            codes.push_back(morton(x, y, cell / (resolution_ * resolution_)));
+        }
+    }
+    std::vector<std::size_t> order(leaves.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return codes[a] < codes[b]; });
+    std::vector<AxisBox> sorted;
+    for (const std::size_t i : order) {
+        sorted.push_back(leaves[i]);
+    }
+    occupied_ = sorted.size();
+    tree_.reserve(2 * sorted.size());
+    if (!sorted.empty()) {
+        tree_.push_back({});
+        build_node(sorted, 0, sorted.size(), 0);
+    }
+}
+
+void OccupiedCells::cell_range(const AxisBox& box, int first[3], int last[3]) const {
+    for (int axis = 0; axis < 3; ++axis) {
+        first[axis] = std::max(axis_cell(axis, box.lo[axis]) - 1, 0);
+        last[axis] = std::min(axis_cell(axis, box.hi[axis]) + 1, resolution_ - 1);
+    }
+}
+
+void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<AxisBox>& cells) const {
+    for (const PolygonReach& reach : reaches) {
+        if (reach.box.empty()) {
+            continue;
+        }
+        int first[3];
+        int last[3];
+        cell_range(reach.box, first, last);
+        for (int z = first[2]; z <= last[2]; ++z) {
+            for (int y = first[1]; y <= last[1]; ++y) {
+                for (int x = first[0]; x <= last[0]; ++x) {
+                    const int cell = x + resolution_ * (y + resolution_ * z);
+                    const AxisBox piece = intersection(reach.box, cell_box(cell));
+                    if (!piece.empty() && slab_meets_box(reach, piece)) {
+                        cells[cell].add(piece);
+                    }
+                }
+            }
+        }
+    }
+}
+
+void OccupiedCells::build_node(const std::vector<AxisBox>& leaves, std::size_t begin,
+                               std::size_t end, std::size_t slot) {
+    Node node;
+    for (std::size_t i = begin; i < end; ++i) {
+        node.box.add(leaves[i]);
+    }
+    if (end - begin > 1) {
+        // The two children sit side by side, so a node needs only the first one's index.
+        node.first_child = static_cast<std::int32_t>(tree_.size());
+        tree_.push_back({});
+        tree_.push_back({});
+        const std::size_t middle = begin + (end - begin) / 2;
+        build_node(leaves, begin, middle, static_cast<std::size_t>(node.first_child));
+        build_node(leaves, middle, end, static_cast<std::size_t>(node.first_child) + 1);
+    }
+    tree_[slot] = node;
+}
+
+int OccupiedCells::axis_cell(int axis, double coordinate) const {
+    const double scaled = std::floor((coordinate - world_.lo[axis]) / cell_size_[axis]);
+    return static_cast<int>(std::clamp(scaled, 0.0, static_cast<double>(resolution_ - 1)));
+}
+
+double OccupiedCells::boundary(int axis, int index) const {
+    if (index <= 0) {
+        return world_.lo[axis];
+    }
+    if (index >= resolution_) {
+        return world_.hi[axis];
+    }
+    return world_.lo[axis] + index * cell_size_[axis];
+}
+
+int OccupiedCells::cell_of(const Vec3& p) const {
+    return axis_cell(0, p.x) + resolution_ * (axis_cell(1, p.y) + resolution_ * axis_cell(2, p.z));
+}
+
+AxisBox OccupiedCells::cell_box(int cell) const {
+    const int index[3] = {cell % resolution_, (cell / resolution_) % resolution_,
+                          cell / (resolution_ * resolution_)};
+    AxisBox box;
+    for (int axis = 0; axis < 3; ++axis) {
+        box.lo[axis] = boundary(axis, index[axis]);
+        box.hi[axis] = boundary(axis, index[axis] + 1);
+    }
+    return box;
+}
+
+}  // namespace rt

@@ -1,0 +1,69 @@
+// Where hit points can be: a coarse grid over the world, and in each cell the box of every
+// polygon reach (reach/polygon_reach.h) that meets it, cut to the cell. Exit culling asks, from
+// each cell, which directions lead to one of these boxes; a tree over them lets it skip groups of
+// boxes whose directions it already has.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rt/accel/reach/axis_box.h"
+#include "rt/accel/reach/polygon_reach.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+/// The rounding allowances for a scene: see occupied_cells.cpp.
+struct CullingFrame {
+    AxisBox positions;       ///< the box of the scene's corners
+    double far_limit = 0.0;  ///< farthest ray origin from `positions` that may be culled
+    double rounding = 0.0;   ///< for polygon_reach()
+    double margin = 0.0;     ///< for cells and entry points
+};
+CullingFrame culling_frame(const Scene& scene);
+
+class OccupiedCells {
+public:
+    /// `resolution` cells along each axis (1..64) of the box of every reach (both kinds).
+    OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches, int resolution);
+
+    /// Every reach box, grown by margin(): no hit point lies outside it, or within margin() of
+    /// its boundary.
+    const AxisBox& world() const { return world_; }
+    const CullingFrame& frame() const { return frame_; }
+    double margin() const { return frame_.margin; }
+    int resolution() const { return resolution_; }
+
+    /// The cell holding a point of the world (clamped at the boundary), as x + R (y + R z).
+    int cell_of(const Vec3& p) const;
+    /// The cells along each axis that may meet the box: one more each way than its corners' own,
+    /// as cells and boundaries are rounded separately.
+    void cell_range(const AxisBox& box, int first[3], int last[3]) const;
+    AxisBox cell_box(int cell) const;
+
+    /// A binary tree over the occupied cells' boxes, root first; leaves have no children.
+    struct Node {
+        AxisBox box;
+        std::int32_t first_child = -1;  ///< the second child follows it
+    };
+    const std::vector<Node>& tree() const { return tree_; }
+    std::size_t occupied_count() const { return occupied_; }
+    std::size_t memory_bytes() const { return tree_.capacity() * sizeof(Node); }
+
+private:
+    int axis_cell(int axis, double coordinate) const;
+    double boundary(int axis, int index) const;
+    void fill(std::span<const PolygonReach> reaches, std::vector<AxisBox>& cells) const;
+    void build_node(const std::vector<AxisBox>& leaves, std::size_t begin, std::size_t end,
+                    std::size_t slot);
+
+    CullingFrame frame_;
+    AxisBox world_;
+    int resolution_ = 1;
+    Vec3 cell_size_;
+    std::vector<Node> tree_;
+    std::size_t occupied_ = 0;
+};
+
+}  // namespace rt

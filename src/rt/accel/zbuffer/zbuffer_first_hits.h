@@ -1,0 +1,62 @@
+// Z-buffer first hits (manual part one: rt "compares octree, spatial enumeration and z-buffer
+// performance"; the --zbuffer switch): eye rays find their first polygon in a rasterised item
+// buffer; every other ray, and every eye ray the buffer cannot answer, goes to the fallback.
+// The answer is brute force's exactly: same t, same polygon, ties to the lowest id.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "rt/accel/accelerator.h"
+#include "rt/accel/zbuffer/item_buffer.h"
+#include "rt/accel/zbuffer/pinhole_view.h"
+
+namespace rt {
+
+/// What -p prints for the z-buffer.
+struct ZBufferStatistics {
+    bool active = false;
+    std::string inactive_reason;  ///< why every ray goes to the fallback, when not active
+    std::size_t polygons_in_view = 0;
+    std::size_t entries = 0;       ///< (pixel, polygon) pairs
+    std::size_t longest_list = 0;  ///< most candidates in one pixel
+    std::size_t memory_bytes = 0;
+    double build_seconds = 0.0;
+};
+
+/// The lines -p prints, without trailing newlines.
+std::vector<std::string> describe(const ZBufferStatistics& statistics);
+
+class ZBufferFirstHits : public Accelerator {
+public:
+    /// The scene and the fallback must outlive this.
+    ZBufferFirstHits(const Scene& scene, const PinholeView& view, const Accelerator& fallback,
+                     const ZBufferSettings& settings = {});
+
+    std::string_view name() const override { return name_; }
+    /// An eye ray of the view (origin on the screen, line through the eye, t.min >= 0) is
+    /// answered from its pixel's candidates; anything else by the fallback.
+    std::optional<Hit> closest_hit(const Ray& ray, Interval t,
+                                   TraceCounters& counters) const override;
+    bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    /// The item buffer plus the fallback.
+    std::size_t memory_bytes() const override;
+
+    ZBufferStatistics statistics() const;
+
+private:
+    const Scene& scene_;
+    const Accelerator& fallback_;
+    double build_seconds_ = 0.0;  ///< set while buffer_ is built, so declared before it
+    ItemBuffer buffer_;
+    std::string name_;
+};
+
+/// The form the lead wires to --zbuffer: make_zbuffer_first_hits(scene,
+/// PinholeView::from_view(scene.view), *accelerator).
+std::unique_ptr<ZBufferFirstHits> make_zbuffer_first_hits(const Scene& scene,
+                                                          const PinholeView& view,
+                                                          const Accelerator& fallback,
+                                                          const ZBufferSettings& settings = {});
+
+}  // namespace rt

@@ -1,0 +1,76 @@
+// The table's edges: what it refuses to cull, what it always culls, its size and its report.
+#include "rt/accel/exit_culling/exit_culling_table.h"
+
+#include "rt/accel/brute_force.h"
+#include "rt/accel/exit_culling/exit_culling.h"
+
+#include <gtest/gtest.h>
+
+#include "accel_test_scenes.h"
+
+namespace rt::test {
+namespace {
+
+TEST(ExitCullingTable, AnEmptySceneCullsEveryValidRay) {
+    const Scene scene = SceneBuilder().scene();
+    const ExitCullingTable table(scene, 4, 8);
+    EXPECT_TRUE(table.nothing_ahead({{1, 2, 3}, {0, 0, 1}}, {0.0, 1e300}));
+    EXPECT_FALSE(table.nothing_ahead({{1, 2, 3}, {0, 0, 0}}, {0.0, 1e300}));
+}
+
+TEST(ExitCullingTable, RaysItCannotVouchForAreNeverCulled) {
+    const Scene scene = make_box({-1, -1, -1}, {1, 1, 1}, false);
+    const ExitCullingTable table(scene, 4, 8);
+    const Ray away{{0, 5, 0}, {0, 1, 0}};
+    EXPECT_TRUE(table.nothing_ahead(away, {0.0, 1e300}));
+    EXPECT_FALSE(table.nothing_ahead(away, {-1.0, 1e300})) << "t.min < 0 looks backwards";
+    EXPECT_FALSE(table.nothing_ahead({{0, 1e6, 0}, {0, 1, 0}}, {0.0, 1e300})) << "too far away";
+    const double nan = std::nan("");
+    EXPECT_FALSE(table.nothing_ahead({{0, 5, 0}, {nan, 1, 0}}, {0.0, 1e300}));
+    EXPECT_FALSE(table.nothing_ahead({{0, 5, 0}, {0, 1, 0}}, {nan, 1e300}));
+}
+
+TEST(ExitCullingTable, ARayMissingTheWorldIsCulledAndOneInsideAClosedBoxIsNot) {
+    const Scene scene = make_box({-1, -1, -1}, {1, 1, 1}, true);
+    const ExitCullingTable table(scene, 6, 8);
+    EXPECT_TRUE(table.nothing_ahead({{5, 5, 5}, {1, 0, 0}}, {0.0, 1e300}));
+    EXPECT_FALSE(table.nothing_ahead({{0.1, 0.2, 0.3}, {1, 0.5, 0}}, {0.0, 1e300}));
+    EXPECT_FALSE(table.nothing_ahead({{5, 0, 0}, {-1, 0, 0}}, {0.0, 1e300}));
+}
+
+TEST(ExitCullingTable, TwocubesTableIsSmall) {
+    const Scene scene = load_twocubes();
+    const ExitCulling culling(scene, make_brute_force(scene));
+    const ExitCullingStatistics statistics = culling.statistics();
+    EXPECT_EQ(statistics.grid_resolution, 8);
+    EXPECT_EQ(statistics.regions, 512u);
+    EXPECT_LT(statistics.memory_bytes, 1u << 20);
+    EXPECT_GT(statistics.empty_fraction, 0.0);
+    EXPECT_EQ(describe(statistics).size(), 1u) << "no -de lines unless checking";
+}
+
+TEST(ExitCulling, DebugModeReportsItsChecks) {
+    const Scene scene = load_twocubes();
+    ExitCullingSettings settings;
+    settings.check_culled = true;
+    const ExitCulling culling(scene, make_brute_force(scene), settings);
+    TraceCounters counters;
+    EXPECT_FALSE(culling.closest_hit({{100, 100, 100}, {1, 0, 0}}, {0.0, 1e300}, counters));
+    EXPECT_EQ(counters.culled_exits, 1u);
+    const ExitCullingStatistics statistics = culling.statistics();
+    EXPECT_EQ(statistics.checked, 1u);
+    EXPECT_EQ(statistics.violations, 0u);
+    const std::vector<std::string> lines = describe(statistics);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[1], "exit culling check (-de): 1 culled rays re-traced, 0 hit something");
+    EXPECT_EQ(culling.name(), "exit culling over brute force");
+}
+
+TEST(ExitCulling, DefaultResolutionGrowsWithThePolygonCount) {
+    EXPECT_EQ(default_exit_culling_resolution(0), 4);
+    EXPECT_EQ(default_exit_culling_resolution(71), 8);
+    EXPECT_EQ(default_exit_culling_resolution(1000000), 8);
+}
+
+}  // namespace
+}  // namespace rt::test
