@@ -97,3 +97,33 @@ TEST(Golden, SamePictureWhateverTheThreadCount) {
 
 }  // namespace
 }  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+// Every intersection method, with and without exit culling and the z-buffer, gives the same
+// picture bit for bit (manual 3.1: they differ in speed only).
+TEST(SamePicture, WhateverTheIntersectionMethod) {
+    const TempDir dir;
+    const std::vector<std::string> common{"-Dd", "--seed", "5"};
+    const auto picture = [&](const std::string& name, std::vector<std::string> extra) {
+        extra.insert(extra.end(), common.begin(), common.end());
+        return read_text(render(dir, "twocubes", name + ".ppm", extra));
+    };
+    const std::string reference = picture("brute", {"--accel", "brute", "-De"});
+    ASSERT_FALSE(reference.empty());
+    for (const std::vector<std::string>& method :
+         std::vector<std::vector<std::string>>{{"--accel", "brute"},
+                                               {"--accel", "brute", "--zbuffer"},
+                                               {"--accel", "seads"},
+                                               {"--accel", "seads", "-De", "--zbuffer"}}) {
+        std::string name;
+        for (const std::string& word : method) {
+            name += word;
+        }
+        EXPECT_TRUE(picture(name, method) == reference) << name;
+    }
+}
+
+}  // namespace
+}  // namespace rt::test

@@ -7,6 +7,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/make_accelerator.h"
+#include "rt/app/accelerator_stack.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
@@ -164,56 +165,6 @@ FilmWindow render_window(const Scene& scene, const Options& o) {
     return window;
 }
 
-// The intersection method: the scene header's (manual 2.2: 0 0 brute force, 1 depth octree,
-// N 0 SEADS), unless --accel names another; -od overrides the octree depth.
-AccelSettings accel_settings(const Scene& scene, const Options& o) {
-    constexpr int kDefaultOctreeDepth = 8;
-    constexpr int kDefaultSeadsResolution = 32;
-    const SceneHeader& h = scene.header;
-    AccelSettings a;
-    a.kind = h.sptncde == 0   ? AccelKind::BruteForce
-             : h.sptncde == 1 ? AccelKind::Octree
-                              : AccelKind::Seads;
-    a.octree_depth = h.sptncde == 1 ? h.octr : kDefaultOctreeDepth;
-    a.seads_resolution = h.sptncde > 1 ? h.sptncde : kDefaultSeadsResolution;
-    if (o.accel) {
-        const std::optional<AccelKind> kind = accel_kind_from_name(*o.accel);
-        if (!kind) {
-            throw UsageError("--accel: expected brute, octree, seads, bvh or embree, found " +
-                             quote_token(*o.accel));
-        }
-        a.kind = *kind;
-    }
-    if (o.octree_depth) {
-        a.octree_depth = *o.octree_depth;
-    }
-    a.octlist_power = o.octlist_power;
-    a.seed_size_power = o.seed_size_power;
-    a.new_fillplane = o.new_fillplane;
-    a.accept_near_hits = o.accept_near_hits;
-    a.no_fudge = o.no_fudge;
-    a.terminate_after_voxels = o.terminate_after_voxels;
-    return a;
-}
-
-// A method the scene header asks for but this build lacks falls back to brute force, which gives
-// the same picture; one asked for by --accel is refused.
-std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options& o,
-                                               const RunConsole& console) {
-    const AccelSettings settings = accel_settings(scene, o);
-    try {
-        return make_accelerator(scene, settings);
-    } catch (const NotImplementedError& e) {
-        if (o.accel) {
-            throw;
-        }
-        console.note(std::string(e.what()) +
-                     "; every ray is tested against every polygon instead (the picture is the "
-                     "same)");
-        return make_brute_force(scene);
-    }
-}
-
 class ConsoleObserver : public RenderObserver {
 public:
     ConsoleObserver(const RunConsole& console, bool print_columns, bool print_samples)
@@ -309,12 +260,21 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.threads = options.threads;
 
     phase = Clock::now();
-    const std::unique_ptr<Accelerator> accel = build_accelerator(scene, options, console);
+    const AcceleratorStack stack(scene, options, console);
+    const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);
     const auto print_profile = [&](const KindCounters& counters) {
         if (options.profile && console.report) {
-            console.report(profile_report(
-                {accel->name(), scene.polygons.size(), accel->memory_bytes(), times, &counters}));
+            std::string text = profile_report(
+                {accel->name(), scene.polygons.size(), accel->memory_bytes(), times, &counters});
+            for (const std::string& line : stack.report_lines()) {
+                text += "  " + line + "\n";
+            }
+            console.report(text);
+        } else if (options.debug_exit_culling && console.report) {
+            for (const std::string& line : stack.report_lines()) {
+                console.report(line + "\n");
+            }
         }
     };
     if (options.random_rays) {

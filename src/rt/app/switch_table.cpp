@@ -194,8 +194,11 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-De", .topic = Disable,
      .apply = [](Options& o, A) { o.disable_exit_culling = true; },
      .summary = "disable exit ray culling",
-     .details = "Skips the preprocessing that culls rays leaving the world.", .section = "App.",
-     .example = "-De", .status = NotYet, .feature = "exit ray culling"},
+     .details = "Exit-ray culling ends at once the rays that cannot hit anything: a table of world "
+                "regions and direction bins, built before rendering, says where nothing lies ahead "
+                "(docs/exit-culling-and-zbuffer.md). It never changes the picture. -De turns it "
+                "off, e.g. when the table takes too long to build.", .section = "App.",
+     .example = "-De"},
     {.spelling = "-Dd", .topic = Disable,
      .apply = [](Options& o, A) { o.disable_distribution = true; },
      .summary = "disable Distributing",
@@ -385,8 +388,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-de", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_exit_culling = true; },
      .summary = "Debug exit ray culling",
-     .details = "Checks that culled rays really hit nothing; useful with -p.", .section = "App.",
-     .example = "-de", .status = NotYet, .feature = "exit ray culling"},
+     .details = "Traces every culled ray with the intersection method as well and counts those that "
+                "hit something (there should be none); prints the statistics at the end of the "
+                "run, as -p does.", .section = "App.",
+     .example = "-de"},
     {.spelling = "--output", .form = SeparateText, .topic = Program, .first = {"FILE", {}},
      .repeatable = true, .apply = [](Options& o, A a) { o.outputs.push_back(a.text); },
      .summary = "Also write the picture to FILE (.gro, .png or .ppm)",
@@ -417,8 +422,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Find the eye rays' first hits with a z-buffer",
      .details = "Rasterises the polygons into an item buffer and takes each eye ray's first "
                 "polygon from it; the rest of the ray tree uses the intersection method.",
-     .section = "3.1", .example = "--zbuffer", .status = NotYet,
-     .feature = "z-buffer first hits"},
+     .section = "3.1", .example = "--zbuffer"},
     {.spelling = "--quiet", .topic = Program, .apply = [](Options& o, A) { o.quiet = true; },
      .summary = "No progress and no notes; warnings and errors still show", .section = "new",
      .example = "--quiet"},

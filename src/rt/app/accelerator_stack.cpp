@@ -1,0 +1,104 @@
+#include "rt/app/accelerator_stack.h"
+
+#include "rt/accel/brute_force.h"
+#include "rt/accel/make_accelerator.h"
+#include "rt/core/error.h"
+#include "rt/core/text.h"
+
+namespace rt {
+
+namespace {
+
+constexpr int kDefaultOctreeDepth = 8;
+constexpr int kDefaultSeadsResolution = 32;
+
+}  // namespace
+
+AccelSettings accel_settings(const Scene& scene, const Options& o) {
+    const SceneHeader& h = scene.header;
+    AccelSettings a;
+    a.kind = h.sptncde == 0   ? AccelKind::BruteForce
+             : h.sptncde == 1 ? AccelKind::Octree
+                              : AccelKind::Seads;
+    a.octree_depth = h.sptncde == 1 ? h.octr : kDefaultOctreeDepth;
+    a.seads_resolution = h.sptncde > 1 ? h.sptncde : kDefaultSeadsResolution;
+    if (o.accel) {
+        const std::optional<AccelKind> kind = accel_kind_from_name(*o.accel);
+        if (!kind) {
+            throw UsageError("--accel: expected brute, octree, seads, bvh or embree, found " +
+                             quote_token(*o.accel));
+        }
+        a.kind = *kind;
+    }
+    if (o.octree_depth) {
+        a.octree_depth = *o.octree_depth;
+    }
+    a.octlist_power = o.octlist_power;
+    a.seed_size_power = o.seed_size_power;
+    a.new_fillplane = o.new_fillplane;
+    a.accept_near_hits = o.accept_near_hits;
+    a.no_fudge = o.no_fudge;
+    a.terminate_after_voxels = o.terminate_after_voxels;
+    return a;
+}
+
+namespace {
+
+// A method the scene header asks for but this build lacks falls back to brute force, which gives
+// the same picture; one asked for by --accel is refused.
+std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options& o,
+                                               const RunConsole& console) {
+    const AccelSettings settings = accel_settings(scene, o);
+    try {
+        return make_accelerator(scene, settings);
+    } catch (const NotImplementedError& e) {
+        if (o.accel) {
+            throw;
+        }
+        console.note(std::string(e.what()) +
+                     "; every ray is tested against every polygon instead (the picture is the "
+                     "same)");
+        return make_brute_force(scene);
+    }
+}
+
+}  // namespace
+
+AcceleratorStack::AcceleratorStack(const Scene& scene, const Options& options,
+                                   const RunConsole& console) {
+    base_ = build_accelerator(scene, options, console);
+    if (!options.disable_exit_culling) {
+        ExitCullingSettings culling;
+        culling.check_culled = options.debug_exit_culling;
+        auto wrapped = std::make_unique<ExitCulling>(scene, std::move(base_), culling);
+        culling_ = wrapped.get();
+        base_ = std::move(wrapped);
+    }
+    top_ = base_.get();
+    if (options.zbuffer_first_hits) {
+        zbuffer_ = make_zbuffer_first_hits(scene, PinholeView::from_view(scene.view), *base_);
+        const ZBufferStatistics z = zbuffer_->statistics();
+        if (!z.active) {
+            console.warning("z-buffer off: " + z.inactive_reason +
+                            "; eye rays use the intersection method");
+        }
+        top_ = zbuffer_.get();
+    }
+}
+
+std::vector<std::string> AcceleratorStack::report_lines() const {
+    std::vector<std::string> lines;
+    if (culling_ != nullptr) {
+        for (std::string& line : describe(culling_->statistics())) {
+            lines.push_back(std::move(line));
+        }
+    }
+    if (zbuffer_) {
+        for (std::string& line : describe(zbuffer_->statistics())) {
+            lines.push_back(std::move(line));
+        }
+    }
+    return lines;
+}
+
+}  // namespace rt
