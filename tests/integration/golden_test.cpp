@@ -117,9 +117,9 @@ TEST(SamePicture, WhateverTheIntersectionMethod) {
                                                {"--accel", "brute", "--zbuffer"},
                                                {"--accel", "seads"},
                                                {"--accel", "seads", "-De", "--zbuffer"}}) {
-        std::string name;
+        std::string name = "method";
         for (const std::string& word : method) {
-            name += word;
+            name += "_" + word.substr(word.find_first_not_of('-'));
         }
         EXPECT_TRUE(picture(name, method) == reference) << name;
     }
