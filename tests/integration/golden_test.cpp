@@ -79,8 +79,8 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"twocubes-K-Da", "twocubes", {"-K", "-Da"}},
                       GoldenCase{"twocubes-F-I", "twocubes", {"-F0.05,4", "-I", "--seed", "3"}},
                       GoldenCase{"twocubes-Oi", "twocubes", {"-Oi"}}),
-    [](const ::testing::TestParamInfo<GoldenCase>& info) {
-        std::string name = info.param.name;
+    [](const ::testing::TestParamInfo<GoldenCase>& case_info) {
+        std::string name = case_info.param.name;
         std::replace(name.begin(), name.end(), '-', '_');
         return name;
     });
@@ -119,7 +119,7 @@ TEST(SamePicture, WhateverTheIntersectionMethod) {
                                                {"--accel", "seads", "-De", "--zbuffer"}}) {
         std::string name = "method";
         for (const std::string& word : method) {
-            name += "_" + word.substr(word.find_first_not_of('-'));
+            name.append("_").append(word.substr(word.find_first_not_of('-')));
         }
         EXPECT_TRUE(picture(name, method) == reference) << name;
     }
