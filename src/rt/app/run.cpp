@@ -6,6 +6,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/make_accelerator.h"
+#include "rt/app/run_settings.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
@@ -38,6 +39,8 @@ std::string utc_now() {
     std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
     return text;
 }
+
+}  // namespace
 
 ShadingSettings shading_settings(const Options& o) {
     ShadingSettings s;
@@ -118,6 +121,8 @@ std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options
         return make_brute_force(scene);
     }
 }
+
+namespace {
 
 class ConsoleObserver : public RenderObserver {
 public:

@@ -117,6 +117,7 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
         statistics.counters.hits += c.hits;
     }
     statistics.rows_done = job.rows_done;
+    statistics.threads = n;
     statistics.interrupted = job.stopping && !film.complete();
     return film;
 }

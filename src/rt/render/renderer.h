@@ -39,6 +39,7 @@ public:
 struct RenderStatistics {
     TraceCounters counters;
     int rows_done = 0;
+    int threads = 0;  ///< worker threads the render used (settings.threads resolved)
     bool interrupted = false;
 };
 
