@@ -32,7 +32,7 @@ std::vector<Ray> eye_rays(const Scene& scene, int columns, int rows) {
     return rays;
 }
 
-void BM_BruteForceClosestHitTwocubes(benchmark::State& state) {
+void brute_force_closest_hit_twocubes(benchmark::State& state) {
     const Scene scene = load_twocubes();
     const BruteForce accel(scene);
     const std::vector<Ray> rays = eye_rays(scene, 64, 50);
@@ -51,7 +51,7 @@ void BM_BruteForceClosestHitTwocubes(benchmark::State& state) {
     state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays_done);
 }
 
-void BM_BruteForceOccludedTwocubes(benchmark::State& state) {
+void brute_force_occluded_twocubes(benchmark::State& state) {
     const Scene scene = load_twocubes();
     const BruteForce accel(scene);
     const std::vector<Ray> rays = eye_rays(scene, 64, 50);
@@ -64,8 +64,8 @@ void BM_BruteForceOccludedTwocubes(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rays.size()));
 }
 
-BENCHMARK(BM_BruteForceClosestHitTwocubes);
-BENCHMARK(BM_BruteForceOccludedTwocubes);
+BENCHMARK(brute_force_closest_hit_twocubes);
+BENCHMARK(brute_force_occluded_twocubes);
 
 }  // namespace
 }  // namespace rt::bench

@@ -14,7 +14,7 @@ namespace {
 constexpr int kRays = 4096;
 constexpr Interval kAhead{0.0, 1e300};
 
-void BM_IntersectPolygonPreparedRay(benchmark::State& state) {
+void intersect_polygon_prepared_ray(benchmark::State& state) {
     const Scene scene = regular_polygon_scene(static_cast<int>(state.range(0)));
     std::vector<RaySpace> spaces;
     for (const Ray& ray : rays_around_unit_polygon(kRays)) {
@@ -33,7 +33,7 @@ void BM_IntersectPolygonPreparedRay(benchmark::State& state) {
         static_cast<double>(hits) / static_cast<double>(state.iterations() * kRays);
 }
 
-void BM_IntersectPolygonFreshRay(benchmark::State& state) {
+void intersect_polygon_fresh_ray(benchmark::State& state) {
     const Scene scene = regular_polygon_scene(static_cast<int>(state.range(0)));
     const std::vector<Ray> rays = rays_around_unit_polygon(kRays);
     for (auto _ : state) {
@@ -45,7 +45,7 @@ void BM_IntersectPolygonFreshRay(benchmark::State& state) {
 }
 
 // The exact fallback's cost: collinear inputs never pass the quick filter.
-void BM_EdgeSign(benchmark::State& state) {
+void edge_sign_quick_or_exact(benchmark::State& state) {
     const bool degenerate = state.range(0) != 0;
     std::vector<double> values;
     for (int i = 1; i <= 1024; ++i) {
@@ -62,9 +62,9 @@ void BM_EdgeSign(benchmark::State& state) {
     state.SetLabel(degenerate ? "collinear (exact path)" : "general (quick path)");
 }
 
-BENCHMARK(BM_IntersectPolygonPreparedRay)->ArgName("corners")->Arg(3)->Arg(4)->Arg(20);
-BENCHMARK(BM_IntersectPolygonFreshRay)->ArgName("corners")->Arg(3)->Arg(4)->Arg(20);
-BENCHMARK(BM_EdgeSign)->ArgName("collinear")->Arg(0)->Arg(1);
+BENCHMARK(intersect_polygon_prepared_ray)->ArgName("corners")->Arg(3)->Arg(4)->Arg(20);
+BENCHMARK(intersect_polygon_fresh_ray)->ArgName("corners")->Arg(3)->Arg(4)->Arg(20);
+BENCHMARK(edge_sign_quick_or_exact)->ArgName("collinear")->Arg(0)->Arg(1);
 
 }  // namespace
 }  // namespace rt::bench

@@ -111,17 +111,14 @@ Ray ray_through(const Vec3& through, const Vec3& direction) {
 // Directions whose components are small dyadic numbers (exact shears), in every octant, including
 // axis-parallel and face-diagonal ones.
 std::vector<Vec3> dyadic_directions() {
+    constexpr double kParts[] = {-1.0, -0.5, -0.25, 0.0, 0.25, 0.5, 1.0};
     std::vector<Vec3> out;
-    const double parts[] = {0.0, 0.25, 0.5, 1.0};
-    for (const double a : parts) {
-        for (const double b : parts) {
-            for (const double c : parts) {
-                for (int signs = 0; signs < 8; ++signs) {
-                    const Vec3 d{(signs & 1) ? -a : a, (signs & 2) ? -b : b, (signs & 4) ? -c : c};
-                    if (d != Vec3{} && ((signs & 1) == 0 || a != 0) &&
-                        ((signs & 2) == 0 || b != 0) && ((signs & 4) == 0 || c != 0)) {
-                        out.push_back(d);
-                    }
+    out.reserve(std::size(kParts) * std::size(kParts) * std::size(kParts));
+    for (const double a : kParts) {
+        for (const double b : kParts) {
+            for (const double c : kParts) {
+                if (a != 0.0 || b != 0.0 || c != 0.0) {
+                    out.push_back({a, b, c});
                 }
             }
         }
@@ -131,6 +128,7 @@ std::vector<Vec3> dyadic_directions() {
 
 std::vector<Vec3> box_corners(const Vec3& lo, const Vec3& hi) {
     std::vector<Vec3> out;
+    out.reserve(8);
     for (int i = 0; i < 8; ++i) {
         out.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
     }
