@@ -225,9 +225,27 @@ TEST(IntersectPolygon, InvalidRaysMiss) {
         EXPECT_FALSE(hit_flat(square_corners, ray));
         EXPECT_EQ(winding_number(RaySpace(ray), square_corners), 0);
     }
+    // Finite components, but a length beyond the largest double.
+    EXPECT_FALSE(RaySpace(Ray{origin, {1.5e308, 1.5e308, -1.5e308}}).valid());
     for (const Vec3& bad_origin : {Vec3{kNaN, 1, 5}, Vec3{1, kInf, 5}}) {
         EXPECT_FALSE(RaySpace(Ray{bad_origin, {0, 0, -1}}).valid());
         EXPECT_FALSE(hit_flat(square_corners, Ray{bad_origin, {0, 0, -1}}));
+    }
+}
+
+// A direction's length is only a unit for t: scaled by 1e200 or 1e-200 (so that its squared
+// length overflows or underflows) the ray meets the polygon at the same point, at t / scale.
+TEST(IntersectPolygon, HugeAndTinyDirectionsHitAtScaledDepths) {
+    for (const double scale : {1e200, 1e-200, 1e150, 1e-150}) {
+        const Ray steep{{1, 1, 5}, Vec3{0.01, -0.02, -1} * scale};
+        const std::optional<double> t = hit_flat(square_corners, steep);
+        ASSERT_TRUE(t) << "scale " << scale;
+        EXPECT_NEAR(*t * scale, 5.0, 1e-12) << "scale " << scale;
+        // Nearly in the plane (the grazing case): depth between the corners' depths.
+        const Ray grazing{{-4, 1, 1e-9}, Vec3{1, 0, -2e-10} * scale};
+        const std::optional<double> g = hit_flat(square_corners, grazing);
+        ASSERT_TRUE(g) << "scale " << scale;
+        EXPECT_NEAR(*g * scale, 5.0, 1e-6) << "scale " << scale;
     }
 }
 
