@@ -27,7 +27,7 @@ Scene squares_at(const std::vector<double>& heights) {
     return std::move(b.scene());
 }
 
-const Ray kDown{{0.25, 0.5, 10}, {0, 0, -1}};
+constexpr Ray kDown{{0.25, 0.5, 10}, {0, 0, -1}};
 
 TEST(BruteForce, ReturnsTheNearestHitWhateverTheOrder) {
     const Scene scene = squares_at({-3, 4, 1, 7.5, -1});

@@ -1,4 +1,4 @@
-// Mean value coordinates and the normals built on them, and the normals inferred from shapes.
+// Mean value coordinates and the shading normals interpolated with them.
 #include "rt/geometry/normals.h"
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 namespace rt {
 namespace {
 
-const Vec3 kUp{0, 0, 1};
+constexpr Vec3 kUp{0, 0, 1};
 
 std::vector<double> weights_at(const std::vector<Vec3>& corners, const Vec3& point,
                                const Vec3& normal = kUp) {
@@ -36,9 +36,10 @@ double sum_of(const std::vector<double>& w) {
     return std::accumulate(w.begin(), w.end(), 0.0);
 }
 
-const std::vector<Vec3> kTriangle{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}};
-const std::vector<Vec3> kSquare{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
-const std::vector<Vec3> kLShape{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+const std::vector<Vec3> triangle_corners{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}};
+const std::vector<Vec3> square_corners{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+const std::vector<Vec3> l_shape_corners{{0, 0, 0}, {2, 0, 0}, {2, 1, 0},
+                                        {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
 
 std::vector<Vec3> star(int points, double outer, double inner) {
     std::vector<Vec3> loop;
@@ -51,7 +52,7 @@ std::vector<Vec3> star(int points, double outer, double inner) {
 }
 
 TEST(MeanValueWeights, AreBarycentricOnATriangle) {
-    const std::vector<double> w = weights_at(kTriangle, {1.0, 1.5, 0});
+    const std::vector<double> w = weights_at(triangle_corners, {1.0, 1.5, 0});
     // Barycentric coordinates of (1, 1.5): (1 - 1/4 - 1.5/3, 1/4, 1.5/3).
     EXPECT_NEAR(w[0], 0.25, 1e-12);
     EXPECT_NEAR(w[1], 0.25, 1e-12);
@@ -74,8 +75,8 @@ bool inside_by_crossings(const std::vector<Vec3>& loop, const Vec3& p) {
 TEST(MeanValueWeights, SumToOneAndReproduceThePointInConvexAndConcavePolygons) {
     std::mt19937_64 random(41);
     std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
-    const std::vector<std::vector<Vec3>> polygons{kTriangle, kSquare, kLShape, star(5, 2.0, 0.6),
-                                                  star(12, 3.0, 2.5)};
+    const std::vector<std::vector<Vec3>> polygons{triangle_corners, square_corners, l_shape_corners,
+                                                  star(5, 2.0, 0.6), star(12, 3.0, 2.5)};
     for (const std::vector<Vec3>& polygon : polygons) {
         int inside = 0;
         for (int i = 0; i < 2000; ++i) {
@@ -98,10 +99,10 @@ TEST(MeanValueWeights, ReproduceLinearFunctionsInsideConcavePolygons) {
     const auto f = [](const Vec3& p) { return 3.0 * p.x - 2.0 * p.y + 1.0; };
     const std::vector<Vec3> points{{0.5, 0.5, 0}, {1.5, 0.3, 0}, {0.2, 1.9, 0}, {0.9, 0.9, 0}};
     for (const Vec3& p : points) {
-        const std::vector<double> w = weights_at(kLShape, p);
+        const std::vector<double> w = weights_at(l_shape_corners, p);
         double value = 0.0;
-        for (std::size_t k = 0; k < kLShape.size(); ++k) {
-            value += w[k] * f(kLShape[k]);
+        for (std::size_t k = 0; k < l_shape_corners.size(); ++k) {
+            value += w[k] * f(l_shape_corners[k]);
         }
         EXPECT_NEAR(value, f(p), 1e-12);
         EXPECT_NEAR(sum_of(w), 1.0, 1e-12);
@@ -115,8 +116,8 @@ TEST(MeanValueWeights, ReproduceLinearFunctionsInsideConcavePolygons) {
 }
 
 TEST(MeanValueWeights, OneAtACorner) {
-    for (std::size_t k = 0; k < kLShape.size(); ++k) {
-        const std::vector<double> w = weights_at(kLShape, kLShape[k]);
+    for (std::size_t k = 0; k < l_shape_corners.size(); ++k) {
+        const std::vector<double> w = weights_at(l_shape_corners, l_shape_corners[k]);
         for (std::size_t j = 0; j < w.size(); ++j) {
             EXPECT_EQ(w[j], j == k ? 1.0 : 0.0) << "corner " << k << " weight " << j;
         }
@@ -125,21 +126,21 @@ TEST(MeanValueWeights, OneAtACorner) {
 
 TEST(MeanValueWeights, LinearAlongAnEdge) {
     // A quarter of the way along the square's edge 1 -> 2.
-    const std::vector<double> w = weights_at(kSquare, {2, 0.5, 0});
+    const std::vector<double> w = weights_at(square_corners, {2, 0.5, 0});
     EXPECT_NEAR(w[1], 0.75, 1e-12);
     EXPECT_NEAR(w[2], 0.25, 1e-12);
     EXPECT_EQ(w[0], 0.0);
     EXPECT_EQ(w[3], 0.0);
     // The closing edge 3 -> 0 too.
-    const std::vector<double> closing = weights_at(kSquare, {0, 1.5, 0});
+    const std::vector<double> closing = weights_at(square_corners, {0, 1.5, 0});
     EXPECT_NEAR(closing[3], 0.75, 1e-12);
     EXPECT_NEAR(closing[0], 0.25, 1e-12);
 }
 
 TEST(MeanValueWeights, SmoothAcrossTheInsideNearAnEdge) {
     // Just inside an edge the weights are close to the edge's.
-    const std::vector<double> on = weights_at(kLShape, {1.5, 1.0, 0});
-    const std::vector<double> near = weights_at(kLShape, {1.5, 1.0 - 1e-7, 0});
+    const std::vector<double> on = weights_at(l_shape_corners, {1.5, 1.0, 0});
+    const std::vector<double> near = weights_at(l_shape_corners, {1.5, 1.0 - 1e-7, 0});
     for (std::size_t k = 0; k < on.size(); ++k) {
         EXPECT_NEAR(on[k], near[k], 1e-5);
     }
@@ -150,17 +151,18 @@ TEST(MeanValueWeights, IndependentOfOrientationAndPlane) {
     const double c = std::cos(0.4), s = std::sin(0.4);
     const auto tilt = [&](const Vec3& p) { return Vec3{p.x, c * p.y, s * p.y + 5.0}; };
     std::vector<Vec3> tilted;
-    for (const Vec3& p : kLShape) {
+    tilted.reserve(l_shape_corners.size());
+    for (const Vec3& p : l_shape_corners) {
         tilted.push_back(tilt(p));
     }
     const Vec3 point{0.7, 1.3, 0};
-    const std::vector<double> flat = weights_at(kLShape, point);
+    const std::vector<double> flat = weights_at(l_shape_corners, point);
     const std::vector<double> turned = weights_at(tilted, tilt(point), test::newell_normal(tilted));
     for (std::size_t k = 0; k < flat.size(); ++k) {
         EXPECT_NEAR(flat[k], turned[k], 1e-12);
     }
     // Reversing the loop and the normal together changes nothing either.
-    std::vector<Vec3> reversed(kLShape.rbegin(), kLShape.rend());
+    std::vector<Vec3> reversed(l_shape_corners.rbegin(), l_shape_corners.rend());
     const std::vector<double> back = weights_at(reversed, point, -kUp);
     for (std::size_t k = 0; k < flat.size(); ++k) {
         EXPECT_NEAR(flat[k], back[flat.size() - 1 - k], 1e-12);
@@ -177,11 +179,11 @@ TEST(MeanValueWeights, EqualWeightsForADegeneratePolygon) {
 
 TEST(MeanValueWeights, WritesOnlyTheCornersWeightsAndRefusesShortSpans) {
     std::vector<double> w(6, -7.0);
-    mean_value_weights(kTriangle, kUp, {1, 1, 0}, w);
+    mean_value_weights(triangle_corners, kUp, {1, 1, 0}, w);
     EXPECT_EQ(w[3], -7.0);
     EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-12);
     std::vector<double> too_short(2, -7.0);
-    mean_value_weights(kTriangle, kUp, {1, 1, 0}, too_short);
+    mean_value_weights(triangle_corners, kUp, {1, 1, 0}, too_short);
     EXPECT_EQ(too_short[0], -7.0);
 }
 
@@ -264,92 +266,6 @@ TEST(PolygonWeights, MatchTheSpanForm) {
     polygon_weights(box, 2, point, from_scene);
     mean_value_weights(loop, p.normal, point, from_span);
     EXPECT_EQ(from_scene, from_span);
-}
-
-// --- shape normals ---------------------------------------------------------------------------
-
-Shape sphere_at(const Vec3& centre) {
-    Shape s;
-    s.first = centre;
-    s.radius_or_angle = 2.0;
-    return s;
-}
-
-Shape along_axis(const Vec3& first, const Vec3& second, double radius_or_angle) {
-    Shape s;
-    s.first = first;
-    s.second = second;
-    s.radius_or_angle = radius_or_angle;
-    return s;
-}
-
-void expect_unit_near(const Vec3& actual, const Vec3& expected) {
-    EXPECT_NEAR(length(actual), 1.0, 1e-12);
-    EXPECT_NEAR(length(actual - normalize(expected)), 0.0, 1e-12)
-        << actual.x << " " << actual.y << " " << actual.z;
-}
-
-TEST(ShapeNormal, SphereIsRadialAndTurnedOutward) {
-    const Shape s = sphere_at({1, 2, 3});
-    const Vec3 point{1, 2, 3 + 2.0};
-    expect_unit_near(shape_normal(s, PolygonMark::Sphere, point, {0, 0.1, 1}), {0, 0, 1});
-    // A polygon facing inward (the inside of a dome) turns the shape normal with it.
-    expect_unit_near(shape_normal(s, PolygonMark::Sphere, point, {0, 0.1, -1}), {0, 0, -1});
-    const Vec3 oblique = Vec3{1, 2, 3} + normalize(Vec3{1, -1, 2}) * 2.0;
-    expect_unit_near(shape_normal(s, PolygonMark::Sphere, oblique, {1, -1, 2}), {1, -1, 2});
-}
-
-TEST(ShapeNormal, CylinderIsPerpendicularToTheAxis) {
-    const Shape s = along_axis({0, 0, 0}, {0, 0, 5}, 1.0);
-    expect_unit_near(shape_normal(s, PolygonMark::Cylinder, {1, 0, 3.7}, {1, 0, 0.2}), {1, 0, 0});
-    // A tilted axis: the normal is the radial part only.
-    const Shape tilted = along_axis({1, 1, 1}, {2, 2, 2}, 1.0);
-    const Vec3 point = Vec3{1.5, 1.5, 1.5} + normalize(Vec3{1, -1, 0}) * 1.0;
-    const Vec3 n = shape_normal(tilted, PolygonMark::Cylinder, point, {1, -1, 0.3});
-    expect_unit_near(n, {1, -1, 0});
-    EXPECT_NEAR(dot(n, Vec3{1, 1, 1}), 0.0, 1e-12);
-}
-
-TEST(ShapeNormal, ConeIsPerpendicularToItsSurfaceLine) {
-    const double half_angle = 30.0;
-    const Shape s = along_axis({0, 0, 0}, {0, 0, 1}, half_angle);
-    const double tan_a = std::tan(half_angle * std::numbers::pi / 180.0);
-    for (const double height : {2.0, -2.0}) {  // both nappes
-        for (const double phi : {0.0, 1.0, 2.5}) {
-            const Vec3 point{height * tan_a * std::cos(phi), height * tan_a * std::sin(phi),
-                             height};
-            const Vec3 radial{std::cos(phi), std::sin(phi), 0};
-            const Vec3 n = shape_normal(s, PolygonMark::Cone, point, radial);
-            EXPECT_NEAR(length(n), 1.0, 1e-12);
-            EXPECT_NEAR(dot(n, point), 0.0, 1e-12) << "not perpendicular to the surface line";
-            EXPECT_GT(dot(n, radial), 0.0);
-            // Its angle with the axis: 90 degrees plus or minus the half-angle.
-            EXPECT_NEAR(std::fabs(dot(n, Vec3{0, 0, 1})),
-                        std::sin(half_angle * std::numbers::pi / 180.0), 1e-12);
-        }
-    }
-}
-
-TEST(ShapeNormal, PolygonNormalWhereTheShapeGivesNone) {
-    const Vec3 polygon_normal{0, 1, 0};
-    // On the axis, at the apex, at a sphere's centre, with a zero axis.
-    EXPECT_EQ(shape_normal(along_axis({0, 0, 0}, {0, 0, 1}, 1.0), PolygonMark::Cylinder, {0, 0, 3},
-                           polygon_normal),
-              polygon_normal);
-    EXPECT_EQ(shape_normal(along_axis({0, 0, 0}, {0, 0, 1}, 30.0), PolygonMark::Cone, {0, 0, 0},
-                           polygon_normal),
-              polygon_normal);
-    EXPECT_EQ(shape_normal(sphere_at({1, 1, 1}), PolygonMark::Sphere, {1, 1, 1}, polygon_normal),
-              polygon_normal);
-    EXPECT_EQ(shape_normal(along_axis({1, 1, 1}, {1, 1, 1}, 1.0), PolygonMark::Cylinder, {3, 1, 1},
-                           polygon_normal),
-              polygon_normal);
-    // Ordinary and normal-interpolating polygons keep their own normal.
-    EXPECT_EQ(shape_normal(sphere_at({0, 0, 0}), PolygonMark::Ordinary, {2, 0, 0}, polygon_normal),
-              polygon_normal);
-    EXPECT_EQ(shape_normal(sphere_at({0, 0, 0}), PolygonMark::InterpolatesNormals, {2, 0, 0},
-                           polygon_normal),
-              polygon_normal);
 }
 
 }  // namespace

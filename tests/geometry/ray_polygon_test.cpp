@@ -18,7 +18,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr Interval kWholeLine{-1e300, 1e300};
-const Vec3 kUp{0, 0, 1};
+constexpr Vec3 kUp{0, 0, 1};
 
 // A ray straight down onto the point (x, y) of the plane z = 0, from z = 5.
 Ray down_onto(double x, double y) {
@@ -72,32 +72,33 @@ double distance_to_boundary(const std::vector<Vec3>& loop, double x, double y) {
     return nearest;
 }
 
-const std::vector<Vec3> kTriangle{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}};
-const std::vector<Vec3> kSquare{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+const std::vector<Vec3> triangle_corners{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}};
+const std::vector<Vec3> square_corners{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
 // An L: the square [0,2]^2 without its upper right quarter [1,2]x[1,2].
-const std::vector<Vec3> kLShape{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+const std::vector<Vec3> l_shape_corners{{0, 0, 0}, {2, 0, 0}, {2, 1, 0},
+                                        {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
 
 TEST(IntersectPolygon, TriangleHitAndDepth) {
-    const std::optional<double> t = hit_flat(kTriangle, down_onto(1, 1));
+    const std::optional<double> t = hit_flat(triangle_corners, down_onto(1, 1));
     ASSERT_TRUE(t);
     EXPECT_DOUBLE_EQ(*t, 5.0);
-    EXPECT_FALSE(hits_flat(kTriangle, 3, 2));  // beyond the hypotenuse
-    EXPECT_FALSE(hits_flat(kTriangle, -0.1, 1));
-    EXPECT_FALSE(hits_flat(kTriangle, 1, -0.1));
+    EXPECT_FALSE(hits_flat(triangle_corners, 3, 2));  // beyond the hypotenuse
+    EXPECT_FALSE(hits_flat(triangle_corners, -0.1, 1));
+    EXPECT_FALSE(hits_flat(triangle_corners, 1, -0.1));
 }
 
 TEST(IntersectPolygon, DepthScalesWithTheDirectionsLength) {
     const Ray slow{{1, 1, 5}, {0, 0, -0.5}};
-    const std::optional<double> t = hit_flat(kTriangle, slow);
+    const std::optional<double> t = hit_flat(triangle_corners, slow);
     ASSERT_TRUE(t);
     EXPECT_DOUBLE_EQ(*t, 10.0);
 }
 
 TEST(IntersectPolygon, EitherLoopOrientationAndEitherSideHit) {
-    std::vector<Vec3> reversed(kSquare.rbegin(), kSquare.rend());
+    std::vector<Vec3> reversed(square_corners.rbegin(), square_corners.rend());
     EXPECT_TRUE(hits_flat(reversed, 1, 1));
     const Ray from_below{{1, 1, -5}, {0, 0, 1}};
-    EXPECT_TRUE(hit_flat(kSquare, from_below));
+    EXPECT_TRUE(hit_flat(square_corners, from_below));
     EXPECT_TRUE(hit_flat(reversed, from_below));
 }
 
@@ -117,12 +118,12 @@ TEST(IntersectPolygon, ObliqueRayThroughATiltedQuad) {
 }
 
 TEST(IntersectPolygon, LShapeMissesItsNotch) {
-    EXPECT_TRUE(hits_flat(kLShape, 0.5, 0.5));
-    EXPECT_TRUE(hits_flat(kLShape, 1.5, 0.5));
-    EXPECT_TRUE(hits_flat(kLShape, 0.5, 1.5));
-    EXPECT_FALSE(hits_flat(kLShape, 1.5, 1.5));  // the notch
-    EXPECT_FALSE(hits_flat(kLShape, 1.01, 1.01));
-    EXPECT_TRUE(hits_flat(kLShape, 0.99, 0.99));
+    EXPECT_TRUE(hits_flat(l_shape_corners, 0.5, 0.5));
+    EXPECT_TRUE(hits_flat(l_shape_corners, 1.5, 0.5));
+    EXPECT_TRUE(hits_flat(l_shape_corners, 0.5, 1.5));
+    EXPECT_FALSE(hits_flat(l_shape_corners, 1.5, 1.5));  // the notch
+    EXPECT_FALSE(hits_flat(l_shape_corners, 1.01, 1.01));
+    EXPECT_TRUE(hits_flat(l_shape_corners, 0.99, 0.99));
 }
 
 TEST(IntersectPolygon, ConcaveStarMissesBetweenItsPoints) {
@@ -172,14 +173,14 @@ TEST(IntersectPolygon, ManyCornersAgreeWithACrossingTest) {
 
 TEST(IntersectPolygon, WindingNumberFollowsTheLoopsOrientation) {
     const RaySpace down(down_onto(1, 1));
-    const std::vector<Vec3> reversed(kSquare.rbegin(), kSquare.rend());
-    const int forward = winding_number(down, kSquare);
+    const std::vector<Vec3> reversed(square_corners.rbegin(), square_corners.rend());
+    const int forward = winding_number(down, square_corners);
     EXPECT_EQ(std::abs(forward), 1);
     EXPECT_EQ(winding_number(down, reversed), -forward);
     const RaySpace up(Ray{{1, 1, -5}, {0, 0, 1}});
-    EXPECT_EQ(std::abs(winding_number(up, kSquare)), 1);  // from the other side: hit too
-    EXPECT_EQ(winding_number(RaySpace(down_onto(3, 3)), kSquare), 0);
-    EXPECT_TRUE(ray_passes_through(down, kSquare));
+    EXPECT_EQ(std::abs(winding_number(up, square_corners)), 1);  // from the other side: hit too
+    EXPECT_EQ(winding_number(RaySpace(down_onto(3, 3)), square_corners), 0);
+    EXPECT_TRUE(ray_passes_through(down, square_corners));
 }
 
 TEST(IntersectPolygon, FewerThanThreeCornersNeverHit) {
@@ -190,29 +191,29 @@ TEST(IntersectPolygon, FewerThanThreeCornersNeverHit) {
 }
 
 TEST(IntersectPolygon, RayParallelToThePlaneMisses) {
-    EXPECT_FALSE(hit_flat(kSquare, Ray{{1, 1, 1}, {1, 0, 0}}));
-    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, 1, 1e-9}, {1, 0.2, 0}}));
+    EXPECT_FALSE(hit_flat(square_corners, Ray{{1, 1, 1}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(square_corners, Ray{{-5, 1, 1e-9}, {1, 0.2, 0}}));
 }
 
 TEST(IntersectPolygon, RayInThePlaneMisses) {
     // Exactly in the plane, through the middle and along an edge: the projection has no area.
-    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, 1, 0}, {1, 0, 0}}));
-    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, 0, 0}, {1, 0, 0}}));
-    EXPECT_FALSE(hit_flat(kSquare, Ray{{-5, -5, 0}, {1, 1, 0}}));  // the diagonal
-    EXPECT_FALSE(hit_flat(kLShape, Ray{{-5, 1.5, 0}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(square_corners, Ray{{-5, 1, 0}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(square_corners, Ray{{-5, 0, 0}, {1, 0, 0}}));
+    EXPECT_FALSE(hit_flat(square_corners, Ray{{-5, -5, 0}, {1, 1, 0}}));  // the diagonal
+    EXPECT_FALSE(hit_flat(l_shape_corners, Ray{{-5, 1.5, 0}, {1, 0, 0}}));
 }
 
 TEST(IntersectPolygon, NearlyParallelRayHitsWhereItCrossesThePlane) {
     // Dropping 1e-9 over 5 units: the plane z = 0 is met at x = 1, inside the square, by a ray
     // far below the grazing limit.
     const Ray ray{{-4, 1, 1e-9}, {1, 0, -2e-10}};
-    const std::optional<double> t = hit_flat(kSquare, ray);
+    const std::optional<double> t = hit_flat(square_corners, ray);
     ASSERT_TRUE(t);
     EXPECT_NEAR(*t, 5.0, 1e-6);
     const Ray beside{{-4, 3, 1e-9}, {1, 0, -2e-10}};
-    EXPECT_FALSE(hit_flat(kSquare, beside));
+    EXPECT_FALSE(hit_flat(square_corners, beside));
     const Ray short_of_it{{-4, 1, 1e-9}, {1, 0, -1e-10}};  // would meet the plane at x = 6
-    EXPECT_FALSE(hit_flat(kSquare, short_of_it));
+    EXPECT_FALSE(hit_flat(square_corners, short_of_it));
 }
 
 TEST(IntersectPolygon, InvalidRaysMiss) {
@@ -221,12 +222,30 @@ TEST(IntersectPolygon, InvalidRaysMiss) {
                                   Vec3{0, 0, -kInf}, Vec3{kInf, 0, -1}, Vec3{0, 0, -0.0}}) {
         const Ray ray{origin, direction};
         EXPECT_FALSE(RaySpace(ray).valid());
-        EXPECT_FALSE(hit_flat(kSquare, ray));
-        EXPECT_EQ(winding_number(RaySpace(ray), kSquare), 0);
+        EXPECT_FALSE(hit_flat(square_corners, ray));
+        EXPECT_EQ(winding_number(RaySpace(ray), square_corners), 0);
     }
+    // Finite components, but a length beyond the largest double.
+    EXPECT_FALSE(RaySpace(Ray{origin, {1.5e308, 1.5e308, -1.5e308}}).valid());
     for (const Vec3& bad_origin : {Vec3{kNaN, 1, 5}, Vec3{1, kInf, 5}}) {
         EXPECT_FALSE(RaySpace(Ray{bad_origin, {0, 0, -1}}).valid());
-        EXPECT_FALSE(hit_flat(kSquare, Ray{bad_origin, {0, 0, -1}}));
+        EXPECT_FALSE(hit_flat(square_corners, Ray{bad_origin, {0, 0, -1}}));
+    }
+}
+
+// A direction's length is only a unit for t: scaled by 1e200 or 1e-200 (so that its squared
+// length overflows or underflows) the ray meets the polygon at the same point, at t / scale.
+TEST(IntersectPolygon, HugeAndTinyDirectionsHitAtScaledDepths) {
+    for (const double scale : {1e200, 1e-200, 1e150, 1e-150}) {
+        const Ray steep{{1, 1, 5}, Vec3{0.01, -0.02, -1} * scale};
+        const std::optional<double> t = hit_flat(square_corners, steep);
+        ASSERT_TRUE(t) << "scale " << scale;
+        EXPECT_NEAR(*t * scale, 5.0, 1e-12) << "scale " << scale;
+        // Nearly in the plane (the grazing case): depth between the corners' depths.
+        const Ray grazing{{-4, 1, 1e-9}, Vec3{1, 0, -2e-10} * scale};
+        const std::optional<double> g = hit_flat(square_corners, grazing);
+        ASSERT_TRUE(g) << "scale " << scale;
+        EXPECT_NEAR(*g * scale, 5.0, 1e-6) << "scale " << scale;
     }
 }
 
@@ -239,11 +258,12 @@ TEST(IntersectPolygon, NonFiniteCornersMiss) {
 
 TEST(IntersectPolygon, IntervalIsOpenAtBothEnds) {
     const Ray ray = down_onto(1, 1);  // meets the square at t = 5 exactly
-    EXPECT_TRUE(hit_flat(kSquare, ray, {4.0, 6.0}));
-    EXPECT_FALSE(hit_flat(kSquare, ray, {5.0, 6.0}));
-    EXPECT_FALSE(hit_flat(kSquare, ray, {4.0, 5.0}));
-    EXPECT_TRUE(hit_flat(kSquare, ray, {std::nextafter(5.0, 0.0), std::nextafter(5.0, 6.0)}));
-    EXPECT_FALSE(hit_flat(kSquare, Ray{{1, 1, -5}, {0, 0, -1}}, {0.0, 1e300}));  // behind
+    EXPECT_TRUE(hit_flat(square_corners, ray, {4.0, 6.0}));
+    EXPECT_FALSE(hit_flat(square_corners, ray, {5.0, 6.0}));
+    EXPECT_FALSE(hit_flat(square_corners, ray, {4.0, 5.0}));
+    EXPECT_TRUE(
+        hit_flat(square_corners, ray, {std::nextafter(5.0, 0.0), std::nextafter(5.0, 6.0)}));
+    EXPECT_FALSE(hit_flat(square_corners, Ray{{1, 1, -5}, {0, 0, -1}}, {0.0, 1e300}));  // behind
 }
 
 TEST(PlaneHit, DepthOfThePlane) {

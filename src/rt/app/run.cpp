@@ -9,6 +9,7 @@
 #include "rt/accel/make_accelerator.h"
 #include "rt/app/accelerator_stack.h"
 #include "rt/app/profile_report.h"
+#include "rt/app/run_settings.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
@@ -111,6 +112,8 @@ void apply_early_model(ShadingSettings& s) {
     s.fuzzy = {};
 }
 
+}  // namespace
+
 ShadingSettings shading_settings(const Options& o) {
     ShadingSettings s;
     s.attenuation_distance = o.attenuation_distance;
@@ -164,6 +167,8 @@ FilmWindow render_window(const Scene& scene, const Options& o) {
     }
     return window;
 }
+
+namespace {
 
 class ConsoleObserver : public RenderObserver {
 public:

@@ -96,14 +96,17 @@ bool inside(double t, Interval interval) {
 // Below this |cos| between the normal and the ray the plane's t is ill-conditioned.
 constexpr double kGrazing = 1e-6;
 
-// The range of the corners' depths (t of their projections onto the ray).
+// The range of the corners' depths (t of their projections onto the ray). Through the unit
+// direction, not dot(d, d), which overflows or underflows for directions far from unit length.
 template <class CornerAt>
-void corner_depths(const Ray& ray, std::uint32_t count, CornerAt corner_at, double& nearest,
+void corner_depths(const RaySpace& space, std::uint32_t count, CornerAt corner_at, double& nearest,
                    double& farthest) {
-    const double scale = 1.0 / dot(ray.direction, ray.direction);
-    nearest = farthest = dot(corner_at(0) - ray.origin, ray.direction) * scale;
+    const Vec3& origin = space.ray().origin;
+    const Vec3& unit = space.unit_direction();
+    const double length = space.direction_length();
+    nearest = farthest = dot(corner_at(0) - origin, unit) / length;
     for (std::uint32_t k = 1; k < count; ++k) {
-        const double depth = dot(corner_at(k) - ray.origin, ray.direction) * scale;
+        const double depth = dot(corner_at(k) - origin, unit) / length;
         nearest = std::min(nearest, depth);
         farthest = std::max(farthest, depth);
     }
@@ -132,7 +135,7 @@ std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uin
     }
     double nearest = 0.0;
     double farthest = 0.0;
-    corner_depths(ray, count, corner_at, nearest, farthest);
+    corner_depths(space, count, corner_at, nearest, farthest);
     const double depth = std::isfinite(along) ? std::clamp(along, nearest, farthest) : nearest;
     if (!inside(depth, t)) {
         return std::nullopt;
@@ -157,7 +160,16 @@ RaySpace::RaySpace(const Ray& ray) : ray_(ray) {
     // |shear| <= 1 because d[kz] is the largest component.
     shear_x_ = d[kx_] / d[kz_];
     shear_y_ = d[ky_] / d[kz_];
-    grazing_limit_ = kGrazing * length(d);
+    // Scaled by the largest component first, so that the squares neither overflow (components
+    // beyond ~1e154) nor underflow (below ~1e-154); unscaled, the grazing limit became infinite or
+    // zero and the corner depths 0 or infinite, losing every hit of such a ray.
+    const double largest = std::max({ax, ay, az});
+    const Vec3 scaled{d.x / largest, d.y / largest, d.z / largest};
+    const double scaled_length = length(scaled);
+    direction_length_ = largest * scaled_length;
+    unit_direction_ = scaled / scaled_length;
+    grazing_limit_ = kGrazing * direction_length_;
+    valid_ = std::isfinite(direction_length_);  // a length beyond DBL_MAX measures no t
 }
 
 void RaySpace::project(const Vec3& corner, double& x, double& y) const {

@@ -21,13 +21,18 @@ class RaySpace {
 public:
     explicit RaySpace(const Ray& ray);
     const Ray& ray() const { return ray_; }
-    /// False for a zero, infinite or NaN direction, or a non-finite origin: every test misses.
+    /// False for a zero, infinite or NaN direction (or one whose length overflows), or a
+    /// non-finite origin: every test misses.
     bool valid() const { return valid_; }
     /// The corner's 2D position seen along the ray (the ray itself is at 0,0). The same arithmetic
     /// for every corner, so a corner shared by neighbouring polygons gets the same bits in each.
     void project(const Vec3& corner, double& x, double& y) const;
     /// |dot(unit normal, direction)| at or below which a polygon counts as seen edge-on.
     double grazing_limit() const { return grazing_limit_; }
+    /// The direction's length and the unit vector along it, computed without overflow or
+    /// underflow for any finite nonzero direction (t is measured in units of that length).
+    double direction_length() const { return direction_length_; }
+    const Vec3& unit_direction() const { return unit_direction_; }
 
 private:
     Ray ray_;
@@ -37,6 +42,8 @@ private:
     double shear_x_ = 0.0;
     double shear_y_ = 0.0;
     double grazing_limit_ = 0.0;
+    double direction_length_ = 0.0;
+    Vec3 unit_direction_;
     bool valid_ = false;
 };
 

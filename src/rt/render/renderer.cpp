@@ -171,6 +171,7 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
     }
     statistics.counters = statistics.by_kind.total();
     statistics.rows_done = job.rows_done;
+    statistics.threads = n;
     statistics.interrupted = job.stopping && !film.complete();
     return film;
 }

@@ -57,6 +57,7 @@ struct RenderStatistics {
     KindCounters by_kind;
     TraceCounters counters;  ///< all kinds together
     int rows_done = 0;
+    int threads = 0;  ///< worker threads the render used (settings.threads resolved)
     bool interrupted = false;
 };
 

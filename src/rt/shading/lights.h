@@ -13,8 +13,8 @@ namespace rt {
 
 struct PointLight {
     Vec3 position;
-    Rgb intensity;          ///< the emitter's colour times its emission weight, shared out
-    std::uint32_t polygon;  ///< the emissive polygon it belongs to
+    Rgb intensity;              ///< the emitter's colour times its emission weight, shared out
+    std::uint32_t polygon = 0;  ///< the emissive polygon it belongs to
 };
 
 /// Collects the point lights for the header's lghtick (0 gives none). Each emissive polygon is
