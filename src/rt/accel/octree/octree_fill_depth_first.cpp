@@ -1,0 +1,38 @@
+// The default fill: a node's polygons go to its children, and each child is finished (down to
+// its leaves) before the next is started. Nodes come out in depth-first order, which is the
+// layout both fills share.
+#include <array>
+#include <vector>
+
+#include "rt/accel/octree/octree_split.h"
+
+namespace rt {
+
+namespace {
+
+void fill(OctreeFill& fill_state, std::uint32_t index, const OctreeCell& cell,
+          const std::vector<std::uint32_t>& polygons) {
+    if (!fill_state.splits(cell.level, polygons.size())) {
+        fill_state.make_leaf(index, polygons);
+        return;
+    }
+    const std::uint32_t first = fill_state.allocate_children();
+    fill_state.tree().nodes[index] = {first, OctreeNode::kInterior};
+    std::array<std::vector<std::uint32_t>, 8> children;
+    fill_state.split(cell, polygons, children);
+    for (int c = 0; c < 8; ++c) {
+        fill(fill_state, first + c, cell.child(c), children[c]);
+    }
+}
+
+}  // namespace
+
+OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings) {
+    OctreeFill fill_state(scene, settings);
+    OctreeCell root;
+    root.size = std::int64_t{1} << settings.depth;
+    fill(fill_state, 0, root, fill_state.all_polygons());
+    return std::move(fill_state.tree());
+}
+
+}  // namespace rt
