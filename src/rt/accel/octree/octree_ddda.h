@@ -1,7 +1,7 @@
 // The DDDA (manual 1.3: "the ray is traced using an integer DDDA algorithm similar to the DDA
 // algorithm used in drawing lines"): the walk from leaf to leaf along the ray. The position is
 // kept as integer coordinates on the finest lattice (2^depth a side); the leaf holding it is
-// found by reading those coordinates' bits from the root down; the ray leaves that leaf through
+// found by reading those coordinates' bits (OctreeCursor); the ray leaves that leaf through
 // the nearest of its three far faces, whose lattice planes are integers too, so the next
 // position is an integer step across that face (the other two coordinates are read from where
 // the ray crosses it, kept within the face). Only the crossing t is floating point, and it is
@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -25,24 +26,57 @@ struct OctreeLeafAt {
     std::int64_t size = 1;
 };
 
-inline OctreeLeafAt find_leaf(const OctreeTree& tree, const std::int64_t at[3]) {
-    const OctreeNode* node = tree.nodes.data();
-    int level = 0;
-    while (!node->is_leaf()) {
-        const int shift = tree.depth - 1 - level;
-        const auto child = static_cast<std::uint32_t>(
-            ((at[0] >> shift) & 1) | (((at[1] >> shift) & 1) << 1) | (((at[2] >> shift) & 1) << 2));
-        node = tree.nodes.data() + node->first + child;
-        ++level;
+/// The path from the root to the leaf holding a lattice point. Moving to the next point climbs
+/// only as far as the lowest ancestor holding both points (the highest bit in which their
+/// coordinates differ says which) and descends from there, so a step between neighbouring leaves
+/// costs a level or two instead of a walk from the root.
+class OctreeCursor {
+public:
+    OctreeCursor(const OctreeTree& tree, const std::int64_t at[3]) : tree_(tree) {
+        path_[0] = tree.nodes.data();
+        for (int a = 0; a < 3; ++a) {
+            at_[a] = at[a];
+        }
+        descend();
     }
-    OctreeLeafAt leaf;
-    leaf.node = node;
-    leaf.size = std::int64_t{1} << (tree.depth - level);
-    for (int a = 0; a < 3; ++a) {
-        leaf.origin[a] = at[a] & ~(leaf.size - 1);
+
+    void move_to(const std::int64_t next[3]) {
+        std::uint64_t differ = 0;
+        for (int a = 0; a < 3; ++a) {
+            differ |= static_cast<std::uint64_t>(next[a] ^ at_[a]);
+            at_[a] = next[a];
+        }
+        level_ = std::min(level_, tree_.depth - static_cast<int>(std::bit_width(differ)));
+        descend();
     }
-    return leaf;
-}
+
+    OctreeLeafAt leaf() const {
+        OctreeLeafAt leaf;
+        leaf.node = path_[level_];
+        leaf.size = std::int64_t{1} << (tree_.depth - level_);
+        for (int a = 0; a < 3; ++a) {
+            leaf.origin[a] = at_[a] & ~(leaf.size - 1);
+        }
+        return leaf;
+    }
+
+private:
+    void descend() {
+        while (!path_[level_]->is_leaf()) {
+            const int shift = tree_.depth - 1 - level_;
+            const auto child = static_cast<std::uint32_t>(((at_[0] >> shift) & 1) |
+                                                          (((at_[1] >> shift) & 1) << 1) |
+                                                          (((at_[2] >> shift) & 1) << 2));
+            path_[level_ + 1] = tree_.nodes.data() + path_[level_]->first + child;
+            ++level_;
+        }
+    }
+
+    const OctreeTree& tree_;
+    const OctreeNode* path_[kMaxOctreeDepth + 1] = {};
+    int level_ = 0;
+    std::int64_t at_[3] = {0, 0, 0};
+};
 
 /// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest
 /// first, until visit returns true or the ray leaves the world or the interval.
@@ -67,8 +101,9 @@ void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& vis
         step[a] = ray.direction[a] > 0.0 ? 1 : (ray.direction[a] < 0.0 ? -1 : 0);
     }
     constexpr double kNever = std::numeric_limits<double>::infinity();
+    OctreeCursor cursor(tree, at);
     while (true) {
-        const OctreeLeafAt leaf = find_leaf(tree, at);
+        const OctreeLeafAt leaf = cursor.leaf();
         double t_face[3];
         for (int a = 0; a < 3; ++a) {
             const std::int64_t plane = leaf.origin[a] + (step[a] > 0 ? leaf.size : 0);
@@ -97,6 +132,7 @@ void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& vis
                 at[a] = lattice_cell(a, t_exit, leaf.origin[a], at[a]);
             }
         }
+        cursor.move_to(at);
     }
 }
 

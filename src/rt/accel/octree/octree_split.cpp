@@ -120,9 +120,25 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
             children[only].push_back(id);
             continue;
         }
+        // A child holding one of the corners certainly touches the polygon; only the others
+        // need the exact test (for a small polygon across one midplane, none does).
+        std::array<Box, 8> boxes;
+        int holds_corner = 0;
+        const Polygon& p = scene_.polygons[id];
+        for (int c = 0; c < 8; ++c) {
+            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
+                boxes[c] = cell_box(cell.child(c)).padded(fudge_);
+                for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+                    if (boxes[c].contains(scene_.corner_position(p, k))) {
+                        holds_corner |= 1 << c;
+                        break;
+                    }
+                }
+            }
+        }
         for (int c = 0; c < 8; ++c) {
             if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0 &&
-                polygon_overlaps_box(scene_, id, cell_box(cell.child(c)).padded(fudge_))) {
+                (((holds_corner >> c) & 1) != 0 || polygon_overlaps_box(scene_, id, boxes[c]))) {
                 children[c].push_back(id);
             }
         }

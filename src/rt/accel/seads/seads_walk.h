@@ -46,7 +46,7 @@ void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit
         const int axis = t_next[0] < t_next[1] ? (t_next[0] < t_next[2] ? 0 : 2)
                                                : (t_next[1] < t_next[2] ? 1 : 2);
         const double t_exit = t_next[axis];
-        if (visit(grid.voxel(grid.index(cell[0], cell[1], cell[2])), t_exit)) {
+        if (visit(grid.voxel_if_occupied(grid.index(cell[0], cell[1], cell[2])), t_exit)) {
             return;
         }
         if (!(t_exit < inside.max)) {
