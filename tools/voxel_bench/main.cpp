@@ -1,23 +1,24 @@
 // voxel_bench: build time, memory and single-thread rays per second of SEADS and the octree on
 // tessellated spheres of 1k to 1M triangles (the yardstick). Usage:
-//   build/bin/voxel_bench [max_triangles] [rays]
-// Rays start outside the sphere and aim at random points of its bounding square, like eye rays.
+//   build/bin/voxel_bench [max_triangles [rays [min_triangles]]]
+// Rays are eye rays through a square grid of pixels in raster order, as the renderer traces them.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
+#include <ctime>
 #include <vector>
 
 #include "rt/accel/make_accelerator.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
+// CPU time of this thread, not wall time: the machines we measure on are shared, and a thread
+// waiting for a core should not count against the method.
+double cpu_seconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
 // A sphere of about `triangles` triangles of even size: each face of a cube cut into an n x n
@@ -67,23 +68,32 @@ rt::Scene sphere(int triangles) {
 }
 
 void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_count) {
-    const auto build_start = Clock::now();
+    const double build_start = cpu_seconds();
     const auto accel = rt::make_accelerator(scene, settings);
-    const double build = seconds_since(build_start);
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> unit(-1.2, 1.2);
-    std::vector<rt::Ray> rays(ray_count);
-    for (rt::Ray& ray : rays) {
-        ray.origin = {0.3, 0.2, 4.0};
-        ray.direction = rt::Vec3{unit(rng), unit(rng), 0.0} - ray.origin;
+    const double build = cpu_seconds() - build_start;
+    // Eye rays in raster order, as the renderer traces them: a square grid of pixels whose
+    // rays sweep a square a little larger than the sphere.
+    const int side = std::max(1, static_cast<int>(std::sqrt(ray_count)));
+    std::vector<rt::Ray> rays;
+    rays.reserve(static_cast<std::size_t>(side) * side);
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            rt::Ray ray;
+            ray.origin = {0.3, 0.2, 4.0};
+            const rt::Vec3 target{-1.2 + 2.4 * (column + 0.5) / side,
+                                  -1.2 + 2.4 * (row + 0.5) / side, 0.0};
+            ray.direction = target - ray.origin;
+            rays.push_back(ray);
+        }
     }
+    ray_count = static_cast<int>(rays.size());
     rt::TraceCounters counters;
     std::size_t hits = 0;
-    const auto trace_start = Clock::now();
+    const double trace_start = cpu_seconds();
     for (const rt::Ray& ray : rays) {
         hits += accel->closest_hit(ray, {}, counters) ? 1 : 0;
     }
-    const double trace = seconds_since(trace_start);
+    const double trace = cpu_seconds() - trace_start;
     const auto n = static_cast<double>(scene.polygons.size());
     std::printf(
         "%-7s %8zu tris  param %3d  build %7.1f ms  %6.1f B/tri  %5.2f Mrays/s  "
@@ -100,7 +110,8 @@ void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_
 int main(int argc, char** argv) {
     const int max_triangles = argc > 1 ? std::atoi(argv[1]) : 1000000;
     const int ray_count = argc > 2 ? std::atoi(argv[2]) : 200000;
-    for (int triangles = 1000; triangles <= max_triangles; triangles *= 10) {
+    const int min_triangles = argc > 3 ? std::atoi(argv[3]) : 1000;
+    for (int triangles = min_triangles; triangles <= max_triangles; triangles *= 10) {
         const rt::Scene scene = sphere(triangles);
         rt::AccelSettings seads;
         seads.kind = rt::AccelKind::Seads;

@@ -19,14 +19,15 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
       tree_(settings.new_fillplane
                 ? build_octree_level_order(scene, octree_build_settings(settings))
                 : build_octree_depth_first(scene, octree_build_settings(settings))),
-      rules_(WalkRules::from(settings)) {}
+      rules_(WalkRules::from(settings)),
+      boxes_(scene, voxel_fudge(tree_.world, false)) {}
 
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     const RaySpace space(ray);
     if (!space.valid()) {
         return std::nullopt;
     }
-    NearestHitSearch search(scene_, space, t, counters);
+    NearestHitSearch search(scene_, boxes_, space, t, counters);
     NearHitRule rule(rules_);
     walk_octree(tree_, ray, t,
                 [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
@@ -41,7 +42,7 @@ bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const
     if (!space.valid()) {
         return false;
     }
-    AnyHitSearch search(scene_, space, t, counters);
+    AnyHitSearch search(scene_, boxes_, space, t, counters);
     bool hit = false;
     walk_octree(tree_, ray, t,
                 [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {

@@ -7,6 +7,7 @@
 #include "rt/accel/accelerator.h"
 #include "rt/accel/octree/octree_tree.h"
 #include "rt/accel/voxel/near_hit_rule.h"
+#include "rt/accel/voxel/polygon_boxes.h"
 
 namespace rt {
 
@@ -20,7 +21,9 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
-    std::size_t memory_bytes() const override { return tree_.memory_bytes(); }
+    std::size_t memory_bytes() const override {
+        return tree_.memory_bytes() + boxes_.memory_bytes();
+    }
 
     const OctreeTree& tree() const { return tree_; }
 
@@ -28,6 +31,7 @@ private:
     const Scene& scene_;
     OctreeTree tree_;
     WalkRules rules_;
+    PolygonBoxes boxes_;
 };
 
 OctreeBuildSettings octree_build_settings(const AccelSettings& settings);

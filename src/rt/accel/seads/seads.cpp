@@ -8,14 +8,15 @@ namespace rt {
 Seads::Seads(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
       grid_(build_seads_grid(scene, settings.seads_resolution, settings.no_fudge)),
-      rules_(WalkRules::from(settings)) {}
+      rules_(WalkRules::from(settings)),
+      boxes_(scene, voxel_fudge(grid_.world, false)) {}
 
 std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     const RaySpace space(ray);
     if (!space.valid()) {
         return std::nullopt;
     }
-    NearestHitSearch search(scene_, space, t, counters);
+    NearestHitSearch search(scene_, boxes_, space, t, counters);
     NearHitRule rule(rules_);
     walk_seads(grid_, ray, t, [&](std::span<const std::uint32_t> polygons, double t_exit) {
         search.test(polygons);
@@ -29,7 +30,7 @@ bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const 
     if (!space.valid()) {
         return false;
     }
-    AnyHitSearch search(scene_, space, t, counters);
+    AnyHitSearch search(scene_, boxes_, space, t, counters);
     bool hit = false;
     walk_seads(grid_, ray, t, [&](std::span<const std::uint32_t> polygons, double) {
         ++counters.voxels_stepped;

@@ -8,6 +8,7 @@
 #include "rt/accel/accelerator.h"
 #include "rt/accel/seads/seads_grid.h"
 #include "rt/accel/voxel/near_hit_rule.h"
+#include "rt/accel/voxel/polygon_boxes.h"
 
 namespace rt {
 
@@ -20,7 +21,9 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
-    std::size_t memory_bytes() const override { return grid_.memory_bytes(); }
+    std::size_t memory_bytes() const override {
+        return grid_.memory_bytes() + boxes_.memory_bytes();
+    }
 
     const SeadsGrid& grid() const { return grid_; }
 
@@ -28,6 +31,7 @@ private:
     const Scene& scene_;
     SeadsGrid grid_;
     WalkRules rules_;
+    PolygonBoxes boxes_;
 };
 
 std::unique_ptr<Accelerator> make_seads(const Scene& scene, const AccelSettings& settings);
