@@ -88,9 +88,13 @@ void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& vis
     }
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
+    // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
+    // far below the fudge, and a step costs less.
+    const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
+    const Vec3 per_step{1.0 / tree.step.x, 1.0 / tree.step.y, 1.0 / tree.step.z};
     auto lattice_cell = [&](int a, double at_t, std::int64_t low, std::int64_t high) {
         const double x = ray.origin[a] + at_t * ray.direction[a];
-        const double c = std::floor((x - tree.world.lo[a]) / tree.step[a]);
+        const double c = std::floor((x - tree.world.lo[a]) * per_step[a]);
         return static_cast<std::int64_t>(
             std::clamp(c, static_cast<double>(low), static_cast<double>(high)));
     };
@@ -108,7 +112,7 @@ void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& vis
         for (int a = 0; a < 3; ++a) {
             const std::int64_t plane = leaf.origin[a] + (step[a] > 0 ? leaf.size : 0);
             t_face[a] =
-                step[a] == 0 ? kNever : (tree.lattice(a, plane) - ray.origin[a]) / ray.direction[a];
+                step[a] == 0 ? kNever : (tree.lattice(a, plane) - ray.origin[a]) * inverse[a];
         }
         const int axis = t_face[0] < t_face[1] ? (t_face[0] < t_face[2] ? 0 : 2)
                                                : (t_face[1] < t_face[2] ? 1 : 2);
