@@ -47,5 +47,19 @@ TEST_F(GridRender, AnOctreeTooBigForTheOctlistIsAUsageError) {
     EXPECT_NE(r.err.find("-ol"), std::string::npos) << r.err;
 }
 
+TEST_F(GridRender, DebugSwitchesReportAndListTheOctree) {
+    const ProgramResult r =
+        run_program("rt", {"scenes/twocubes", "-n", "-ds", "-doo", "-od", "3"}, dir_.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("strike check (-ds): 0 of"), std::string::npos) << r.err;
+    const std::string listing = read_text(dir_.path() / "octree.lst");
+    EXPECT_EQ(listing.rfind("# octree: depth 3", 0), 0u) << listing.substr(0, 100);
+
+    const ProgramResult seads =
+        run_program("rt", {"twocubes", "-n", "-doo", "--accel", "seads"}, dir_.path() / "scenes");
+    EXPECT_EQ(seads.exit_code, 0) << seads.err;
+    EXPECT_NE(seads.err.find("no octree.lst written"), std::string::npos) << seads.err;
+}
+
 }  // namespace
 }  // namespace rt::test

@@ -6,6 +6,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/make_accelerator.h"
+#include "rt/app/accel_debugging.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
@@ -190,10 +191,14 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.window = render_window(scene, options);
     settings.threads = options.threads;
 
-    const std::unique_ptr<Accelerator> accel = build_accelerator(scene, options, console);
+    const DebuggedAccelerator accel =
+        add_accel_debugging(scene, build_accelerator(scene, options, console), options, console);
     ConsoleObserver observer(console, options.print_columns);
     RenderStatistics statistics;
-    Film film = render(scene, *accel, settings, observer, statistics);
+    Film film = render(scene, *accel.accel, settings, observer, statistics);
+    if (accel.strike != nullptr) {
+        console.note(accel.strike->summary());
+    }
     film.mapping = {options.display_multiplier, options.clip_intensity};
     film.provenance = {options.scene, join(options.given_switches),
                        std::string("rt ") + std::string(kVersion), utc_now()};

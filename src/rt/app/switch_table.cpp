@@ -29,7 +29,6 @@ constexpr Range whole(int low, int high) {
 constexpr std::string_view kSpatialEncoding = "spatial encoding (octrees and SEADS)";
 constexpr std::string_view kWireframe = "the wireframe display";
 constexpr std::string_view kAdaptive = "adaptive supersampling";
-constexpr std::string_view kStrike = "the ddda strike check";
 constexpr std::string_view kOctreeDebug = "octree debugging";
 
 // Each row names only the fields it needs; the rest keep SwitchSpec's defaults on purpose, which
@@ -343,25 +342,29 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-dc"},
     {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.debug_strike = true; },
      .summary = "(strike) debug ddda by comparing actual results (slow)",
-     .details = "Tests each polygon the slow way and compares with spatial encoding.",
-     .section = "App.", .example = "-ds", .status = NotYet, .feature = kStrike},
+     .details = "Traces every ray and shadow feeler again by brute force and counts the answers "
+                "that differ; the count is printed at the end.",
+     .section = "App.", .example = "-ds"},
     {.spelling = "-dsp", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_strike_print = true; },
      .summary = "(strike print) print hits different only in poly, but not oct",
-     .details = "Useful with -ds: traces the ddda for errorful intersections.", .section = "App.",
-     .example = "-dsp", .status = NotYet, .feature = kStrike},
+     .details = "Prints each difference the strike check finds (implies -ds).", .section = "App.",
+     .example = "-dsp"},
     {.spelling = "-dso", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_strike_oct = true; },
-     .summary = "(strike oct) print octs looked in", .details = "Unused in the original.",
-     .section = "App.", .example = "-dso", .status = NotYet, .feature = kStrike},
+     .summary = "(strike oct) print octs looked in",
+     .details = "With each difference, prints the voxels (octs) the walk looked in (implies "
+                "-ds).", .section = "App.", .example = "-dso"},
     {.spelling = "-dl", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_intersections = true; }, .summary = "print intersections",
-     .details = "Only intersections done the old way (no spatial encoding).", .section = "App.",
-     .example = "-dl", .status = NotYet, .feature = "printing intersections"},
+     .details = "Prints every nearest-hit query and its answer, whatever the method (the original "
+                "printed brute force's only).", .section = "App.",
+     .example = "-dl"},
     {.spelling = "-doo", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_octree_output = true; },
-     .summary = "Output the octree to octree.lst", .details = "A text file with polygon ids.",
-     .section = "App.", .example = "-doo", .status = NotYet, .feature = kOctreeDebug},
+     .summary = "Output the octree to octree.lst",
+     .details = "Writes octree.lst in the current folder: every node, depth first, with the "
+                "polygon ids of each leaf.", .section = "App.", .example = "-doo"},
     {.spelling = "-doi", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_octree_interactive = true; },
      .summary = "Debug octree interactively", .details = "Did not work in the original.",

@@ -3,6 +3,9 @@
 #include "rt/accel/octree/octree_ddda.h"
 #include "rt/accel/voxel/voxel_hit_search.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 namespace rt {
 
 OctreeBuildSettings octree_build_settings(const AccelSettings& settings) {
@@ -51,6 +54,20 @@ bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const
                     return hit;
                 });
     return hit;
+}
+
+std::string Octree::describe_walk(const Ray& ray, Interval t) const {
+    std::string lines;
+    walk_octree(
+        tree_, ray, t,
+        [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt& leaf) {
+            lines +=
+                fmt::format("  oct at lattice ({}, {}, {}) side {} leaves at t {}: polygons {}\n",
+                            leaf.origin[0], leaf.origin[1], leaf.origin[2], leaf.size, t_exit,
+                            fmt::join(polygons, " "));
+            return false;
+        });
+    return lines;
 }
 
 std::unique_ptr<Accelerator> make_octree(const Scene& scene, const AccelSettings& settings) {

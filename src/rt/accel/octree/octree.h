@@ -5,13 +5,14 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator.h"
+#include "rt/accel/debug/describe_walk.h"
 #include "rt/accel/octree/octree_tree.h"
 #include "rt/accel/voxel/near_hit_rule.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 
 namespace rt {
 
-class Octree : public Accelerator {
+class Octree : public Accelerator, public DescribesWalk {
 public:
     /// Keeps a reference to the scene, which must outlive it. Uses settings.octree_depth, -ol,
     /// -ss, -op, -of, -on and -tv; throws UsageError for a depth outside 0..20 or a tree that
@@ -24,6 +25,8 @@ public:
     std::size_t memory_bytes() const override {
         return tree_.memory_bytes() + boxes_.memory_bytes();
     }
+
+    std::string describe_walk(const Ray& ray, Interval t) const override;
 
     const OctreeTree& tree() const { return tree_; }
 

@@ -10,8 +10,9 @@
 
 namespace rt {
 
-/// Calls visit(polygons, t_exit) for each voxel the ray passes within the interval, nearest
-/// first, until visit returns true or the ray leaves the grid or the interval.
+/// Calls visit(polygons, t_exit, voxel) for each voxel (voxel: its x, y, z) the ray passes within
+/// the interval, nearest first, until visit returns true or the ray leaves the grid or the
+/// interval.
 template <class Visit>
 void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit) {
     Interval inside;
@@ -47,7 +48,8 @@ void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit
         const int axis = t_next[0] < t_next[1] ? (t_next[0] < t_next[2] ? 0 : 2)
                                                : (t_next[1] < t_next[2] ? 1 : 2);
         const double t_exit = t_next[axis];
-        if (visit(grid.voxel_if_occupied(grid.index(cell[0], cell[1], cell[2])), t_exit)) {
+        if (visit(grid.voxel_if_occupied(grid.index(cell[0], cell[1], cell[2])), t_exit,
+                  static_cast<const int*>(cell))) {
             return;
         }
         if (!(t_exit < inside.max)) {
