@@ -129,10 +129,11 @@ TEST(SwitchParser, AttachedOrSeparateArguments) {
 }
 
 TEST(SwitchParser, LongestSpellingWins) {
-    EXPECT_EQ(usage_error({"s", "-dsp"}),
-              "not implemented: -dsp: the ddda strike check is not implemented yet");
-    EXPECT_EQ(usage_error({"s", "-doo"}),
-              "not implemented: -doo: octree debugging is not implemented yet");
+    EXPECT_TRUE(parse_command_line({"s", "-dsp"}).debug_strike_print);
+    EXPECT_FALSE(parse_command_line({"s", "-dsp"}).debug_strike);
+    EXPECT_TRUE(parse_command_line({"s", "-doo"}).debug_octree_output);
+    EXPECT_EQ(usage_error({"s", "-doi"}),
+              "not implemented: -doi: octree debugging is not implemented yet");
     EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).specular,
               SpecularModel::TorranceSparrowGaussian);
     EXPECT_TRUE(parse_command_line({"s", "-Dp"}).dialect.no_power_fields);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rt/accel/brute_force.h"
+#include "rt/accel/octree/octree.h"
 #include "rt/accel/seads/seads.h"
 #include "rt/core/error.h"
 
@@ -43,6 +44,8 @@ std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSet
     switch (settings.kind) {
         case AccelKind::BruteForce:
             return make_brute_force(scene);
+        case AccelKind::Octree:
+            return make_octree(scene, settings);
         case AccelKind::Seads:
             return make_seads(scene, settings);
         default:

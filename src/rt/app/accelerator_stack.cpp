@@ -2,6 +2,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/make_accelerator.h"
+#include "rt/app/accel_debugging.h"
 #include "rt/core/error.h"
 #include "rt/core/text.h"
 
@@ -66,7 +67,11 @@ std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options
 
 AcceleratorStack::AcceleratorStack(const Scene& scene, const Options& options,
                                    const RunConsole& console) {
-    base_ = build_accelerator(scene, options, console);
+    // -doo, -ds, -dsp, -dso and -dl look at the method itself, inside exit culling.
+    DebuggedAccelerator debugged =
+        add_accel_debugging(scene, build_accelerator(scene, options, console), options, console);
+    base_ = std::move(debugged.accel);
+    strike_ = debugged.strike;
     if (!options.disable_exit_culling) {
         ExitCullingSettings culling;
         culling.check_culled = options.debug_exit_culling;

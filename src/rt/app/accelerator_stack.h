@@ -8,6 +8,7 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator.h"
+#include "rt/accel/debug/strike_check.h"
 #include "rt/accel/exit_culling/exit_culling.h"
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
 #include "rt/app/options.h"
@@ -27,9 +28,12 @@ public:
     const Accelerator& top() const { return *top_; }
     /// What -p (and -de) print about the layers above the method.
     std::vector<std::string> report_lines() const;
+    /// -ds: what the strike check found, when it ran.
+    const StrikeCheck* strike_check() const { return strike_; }
 
 private:
     std::unique_ptr<Accelerator> base_;  ///< the method, or exit culling around it
+    const StrikeCheck* strike_ = nullptr;
     const ExitCulling* culling_ = nullptr;
     std::unique_ptr<ZBufferFirstHits> zbuffer_;
     const Accelerator* top_ = nullptr;

@@ -299,6 +299,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     phase = Clock::now();
     Film film = render(scene, *accel, settings, observer, statistics);
     times.trace_seconds = seconds_since(phase);
+    if (stack.strike_check() != nullptr) {
+        console.note(stack.strike_check()->summary());
+    }
     film.mapping = {options.display_multiplier, options.clip_intensity};
     film.provenance = {options.scene, join(options.given_switches),
                        std::string("rt ") + std::string(kVersion), utc_now()};

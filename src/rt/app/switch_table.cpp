@@ -29,7 +29,6 @@ constexpr Range whole(int low, int high) {
 constexpr std::string_view kSpatialEncoding = "spatial encoding (octrees and SEADS)";
 constexpr std::string_view kWireframe = "the wireframe display";
 constexpr std::string_view kAdaptive = "adaptive supersampling";
-constexpr std::string_view kStrike = "the ddda strike check";
 constexpr std::string_view kOctreeDebug = "octree debugging";
 
 // Each row names only the fields it needs; the rest keep SwitchSpec's defaults on purpose, which
@@ -56,9 +55,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .first = {"N", whole(1, 1000000)},
      .apply = [](Options& o, A a) { o.terminate_after_voxels = static_cast<int>(a.integer); },
      .summary = "Terminate rays after N fruitless voxel hits",
-     .details = "Mainly useful to the hardware designers, and for large octree spatial "
-                "subdivisions.", .section = "3.1", .example = "-tv8", .status = NotYet,
-     .feature = kSpatialEncoding},
+     .details = "Ends a ray as a miss after N voxels without any hit (a near hit waiting for its "
+                "voxel keeps it going): faster, and a different picture by design.",
+     .section = "3.1", .example = "-tv8"},
     {.spelling = "-c", .apply = [](Options& o, A) { o.clip_intensity = false; },
      .summary = "Toggle intensity clipping. Currently on by default.",
      .details = "Turns clipping off: an intensity over 255 is displayed anyway, which can give "
@@ -68,7 +67,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A a) { o.octree_depth = static_cast<int>(a.integer); },
      .summary = "Specify octree depth (overrides scene file)",
      .details = "For studying the effects of different octree depths.", .section = "App.",
-     .example = "-od5", .status = NotYet, .feature = kSpatialEncoding},
+     .example = "-od5"},
     {.spelling = "-oo", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.draw_octree = true; },
      .summary = "Draw (output) octree boxes on the wireframe",
@@ -78,29 +77,34 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .first = {"the power of 2", whole(1, 30)},
      .apply = [](Options& o, A a) { o.octlist_power = static_cast<int>(a.integer); },
      .summary = "Specify the length of the octlist, as a power of 2",
-     .details = "A larger octree storage area for large depths, or a smaller one where allocation "
-                "is expensive.", .section = "App.", .example = "-ol16", .status = NotYet,
-     .feature = kSpatialEncoding},
+     .details = "The octree may use at most 2^n nodes (default 2^24, 8 bytes each); a tree that "
+                "needs more stops with an error naming -ol.",
+     .section = "App.", .example = "-ol16"},
     {.spelling = "-on", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.accept_near_hits = true; },
      .summary = "Don't verify near hits (just accept them)",
-     .details = "By default near hits are ignored; see part three.", .section = "3.1",
-     .example = "-on", .status = NotYet, .feature = kSpatialEncoding},
+     .details = "Accepts a hit lying beyond the voxel being searched at once. By default it waits "
+                "for its voxel, which gives exactly brute force's answer; -on can miss a nearer "
+                "polygon in a later voxel.", .section = "3.1",
+     .example = "-on"},
     {.spelling = "-of", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.no_fudge = true; },
      .summary = "Don't fudge (ddda is precise enough)",
-     .details = "This should be calculated automatically, but isn't.", .section = "App.",
-     .example = "-of", .status = NotYet, .feature = kSpatialEncoding},
+     .details = "Files polygons in voxels without the fudge (voxels grown by 2^-24 of the world); "
+                "answers may then differ from brute force at voxel faces.", .section = "App.",
+     .example = "-of"},
     {.spelling = "-op", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.new_fillplane = true; },
      .summary = "Use new fillplane routines.",
-     .details = "Octree building in order n^2 instead of n^3 (n is octree levels).",
-     .section = "App.", .example = "-op", .status = NotYet, .feature = kSpatialEncoding},
+     .details = "Fills the octree one level at a time (breadth first) instead of depth first; the "
+                "tree is the same.",
+     .section = "App.", .example = "-op"},
     {.spelling = "-ss", .form = Integer, .topic = SpatialEncoding,
      .first = {"the power of 2", whole(0, 30)},
      .apply = [](Options& o, A a) { o.seed_size_power = static_cast<int>(a.integer); },
      .summary = "Specify the seeds size as a power of 2",
-     .details = "The scene file specifies this as the actual number.", .section = "App.",
-     .example = "-ss10", .status = NotYet, .feature = kSpatialEncoding},
+     .details = "The octree's node pool starts at 2^n nodes (default 2^12) and doubles as "
+                "needed up to the -ol limit; the tree is the same.", .section = "App.",
+     .example = "-ss10"},
     {.spelling = "-p", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.profile = true; },
      .summary = "Profile ddda operation.",
      .details = "Prints, at the end of the run on standard output, per kind of ray (eye, reflected, "
@@ -346,25 +350,29 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-dc"},
     {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.debug_strike = true; },
      .summary = "(strike) debug ddda by comparing actual results (slow)",
-     .details = "Tests each polygon the slow way and compares with spatial encoding.",
-     .section = "App.", .example = "-ds", .status = NotYet, .feature = kStrike},
+     .details = "Traces every ray and shadow feeler again by brute force and counts the answers "
+                "that differ; the count is printed at the end.",
+     .section = "App.", .example = "-ds"},
     {.spelling = "-dsp", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_strike_print = true; },
      .summary = "(strike print) print hits different only in poly, but not oct",
-     .details = "Useful with -ds: traces the ddda for errorful intersections.", .section = "App.",
-     .example = "-dsp", .status = NotYet, .feature = kStrike},
+     .details = "Prints each difference the strike check finds (implies -ds).", .section = "App.",
+     .example = "-dsp"},
     {.spelling = "-dso", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_strike_oct = true; },
-     .summary = "(strike oct) print octs looked in", .details = "Unused in the original.",
-     .section = "App.", .example = "-dso", .status = NotYet, .feature = kStrike},
+     .summary = "(strike oct) print octs looked in",
+     .details = "With each difference, prints the voxels (octs) the walk looked in (implies "
+                "-ds).", .section = "App.", .example = "-dso"},
     {.spelling = "-dl", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_intersections = true; }, .summary = "print intersections",
-     .details = "Only intersections done the old way (no spatial encoding).", .section = "App.",
-     .example = "-dl", .status = NotYet, .feature = "printing intersections"},
+     .details = "Prints every nearest-hit query and its answer, whatever the method (the original "
+                "printed brute force's only).", .section = "App.",
+     .example = "-dl"},
     {.spelling = "-doo", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_octree_output = true; },
-     .summary = "Output the octree to octree.lst", .details = "A text file with polygon ids.",
-     .section = "App.", .example = "-doo", .status = NotYet, .feature = kOctreeDebug},
+     .summary = "Output the octree to octree.lst",
+     .details = "Writes octree.lst in the current folder: every node, depth first, with the "
+                "polygon ids of each leaf.", .section = "App.", .example = "-doo"},
     {.spelling = "-doi", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_octree_interactive = true; },
      .summary = "Debug octree interactively", .details = "Did not work in the original.",

@@ -6,12 +6,14 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator.h"
+#include "rt/accel/debug/describe_walk.h"
 #include "rt/accel/seads/seads_grid.h"
 #include "rt/accel/voxel/near_hit_rule.h"
+#include "rt/accel/voxel/polygon_boxes.h"
 
 namespace rt {
 
-class Seads : public Accelerator {
+class Seads : public Accelerator, public DescribesWalk {
 public:
     /// Keeps a reference to the scene, which must outlive it. Uses settings.seads_resolution
     /// voxels a side, -of, -on and -tv.
@@ -20,7 +22,11 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
-    std::size_t memory_bytes() const override { return grid_.memory_bytes(); }
+    std::size_t memory_bytes() const override {
+        return grid_.memory_bytes() + boxes_.memory_bytes();
+    }
+
+    std::string describe_walk(const Ray& ray, Interval t) const override;
 
     const SeadsGrid& grid() const { return grid_; }
 
@@ -28,6 +34,7 @@ private:
     const Scene& scene_;
     SeadsGrid grid_;
     WalkRules rules_;
+    PolygonBoxes boxes_;
 };
 
 std::unique_ptr<Accelerator> make_seads(const Scene& scene, const AccelSettings& settings);

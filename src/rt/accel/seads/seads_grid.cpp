@@ -37,6 +37,16 @@ std::pair<int, int> voxel_range(const SeadsGrid& grid, int axis, double lo, doub
     return {cell(lo), cell(hi)};
 }
 
+bool holds_a_corner(const Scene& scene, std::uint32_t id, const Box& box) {
+    const Polygon& p = scene.polygons[id];
+    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+        if (box.contains(scene.corner_position(p, k))) {
+            return true;
+        }
+    }
+    return false;
+}
+
 using VoxelAndPolygon = std::pair<std::uint32_t, std::uint32_t>;
 
 void file_polygon(const Scene& scene, const SeadsGrid& grid, double fudge, std::uint32_t id,
@@ -53,7 +63,10 @@ void file_polygon(const Scene& scene, const SeadsGrid& grid, double fudge, std::
     for (int z = z0; z <= z1; ++z) {
         for (int y = y0; y <= y1; ++y) {
             for (int x = x0; x <= x1; ++x) {
-                if (polygon_overlaps_box(scene, id, grid.voxel_box(x, y, z).padded(fudge))) {
+                // A voxel holding one of the corners certainly touches the polygon; only the
+                // others need the exact test.
+                const Box box = grid.voxel_box(x, y, z).padded(fudge);
+                if (holds_a_corner(scene, id, box) || polygon_overlaps_box(scene, id, box)) {
                     out.emplace_back(static_cast<std::uint32_t>(grid.index(x, y, z)), id);
                 }
             }
@@ -105,6 +118,10 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     grid.polygons.resize(pairs.size());
     for (auto it = pairs.rbegin(); it != pairs.rend(); ++it) {
         grid.polygons[--grid.offsets[it->first]] = it->second;
+    }
+    grid.occupied.assign((voxels + 63) / 64, 0);
+    for (const auto& [voxel, id] : pairs) {
+        grid.occupied[voxel >> 6] |= std::uint64_t{1} << (voxel & 63);
     }
     return grid;
 }

@@ -20,6 +20,9 @@ struct SeadsGrid {
     Vec3 voxel_size;                      ///< world extent / side, per axis
     std::vector<std::uint32_t> offsets;   ///< side^3 + 1: voxel v holds [offsets[v], offsets[v+1])
     std::vector<std::uint32_t> polygons;  ///< the voxels' polygon ids, voxel after voxel
+    /// One bit per voxel, set if it holds any polygon: 1/32 of the offset table, so the walk
+    /// through empty space (most of it, around a surface) stays in cache.
+    std::vector<std::uint64_t> occupied;
 
     std::size_t index(int x, int y, int z) const {
         return (static_cast<std::size_t>(z) * side + y) * side + x;
@@ -27,11 +30,19 @@ struct SeadsGrid {
     std::span<const std::uint32_t> voxel(std::size_t v) const {
         return {polygons.data() + offsets[v], polygons.data() + offsets[v + 1]};
     }
+    /// The voxel's polygons, reading the offset table only for an occupied voxel.
+    std::span<const std::uint32_t> voxel_if_occupied(std::size_t v) const {
+        if (((occupied[v >> 6] >> (v & 63)) & 1) == 0) {
+            return {};
+        }
+        return voxel(v);
+    }
     /// Box of voxel (x, y, z), unpadded.
     Box voxel_box(int x, int y, int z) const;
     std::size_t memory_bytes() const {
         return offsets.capacity() * sizeof(std::uint32_t) +
-               polygons.capacity() * sizeof(std::uint32_t);
+               polygons.capacity() * sizeof(std::uint32_t) +
+               occupied.capacity() * sizeof(std::uint64_t);
     }
 };
 

@@ -18,11 +18,6 @@ double Box::largest_extent() const {
     return std::max({e.x, e.y, e.z});
 }
 
-Box Box::padded(double pad) const {
-    const Vec3 p{pad, pad, pad};
-    return {lo - p, hi + p};
-}
-
 double voxel_fudge(const Box& world, bool no_fudge) {
     return no_fudge ? 0.0 : world.largest_extent() * 0x1p-24;
 }

@@ -15,7 +15,11 @@ struct Box {
     Vec3 extent() const { return hi - lo; }
     double largest_extent() const;
     /// The box grown by `pad` on every side.
-    Box padded(double pad) const;
+    Box padded(double pad) const { return {lo - Vec3{pad, pad, pad}, hi + Vec3{pad, pad, pad}}; }
+    bool contains(const Vec3& p) const {
+        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z &&
+               p.z <= hi.z;
+    }
 };
 
 /// The box the voxel methods subdivide: the scene's bounds grown by a small margin (so that no

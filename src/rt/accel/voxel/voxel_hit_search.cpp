@@ -6,7 +6,7 @@ namespace rt {
 
 void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
     for (const std::uint32_t id : polygons) {
-        if (tested_.seen(id)) {
+        if (tested_.seen(id) || !boxes_.line_may_meet(line_, id)) {
             continue;
         }
         ++counters_.polygon_tests;
@@ -26,7 +26,7 @@ void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
 
 bool AnyHitSearch::test(std::span<const std::uint32_t> polygons) {
     for (const std::uint32_t id : polygons) {
-        if (tested_.seen(id)) {
+        if (tested_.seen(id) || !boxes_.line_may_meet(line_, id)) {
             continue;
         }
         ++counters_.polygon_tests;

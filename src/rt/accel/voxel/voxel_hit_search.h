@@ -10,6 +10,7 @@
 #include <span>
 
 #include "rt/accel/accelerator.h"
+#include "rt/accel/voxel/polygon_boxes.h"
 #include "rt/geometry/ray_polygon.h"
 
 namespace rt {
@@ -40,14 +41,22 @@ private:
 /// interval, equal t to the lowest id (the same rule as brute force, so the same answer).
 class NearestHitSearch {
 public:
-    NearestHitSearch(const Scene& scene, const RaySpace& space, Interval t, TraceCounters& counters)
-        : scene_(scene), space_(space), t_(t), counters_(counters) {}
+    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
+                     Interval t, TraceCounters& counters)
+        : scene_(scene),
+          boxes_(boxes),
+          line_(space.ray()),
+          space_(space),
+          t_(t),
+          counters_(counters) {}
 
     void test(std::span<const std::uint32_t> polygons);
     const std::optional<Hit>& nearest() const { return nearest_; }
 
 private:
     const Scene& scene_;
+    const PolygonBoxes& boxes_;
+    LineProbe line_;
     const RaySpace& space_;
     Interval t_;
     TraceCounters& counters_;
@@ -58,14 +67,22 @@ private:
 /// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).
 class AnyHitSearch {
 public:
-    AnyHitSearch(const Scene& scene, const RaySpace& space, Interval t, TraceCounters& counters)
-        : scene_(scene), space_(space), t_(t), counters_(counters) {}
+    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space, Interval t,
+                 TraceCounters& counters)
+        : scene_(scene),
+          boxes_(boxes),
+          line_(space.ray()),
+          space_(space),
+          t_(t),
+          counters_(counters) {}
 
     /// True as soon as one of them is hit.
     bool test(std::span<const std::uint32_t> polygons);
 
 private:
     const Scene& scene_;
+    const PolygonBoxes& boxes_;
+    LineProbe line_;
     const RaySpace& space_;
     Interval t_;
     TraceCounters& counters_;

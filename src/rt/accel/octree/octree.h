@@ -1,0 +1,43 @@
+// The octree intersection method (manual 1.3 and part three; scene header "1 depth").
+#pragma once
+
+#include <memory>
+
+#include "rt/accel/accel_settings.h"
+#include "rt/accel/accelerator.h"
+#include "rt/accel/debug/describe_walk.h"
+#include "rt/accel/octree/octree_tree.h"
+#include "rt/accel/voxel/near_hit_rule.h"
+#include "rt/accel/voxel/polygon_boxes.h"
+
+namespace rt {
+
+class Octree : public Accelerator, public DescribesWalk {
+public:
+    /// Keeps a reference to the scene, which must outlive it. Uses settings.octree_depth, -ol,
+    /// -ss, -op, -of, -on and -tv; throws UsageError for a depth outside 0..20 or a tree that
+    /// does not fit in 2^ol nodes.
+    Octree(const Scene& scene, const AccelSettings& settings);
+    std::string_view name() const override { return "octree"; }
+    std::optional<Hit> closest_hit(const Ray& ray, Interval t,
+                                   TraceCounters& counters) const override;
+    bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    std::size_t memory_bytes() const override {
+        return tree_.memory_bytes() + boxes_.memory_bytes();
+    }
+
+    std::string describe_walk(const Ray& ray, Interval t) const override;
+
+    const OctreeTree& tree() const { return tree_; }
+
+private:
+    const Scene& scene_;
+    OctreeTree tree_;
+    WalkRules rules_;
+    PolygonBoxes boxes_;
+};
+
+OctreeBuildSettings octree_build_settings(const AccelSettings& settings);
+std::unique_ptr<Accelerator> make_octree(const Scene& scene, const AccelSettings& settings);
+
+}  // namespace rt

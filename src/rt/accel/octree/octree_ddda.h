@@ -1,0 +1,143 @@
+// The DDDA (manual 1.3: "the ray is traced using an integer DDDA algorithm similar to the DDA
+// algorithm used in drawing lines"): the walk from leaf to leaf along the ray. The position is
+// kept as integer coordinates on the finest lattice (2^depth a side); the leaf holding it is
+// found by reading those coordinates' bits (OctreeCursor); the ray leaves that leaf through
+// the nearest of its three far faces, whose lattice planes are integers too, so the next
+// position is an integer step across that face (the other two coordinates are read from where
+// the ray crosses it, kept within the face). Only the crossing t is floating point, and it is
+// computed afresh from the lattice each time, so no error builds up along a long walk.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+#include "rt/accel/octree/octree_tree.h"
+
+namespace rt {
+
+/// The leaf containing lattice point `at`, with its lowest lattice corner and side.
+struct OctreeLeafAt {
+    const OctreeNode* node = nullptr;
+    std::int64_t origin[3] = {0, 0, 0};
+    std::int64_t size = 1;
+};
+
+/// The path from the root to the leaf holding a lattice point. Moving to the next point climbs
+/// only as far as the lowest ancestor holding both points (the highest bit in which their
+/// coordinates differ says which) and descends from there, so a step between neighbouring leaves
+/// costs a level or two instead of a walk from the root.
+class OctreeCursor {
+public:
+    OctreeCursor(const OctreeTree& tree, const std::int64_t at[3]) : tree_(tree) {
+        path_[0] = tree.nodes.data();
+        for (int a = 0; a < 3; ++a) {
+            at_[a] = at[a];
+        }
+        descend();
+    }
+
+    void move_to(const std::int64_t next[3]) {
+        std::uint64_t differ = 0;
+        for (int a = 0; a < 3; ++a) {
+            differ |= static_cast<std::uint64_t>(next[a] ^ at_[a]);
+            at_[a] = next[a];
+        }
+        level_ = std::min(level_, tree_.depth - static_cast<int>(std::bit_width(differ)));
+        descend();
+    }
+
+    OctreeLeafAt leaf() const {
+        OctreeLeafAt leaf;
+        leaf.node = path_[level_];
+        leaf.size = std::int64_t{1} << (tree_.depth - level_);
+        for (int a = 0; a < 3; ++a) {
+            leaf.origin[a] = at_[a] & ~(leaf.size - 1);
+        }
+        return leaf;
+    }
+
+private:
+    void descend() {
+        while (!path_[level_]->is_leaf()) {
+            const int shift = tree_.depth - 1 - level_;
+            const auto child = static_cast<std::uint32_t>(((at_[0] >> shift) & 1) |
+                                                          (((at_[1] >> shift) & 1) << 1) |
+                                                          (((at_[2] >> shift) & 1) << 2));
+            path_[level_ + 1] = tree_.nodes.data() + path_[level_]->first + child;
+            ++level_;
+        }
+    }
+
+    const OctreeTree& tree_;
+    const OctreeNode* path_[kMaxOctreeDepth + 1] = {};
+    int level_ = 0;
+    std::int64_t at_[3] = {0, 0, 0};
+};
+
+/// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest
+/// first, until visit returns true or the ray leaves the world or the interval.
+template <class Visit>
+void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& visit) {
+    Interval inside;
+    if (!clip_to_box(ray, tree.world, t, inside)) {
+        return;
+    }
+    const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
+    // The lattice cell holding the point at t, clamped to [low, high] on each axis.
+    // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
+    // far below the fudge, and a step costs less.
+    const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
+    const Vec3 per_step{1.0 / tree.step.x, 1.0 / tree.step.y, 1.0 / tree.step.z};
+    auto lattice_cell = [&](int a, double at_t, std::int64_t low, std::int64_t high) {
+        const double x = ray.origin[a] + at_t * ray.direction[a];
+        const double c = std::floor((x - tree.world.lo[a]) * per_step[a]);
+        return static_cast<std::int64_t>(
+            std::clamp(c, static_cast<double>(low), static_cast<double>(high)));
+    };
+    std::int64_t at[3];
+    int step[3];
+    for (int a = 0; a < 3; ++a) {
+        at[a] = lattice_cell(a, inside.min, 0, last);
+        step[a] = ray.direction[a] > 0.0 ? 1 : (ray.direction[a] < 0.0 ? -1 : 0);
+    }
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    OctreeCursor cursor(tree, at);
+    while (true) {
+        const OctreeLeafAt leaf = cursor.leaf();
+        double t_face[3];
+        for (int a = 0; a < 3; ++a) {
+            const std::int64_t plane = leaf.origin[a] + (step[a] > 0 ? leaf.size : 0);
+            t_face[a] =
+                step[a] == 0 ? kNever : (tree.lattice(a, plane) - ray.origin[a]) * inverse[a];
+        }
+        const int axis = t_face[0] < t_face[1] ? (t_face[0] < t_face[2] ? 0 : 2)
+                                               : (t_face[1] < t_face[2] ? 1 : 2);
+        const double t_exit = t_face[axis];
+        if (visit(tree.leaf_polygons(*leaf.node), t_exit, leaf)) {
+            return;
+        }
+        if (!(t_exit < inside.max)) {
+            return;
+        }
+        at[axis] = step[axis] > 0 ? leaf.origin[axis] + leaf.size : leaf.origin[axis] - 1;
+        if (at[axis] < 0 || at[axis] > last) {
+            return;
+        }
+        // Within the face, and never back against the ray's direction: every coordinate then
+        // only moves forward, so the walk cannot revisit a leaf whatever the rounding.
+        for (int a = 0; a < 3; ++a) {
+            if (a != axis && step[a] > 0) {
+                at[a] = lattice_cell(a, t_exit, at[a], leaf.origin[a] + leaf.size - 1);
+            } else if (a != axis && step[a] < 0) {
+                at[a] = lattice_cell(a, t_exit, leaf.origin[a], at[a]);
+            }
+        }
+        cursor.move_to(at);
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,148 @@
+#include "rt/accel/octree/octree_split.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "rt/accel/voxel/polygon_box_overlap.h"
+#include "rt/core/error.h"
+
+namespace rt {
+
+namespace {
+
+std::uint64_t pool_limit(int power) {
+    return std::uint64_t{1} << power;
+}
+
+}  // namespace
+
+OctreeCell OctreeCell::child(int c) const {
+    OctreeCell out;
+    out.size = size / 2;
+    out.level = level + 1;
+    for (int a = 0; a < 3; ++a) {
+        out.origin[a] = origin[a] + (((c >> a) & 1) != 0 ? out.size : 0);
+    }
+    return out;
+}
+
+OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) : scene_(scene) {
+    if (settings.depth < 0 || settings.depth > kMaxOctreeDepth) {
+        throw UsageError("octree depth " + std::to_string(settings.depth) + ": expected 0 to " +
+                         std::to_string(kMaxOctreeDepth));
+    }
+    octlist_power_ = settings.octlist_power.value_or(kDefaultOctlistPower);
+    if (octlist_power_ < 0 || octlist_power_ > 31) {
+        throw UsageError("-ol " + std::to_string(octlist_power_) + ": expected 0 to 31");
+    }
+    max_nodes_ = pool_limit(octlist_power_);
+    const int seed =
+        std::clamp(settings.seed_size_power.value_or(kDefaultSeedSizePower), 0, octlist_power_);
+    tree_.depth = settings.depth;
+    tree_.world = world_box(scene, true);
+    tree_.step = tree_.world.extent() * (1.0 / static_cast<double>(std::int64_t{1} << tree_.depth));
+    // -ss: the pool's first allocation; it then doubles as needed, up to the -ol limit.
+    tree_.nodes.reserve(pool_limit(seed));
+    tree_.nodes.emplace_back();
+    fudge_ = voxel_fudge(tree_.world, settings.no_fudge);
+    bounds_.reserve(scene.polygons.size());
+    for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
+        bounds_.push_back(polygon_bounds(scene, id));
+    }
+}
+
+std::vector<std::uint32_t> OctreeFill::all_polygons() const {
+    std::vector<std::uint32_t> ids(scene_.polygons.size());
+    std::iota(ids.begin(), ids.end(), 0u);
+    return ids;
+}
+
+std::uint32_t OctreeFill::allocate_children() {
+    if (tree_.nodes.size() + 8 > max_nodes_) {
+        throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
+                         " needs more than 2^" + std::to_string(octlist_power_) + " = " +
+                         std::to_string(max_nodes_) + " nodes: raise -ol (now " +
+                         std::to_string(octlist_power_) + ") or lower the depth (-od)");
+    }
+    const auto first = static_cast<std::uint32_t>(tree_.nodes.size());
+    tree_.nodes.resize(tree_.nodes.size() + 8);
+    return first;
+}
+
+void OctreeFill::make_leaf(std::uint32_t index, const std::vector<std::uint32_t>& polygons) {
+    if (tree_.polygons.size() + polygons.size() >= OctreeNode::kInterior) {
+        throw UsageError("the octree holds more than 2^32 polygon references: lower the depth");
+    }
+    tree_.nodes[index] = {static_cast<std::uint32_t>(tree_.polygons.size()),
+                          static_cast<std::uint32_t>(polygons.size())};
+    tree_.polygons.insert(tree_.polygons.end(), polygons.begin(), polygons.end());
+}
+
+Box OctreeFill::cell_box(const OctreeCell& cell) const {
+    Box box;
+    for (int a = 0; a < 3; ++a) {
+        box.lo[a] = tree_.lattice(a, cell.origin[a]);
+        box.hi[a] = tree_.lattice(a, cell.origin[a] + cell.size);
+    }
+    return box;
+}
+
+void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>& polygons,
+                       std::array<std::vector<std::uint32_t>, 8>& children) const {
+    for (auto& child : children) {
+        child.clear();
+    }
+    double middle[3];
+    for (int a = 0; a < 3; ++a) {
+        middle[a] = tree_.lattice(a, cell.origin[a] + cell.size / 2);
+    }
+    for (const std::uint32_t id : polygons) {
+        // Which halves along each axis the polygon's box reaches (the node's own box it reaches
+        // already); a polygon within one child needs no exact test.
+        const Box& b = bounds_[id];
+        int lower = 0;
+        int upper = 0;
+        for (int a = 0; a < 3; ++a) {
+            lower |= (b.lo[a] <= middle[a] + fudge_ ? 1 : 0) << a;
+            upper |= (b.hi[a] >= middle[a] - fudge_ ? 1 : 0) << a;
+        }
+        int candidates = 0;
+        int only = 0;
+        for (int c = 0; c < 8; ++c) {
+            // Child c takes the upper half on the axes of its set bits, the lower on the others.
+            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
+                ++candidates;
+                only = c;
+            }
+        }
+        if (candidates == 1) {
+            children[only].push_back(id);
+            continue;
+        }
+        // A child holding one of the corners certainly touches the polygon; only the others
+        // need the exact test (for a small polygon across one midplane, none does).
+        std::array<Box, 8> boxes;
+        int holds_corner = 0;
+        const Polygon& p = scene_.polygons[id];
+        for (int c = 0; c < 8; ++c) {
+            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
+                boxes[c] = cell_box(cell.child(c)).padded(fudge_);
+                for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+                    if (boxes[c].contains(scene_.corner_position(p, k))) {
+                        holds_corner |= 1 << c;
+                        break;
+                    }
+                }
+            }
+        }
+        for (int c = 0; c < 8; ++c) {
+            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0 &&
+                (((holds_corner >> c) & 1) != 0 || polygon_overlaps_box(scene_, id, boxes[c]))) {
+                children[c].push_back(id);
+            }
+        }
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,55 @@
+// What both octree fills share: the checks on the settings, the node pool with its -ol limit, and
+// the step that hands a node's polygons to the children they touch.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "rt/accel/octree/octree_tree.h"
+
+namespace rt {
+
+/// A node on the lattice: its lowest corner and side in finest steps, and its level.
+struct OctreeCell {
+    std::array<std::int64_t, 3> origin{};
+    std::int64_t size = 1;
+    int level = 0;
+
+    OctreeCell child(int c) const;
+};
+
+/// Everything a fill needs besides the recursion itself.
+class OctreeFill {
+public:
+    /// Checks the depth and -ol, sets up the world box; throws UsageError for bad settings.
+    OctreeFill(const Scene& scene, const OctreeBuildSettings& settings);
+
+    OctreeTree& tree() { return tree_; }
+    /// Every polygon's id (the root's contents).
+    std::vector<std::uint32_t> all_polygons() const;
+    /// Whether a node of this level holding `count` polygons is split.
+    bool splits(int level, std::size_t count) const {
+        return count > kMaxLeafPolygons && level < tree_.depth;
+    }
+    /// Appends 8 children, each a leaf for now; returns the first's index. Throws UsageError
+    /// naming -ol when the pool is full.
+    std::uint32_t allocate_children();
+    /// Turns node `index` into a leaf holding these polygons.
+    void make_leaf(std::uint32_t index, const std::vector<std::uint32_t>& polygons);
+    /// Sends each of the node's polygons to every child it touches (each grown by the fudge).
+    void split(const OctreeCell& cell, const std::vector<std::uint32_t>& polygons,
+               std::array<std::vector<std::uint32_t>, 8>& children) const;
+
+private:
+    Box cell_box(const OctreeCell& cell) const;
+
+    const Scene& scene_;
+    OctreeTree tree_;
+    std::vector<Box> bounds_;  ///< each polygon's box, grown by the fudge
+    double fudge_ = 0.0;
+    std::uint64_t max_nodes_ = 0;
+    int octlist_power_ = kDefaultOctlistPower;
+};
+
+}  // namespace rt

@@ -1,0 +1,66 @@
+// The octree's memory layout (manual 2.2 "1 depth", part three): a cube halved along every axis
+// at each level, down to at most the given depth, with nodes in one flat array (eight siblings
+// side by side) and the leaves' polygon ids in another. Node boxes sit on an integer lattice of
+// 2^depth steps a side, so the build and the DDDA compute every boundary the same way.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "rt/accel/voxel/box.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+/// The deepest octree built: 2^20 finest voxels a side keeps the lattice well inside an int.
+inline constexpr int kMaxOctreeDepth = 20;
+/// A node holding more polygons than this is split (while the depth allows).
+inline constexpr std::uint32_t kMaxLeafPolygons = 8;
+/// Default -ol and -ss: 2^24 nodes at most (128 MiB), 2^12 allocated at first.
+inline constexpr int kDefaultOctlistPower = 24;
+inline constexpr int kDefaultSeedSizePower = 12;
+
+struct OctreeNode {
+    static constexpr std::uint32_t kInterior = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t first = 0;  ///< interior: index of the first of 8 children; leaf: into polygons
+    std::uint32_t count = 0;  ///< leaf: number of polygons; kInterior for an interior node
+    bool is_leaf() const { return count != kInterior; }
+    friend bool operator==(const OctreeNode&, const OctreeNode&) = default;
+};
+
+struct OctreeTree {
+    Box world;                            ///< a cube (up to rounding)
+    int depth = 0;                        ///< the finest level; the root is level 0
+    Vec3 step;                            ///< world extent / 2^depth: one lattice step per axis
+    std::vector<OctreeNode> nodes;        ///< nodes[0] is the root; children in x, y, z bit order
+    std::vector<std::uint32_t> polygons;  ///< each leaf's ids, ascending
+
+    /// Where lattice plane k along `axis` lies: the one formula the build and the walk share.
+    double lattice(int axis, std::int64_t k) const {
+        return world.lo[axis] + static_cast<double>(k) * step[axis];
+    }
+    std::span<const std::uint32_t> leaf_polygons(const OctreeNode& leaf) const {
+        return {polygons.data() + leaf.first, leaf.count};
+    }
+    std::size_t memory_bytes() const {
+        return nodes.capacity() * sizeof(OctreeNode) + polygons.capacity() * sizeof(std::uint32_t);
+    }
+};
+
+/// How to build: depth, -ol, -ss, -of.
+struct OctreeBuildSettings {
+    int depth = 0;
+    std::optional<int> octlist_power;    ///< -ol: at most 2^n nodes
+    std::optional<int> seed_size_power;  ///< -ss: 2^n nodes allocated at first
+    bool no_fudge = false;               ///< -of
+};
+
+/// The default fill: each node's polygons sent to its children depth first.
+OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings);
+/// -op, the "new fill-plane": one whole level of the tree at a time. The same tree, bit for bit.
+OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSettings& settings);
+
+}  // namespace rt

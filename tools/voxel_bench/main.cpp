@@ -1,0 +1,136 @@
+// voxel_bench: build time, memory and single-thread rays per second of SEADS and the octree on
+// tessellated spheres of 1k to 1M triangles (the yardstick). Usage:
+//   [SIDE=n] [DEPTH=n] build/bin/voxel_bench [max_triangles [rays [min_triangles]]]
+// Rays are eye rays through a square grid of pixels in raster order, as the renderer traces them.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <vector>
+
+#include "rt/accel/make_accelerator.h"
+
+namespace {
+
+// CPU time of this thread, not wall time: the machines we measure on are shared, and a thread
+// waiting for a core should not count against the method.
+double cpu_seconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+// A sphere of about `triangles` triangles of even size: each face of a cube cut into an n x n
+// grid of squares, two triangles each, every vertex pushed out to the unit sphere. (A UV sphere's
+// poles, where hundreds of slivers meet, would measure the poles rather than the method.)
+rt::Scene sphere(int triangles) {
+    const int n = std::max(1, static_cast<int>(std::sqrt(triangles / 12.0)));
+    rt::Scene scene;
+    auto vertex = [&](int face, int i, int j) {
+        const double u = -1.0 + 2.0 * i / n;
+        const double v = -1.0 + 2.0 * j / n;
+        const int axis = face % 3;
+        const double side = face < 3 ? 1.0 : -1.0;
+        rt::Vec3 p;
+        p[axis] = side;
+        p[(axis + 1) % 3] = u * side;
+        p[(axis + 2) % 3] = v;
+        scene.positions.push_back(rt::normalize(p));
+        return static_cast<std::uint32_t>(scene.positions.size() - 1);
+    };
+    auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        const rt::Vec3 normal = rt::cross(scene.positions[b] - scene.positions[a],
+                                          scene.positions[c] - scene.positions[a]);
+        rt::Polygon p;
+        p.first_corner = static_cast<std::uint32_t>(scene.corners.size());
+        p.corner_count = 3;
+        p.normal = rt::normalize(normal);
+        scene.corners.insert(scene.corners.end(), {a, b, c});
+        scene.polygons.push_back(p);
+    };
+    for (int face = 0; face < 6; ++face) {
+        std::vector<std::uint32_t> grid;
+        for (int i = 0; i <= n; ++i) {
+            for (int j = 0; j <= n; ++j) {
+                grid.push_back(vertex(face, i, j));
+            }
+        }
+        const auto at = [&](int i, int j) { return grid[i * (n + 1) + j]; };
+        for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) {
+                add(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+                add(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+            }
+        }
+    }
+    return scene;
+}
+
+// SIDE=n and DEPTH=n in the environment override the grid size and octree depth.
+int from_environment(const char* name, int fallback) {
+    const char* value = std::getenv(name);
+    return value != nullptr ? std::atoi(value) : fallback;
+}
+
+void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_count) {
+    const double build_start = cpu_seconds();
+    const auto accel = rt::make_accelerator(scene, settings);
+    const double build = cpu_seconds() - build_start;
+    // Eye rays in raster order, as the renderer traces them: a square grid of pixels whose
+    // rays sweep a square a little larger than the sphere.
+    const int side = std::max(1, static_cast<int>(std::sqrt(ray_count)));
+    std::vector<rt::Ray> rays;
+    rays.reserve(static_cast<std::size_t>(side) * side);
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            rt::Ray ray;
+            ray.origin = {0.3, 0.2, 4.0};
+            const rt::Vec3 target{-1.2 + 2.4 * (column + 0.5) / side,
+                                  -1.2 + 2.4 * (row + 0.5) / side, 0.0};
+            ray.direction = target - ray.origin;
+            rays.push_back(ray);
+        }
+    }
+    ray_count = static_cast<int>(rays.size());
+    rt::TraceCounters counters;
+    std::size_t hits = 0;
+    const double trace_start = cpu_seconds();
+    for (const rt::Ray& ray : rays) {
+        hits += accel->closest_hit(ray, {}, counters) ? 1 : 0;
+    }
+    const double trace = cpu_seconds() - trace_start;
+    const auto n = static_cast<double>(scene.polygons.size());
+    std::printf(
+        "%-7s %8zu tris  param %3d  build %7.1f ms  %6.1f B/tri  %5.2f Mrays/s  "
+        "%5.1f tests/ray  %5.1f voxels/ray  hits %zu\n",
+        std::string(accel->name()).c_str(), scene.polygons.size(),
+        settings.kind == rt::AccelKind::Seads ? settings.seads_resolution : settings.octree_depth,
+        build * 1e3, accel->memory_bytes() / n, ray_count / trace / 1e6,
+        static_cast<double>(counters.polygon_tests) / ray_count,
+        static_cast<double>(counters.voxels_stepped) / ray_count, hits);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int max_triangles = argc > 1 ? std::atoi(argv[1]) : 1000000;
+    const int ray_count = argc > 2 ? std::atoi(argv[2]) : 200000;
+    const int min_triangles = argc > 3 ? std::atoi(argv[3]) : 1000;
+    for (int triangles = min_triangles; triangles <= max_triangles; triangles *= 10) {
+        const rt::Scene scene = sphere(triangles);
+        rt::AccelSettings seads;
+        seads.kind = rt::AccelKind::Seads;
+        // About one voxel a side per cube root of the triangle count (measured best for the
+        // sphere: finer grids walk more empty voxels than they save tests).
+        seads.seads_resolution =
+            from_environment("SIDE", std::clamp(static_cast<int>(std::cbrt(triangles)), 4, 322));
+        measure(scene, seads, ray_count);
+        rt::AccelSettings octree;
+        octree.kind = rt::AccelKind::Octree;
+        octree.octree_depth = from_environment(
+            "DEPTH", std::clamp(static_cast<int>(std::lround(std::log2(triangles) / 2.5)), 1, 20));
+        measure(scene, octree, ray_count);
+    }
+    return 0;
+}
