@@ -116,6 +116,9 @@ TEST(SamePicture, WhateverTheIntersectionMethod) {
          std::vector<std::vector<std::string>>{{"--accel", "brute"},
                                                {"--accel", "brute", "--zbuffer"},
                                                {"--accel", "seads"},
+             {"--accel", "octree"},
+             {"--accel", "octree", "-od3", "-on"},
+             {"--accel", "octree", "-op", "--zbuffer"},
                                                {"--accel", "seads", "-De", "--zbuffer"}}) {
         std::string name = "method";
         for (const std::string& word : method) {
