@@ -1,0 +1,187 @@
+// Traversal: closest_hit goes front to back, nearest child first, and culls by the depth ranges
+// of box_test.h; occluded stops at the first hit. Both decide every hit with intersect_polygon.
+#include <array>
+#include <bit>
+#include <cmath>
+
+#include "rt/accel/bvh/box_test.h"
+#include "rt/accel/bvh/bvh.h"
+#include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/geometry/ray_polygon.h"
+
+namespace rt {
+
+namespace {
+
+using bvh::kLastPacketBit;
+using bvh::kLeafBit;
+
+// The builder keeps the tree below 56 levels; each level pushes at most three siblings.
+constexpr int kStackSize = 256;
+
+struct StackEntry {
+    std::uint32_t child;
+    float nearest;  ///< the smallest depth in the child's box, scaled
+};
+
+// The nearest hit so far, with brute force's rule: smaller t wins, equal t the lower id.
+class NearestHit {
+public:
+    explicit NearestHit(Interval t) : t_(t) {}
+    void offer(const RaySpace& space, const Scene& scene, std::uint32_t id,
+               TraceCounters& counters) {
+        ++counters.polygon_tests;
+        // t <= the best t still comes back, so an equal-t polygon of lower id can win.
+        const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
+        if (const std::optional<double> hit = intersect_polygon(space, scene, id, search)) {
+            if (!best_ || *hit < best_->t || id < best_->polygon) {
+                best_ = Hit{*hit, id};
+            }
+        }
+    }
+    const std::optional<Hit>& best() const { return best_; }
+    /// The largest t a box must reach to matter, inclusive.
+    double reach() const { return best_ ? best_->t : t_.max; }
+
+private:
+    Interval t_;
+    std::optional<Hit> best_;
+};
+
+// Calls visit(id) for each polygon of the leaf that the pre-filter cannot rule out, once per run
+// of equal ids (a polygon's fan triangles are adjacent). Stops early when visit returns true.
+template <class Visit>
+bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf,
+                        const bvh::FloatRay& ray, Visit visit) {
+    std::uint32_t previous = ~0u;
+    for (std::uint32_t index = leaf & ~kLeafBit;; ++index) {
+        const bvh::TrianglePacket& packet = packets[index];
+        for (int bits = bvh::packet_candidates(packet, ray); bits != 0; bits &= bits - 1) {
+            const std::uint32_t id =
+                packet.polygon[std::countr_zero(static_cast<unsigned>(bits))] & ~kLastPacketBit;
+            if (id != previous) {
+                previous = id;
+                if (visit(id)) {
+                    return true;
+                }
+            }
+        }
+        if ((packet.polygon[3] & kLastPacketBit) != 0) {
+            return false;
+        }
+    }
+}
+
+// Pushes the hit children farthest first, so the nearest is popped next.
+void push_in_order(const bvh::Node& node, const bvh::BoxHits& hits, StackEntry* stack, int& size) {
+    std::array<int, 4> order{};
+    int count = 0;
+    for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
+        const int c = std::countr_zero(static_cast<unsigned>(bits));
+        int i = count++;
+        for (; i > 0 && hits.entry[order[i - 1]] < hits.entry[c]; --i) {
+            order[i] = order[i - 1];
+        }
+        order[i] = c;
+    }
+    for (int i = 0; i < count; ++i) {
+        stack[size++] = {node.child[order[i]], hits.nearest[order[i]]};
+    }
+}
+
+}  // namespace
+
+std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
+    const RaySpace space(ray);
+    if (!space.valid()) {
+        return std::nullopt;
+    }
+    NearestHit nearest(t);
+    for (const std::uint32_t id : unbounded_) {
+        nearest.offer(space, scene_, id, counters);
+    }
+    const bvh::FloatRay fray(ray, tree_.scale);
+    if (!fray.usable) {  // float bounds untrustworthy: test everything, as brute force does
+        for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
+            nearest.offer(space, scene_, id, counters);
+        }
+        return nearest.best();
+    }
+    if (tree_.root == bvh::kNoChild) {
+        return nearest.best();
+    }
+    const float t_min = fray.scaled_down(t.min);
+    float t_max = fray.scaled_up(nearest.reach());
+    std::array<StackEntry, kStackSize> stack;
+    int size = 0;
+    stack[size++] = {tree_.root, -HUGE_VALF};
+    while (size > 0) {
+        const StackEntry entry = stack[--size];
+        if (entry.nearest > t_max) {
+            continue;
+        }
+        if (bvh::is_leaf(entry.child)) {
+            for_each_candidate(tree_.packets, entry.child, fray, [&](std::uint32_t id) {
+                nearest.offer(space, scene_, id, counters);
+                return false;
+            });
+            t_max = fray.scaled_up(nearest.reach());
+            continue;
+        }
+        ++counters.nodes_visited;
+        const bvh::Node& node = tree_.nodes[entry.child];
+        push_in_order(node, bvh::test_boxes(node, fray, t_min, t_max), stack.data(), size);
+    }
+    return nearest.best();
+}
+
+bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
+    const RaySpace space(ray);
+    if (!space.valid()) {
+        return false;
+    }
+    const auto blocks = [&](std::uint32_t id) {
+        ++counters.polygon_tests;
+        return intersect_polygon(space, scene_, id, t).has_value();
+    };
+    for (const std::uint32_t id : unbounded_) {
+        if (blocks(id)) {
+            return true;
+        }
+    }
+    const bvh::FloatRay fray(ray, tree_.scale);
+    if (!fray.usable) {
+        for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
+            if (blocks(id)) {
+                return true;
+            }
+        }
+        return false;
+    }
+    if (tree_.root == bvh::kNoChild) {
+        return false;
+    }
+    const float t_min = fray.scaled_down(t.min);
+    const float t_max = fray.scaled_up(t.max);
+    std::array<std::uint32_t, kStackSize> stack;
+    int size = 0;
+    stack[size++] = tree_.root;
+    while (size > 0) {
+        const std::uint32_t child = stack[--size];
+        if (bvh::is_leaf(child)) {
+            if (for_each_candidate(tree_.packets, child, fray, blocks)) {
+                return true;
+            }
+            continue;
+        }
+        ++counters.nodes_visited;
+        const bvh::Node& node = tree_.nodes[child];
+        for (int bits = bvh::test_boxes(node, fray, t_min, t_max).mask; bits != 0;
+             bits &= bits - 1) {
+            stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
+        }
+    }
+    return false;
+}
+
+}  // namespace rt
