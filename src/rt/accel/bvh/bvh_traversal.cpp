@@ -24,16 +24,19 @@ struct StackEntry {
     float nearest;  ///< the smallest depth in the child's box, scaled
 };
 
-// The nearest hit so far, with brute force's rule: smaller t wins, equal t the lower id.
+// The nearest hit so far, with brute force's rule: smaller t wins, equal t the lower id. The ray's
+// exact RaySpace is prepared on the first exact test: most rays never need one.
 class NearestHit {
 public:
-    explicit NearestHit(Interval t) : t_(t) {}
-    void offer(const RaySpace& space, const Scene& scene, std::uint32_t id,
-               TraceCounters& counters) {
+    NearestHit(const Ray& ray, Interval t) : ray_(ray), t_(t) {}
+    void offer(const Scene& scene, std::uint32_t id, TraceCounters& counters) {
         ++counters.polygon_tests;
+        if (!space_) {
+            space_.emplace(ray_);
+        }
         // t <= the best t still comes back, so an equal-t polygon of lower id can win.
         const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
-        if (const std::optional<double> hit = intersect_polygon(space, scene, id, search)) {
+        if (const std::optional<double> hit = intersect_polygon(*space_, scene, id, search)) {
             if (!best_ || *hit < best_->t || id < best_->polygon) {
                 best_ = Hit{*hit, id};
             }
@@ -44,7 +47,9 @@ public:
     double reach() const { return best_ ? best_->t : t_.max; }
 
 private:
+    const Ray& ray_;
     Interval t_;
+    std::optional<RaySpace> space_;
     std::optional<Hit> best_;
 };
 
@@ -92,20 +97,20 @@ void push_in_order(const bvh::Node& node, const bvh::BoxHits& hits, StackEntry* 
 }  // namespace
 
 std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const RaySpace space(ray);
-    if (!space.valid()) {
-        return std::nullopt;
-    }
-    NearestHit nearest(t);
-    for (const std::uint32_t id : unbounded_) {
-        nearest.offer(space, scene_, id, counters);
-    }
+    // A usable FloatRay has a finite origin and a finite nonzero direction, so RaySpace would be
+    // valid too; an unusable one falls back to testing every polygon (an invalid ray misses all).
     const bvh::FloatRay fray(ray, tree_.scale);
-    if (!fray.usable) {  // float bounds untrustworthy: test everything, as brute force does
-        for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
-            nearest.offer(space, scene_, id, counters);
+    NearestHit nearest(ray, t);
+    if (!fray.usable) {
+        if (RaySpace(ray).valid()) {
+            for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
+                nearest.offer(scene_, id, counters);
+            }
         }
         return nearest.best();
+    }
+    for (const std::uint32_t id : unbounded_) {
+        nearest.offer(scene_, id, counters);
     }
     if (tree_.root == bvh::kNoChild) {
         return nearest.best();
@@ -122,7 +127,7 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         }
         if (bvh::is_leaf(entry.child)) {
             for_each_candidate(tree_.packets, entry.child, fray, [&](std::uint32_t id) {
-                nearest.offer(space, scene_, id, counters);
+                nearest.offer(scene_, id, counters);
                 return false;
             });
             t_max = fray.scaled_up(nearest.reach());
@@ -136,27 +141,30 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const RaySpace space(ray);
-    if (!space.valid()) {
-        return false;
-    }
+    const bvh::FloatRay fray(ray, tree_.scale);
+    std::optional<RaySpace> space;  // prepared on the first exact test, as in closest_hit
     const auto blocks = [&](std::uint32_t id) {
         ++counters.polygon_tests;
-        return intersect_polygon(space, scene_, id, t).has_value();
-    };
-    for (const std::uint32_t id : unbounded_) {
-        if (blocks(id)) {
-            return true;
+        if (!space) {
+            space.emplace(ray);
         }
-    }
-    const bvh::FloatRay fray(ray, tree_.scale);
+        return intersect_polygon(*space, scene_, id, t).has_value();
+    };
     if (!fray.usable) {
+        if (!RaySpace(ray).valid()) {
+            return false;
+        }
         for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
             if (blocks(id)) {
                 return true;
             }
         }
         return false;
+    }
+    for (const std::uint32_t id : unbounded_) {
+        if (blocks(id)) {
+            return true;
+        }
     }
     if (tree_.root == bvh::kNoChild) {
         return false;

@@ -45,7 +45,10 @@
 #include "rt/accel/bvh/float_ray.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace rt::bvh {
 
@@ -55,73 +58,96 @@ constexpr double kLargestScale = 0x1p40;
 constexpr double kSmallestScale = 0x1p-40;
 constexpr double kLargestInverse = 0x1p60;
 
-float round_up(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) {
-        f = std::nextafter(f, HUGE_VALF);
+// The next float towards +inf (towards -inf for next_down); infinities and NaN stay.
+float next_up(float f) {
+    if (!(f < HUGE_VALF)) {
+        return f;
     }
-    return f;
+    if (f == 0.0f) {
+        return std::numeric_limits<float>::denorm_min();
+    }
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
 }
 
-float round_down(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) {
-        f = std::nextafter(f, -HUGE_VALF);
+float next_down(float f) { return -next_up(-f); }
+
+// A positive bound, rounded up: the 2^-20 spare swallows the conversion's rounding.
+float bound_up(double x) { return static_cast<float>(x * (1.0 + 0x1p-20)); }
+
+// 2^-e for the exponent e of x, so that x * result lies in [1, 2): cheap bit work for the usual
+// magnitudes, ldexp for the extremes.
+double power_of_two_below(double x, double& inverse) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const int exponent = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+    if (exponent < -1000 || exponent > 1000) {
+        const int e = std::ilogb(x);
+        inverse = std::ldexp(1.0, e);
+        return std::ldexp(1.0, -e);
     }
-    return f;
+    inverse = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + exponent) << 52);
+    return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - exponent) << 52);
 }
 
 }  // namespace
 
 FloatRay::FloatRay(const Ray& ray, double scene_scale) {
     const Vec3& d = ray.direction;
-    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
-    const double origin_size =
-        std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)});
-    const double m = scene_scale + origin_size;
-    usable = largest > 0.0 && std::isfinite(largest) && m >= kSmallestScale && m <= kLargestScale;
-    if (!usable) {
-        return;
-    }
-    const int exponent = std::ilogb(largest);
-    scale_t = std::ldexp(1.0, exponent);  // D = scale_t D', so t' = t * scale_t; exact
-    const Vec3 scaled{std::ldexp(d.x, -exponent), std::ldexp(d.y, -exponent),
-                      std::ldexp(d.z, -exponent)};
-    const double length_squared = dot(scaled, scaled);
-    double weight_sum = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        origin[k] = static_cast<float>(ray.origin[k]);
-        double inv = 1.0 / scaled[k];
-        if (!(std::fabs(inv) <= kLargestInverse)) {
-            inv = std::copysign(kLargestInverse, scaled[k]);
-        }
-        inverse[k] = static_cast<float>(inv);
-        near_is_lo[k] = !std::signbit(inv);
-        slab_margin[k] = round_up(0x1p-20 * m * std::fabs(inv) * (1.0 + 0x1p-20));
-        const double weight = scaled[k] / length_squared;
-        depth_weight[k] = static_cast<float>(weight);
-        weight_sum += std::fabs(weight);
-    }
-    depth_margin = round_up(0x1p-19 * m * weight_sum * (1.0 + 0x1p-20));
-
     const double ax = std::fabs(d.x);
     const double ay = std::fabs(d.y);
     const double az = std::fabs(d.z);
+    const double largest = std::max({ax, ay, az});
+    const double origin_size =
+        std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)});
+    const double m = scene_scale + origin_size;
+    // (max ignores a NaN, so finiteness is asked of every component.)
+    usable = is_finite(d) && is_finite(ray.origin) && largest > 0.0 && m >= kSmallestScale &&
+             m <= kLargestScale;
+    if (!usable) {
+        return;
+    }
+    const double shrink = power_of_two_below(largest, scale_t);  // D = scale_t D'; t' = t scale_t
+    const Vec3 scaled = d * shrink;                               // exact
+    const double inverse_length_squared = 1.0 / dot(scaled, scaled);
+    double weight_sum = 0.0;
+    double inv[3];
+    for (int k = 0; k < 3; ++k) {
+        origin[k] = static_cast<float>(ray.origin[k]);
+        inv[k] = 1.0 / scaled[k];
+        if (!(std::fabs(inv[k]) <= kLargestInverse)) {
+            inv[k] = std::copysign(kLargestInverse, scaled[k]);
+        }
+        inverse[k] = static_cast<float>(inv[k]);
+        near_is_lo[k] = !std::signbit(inv[k]);
+        slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
+        const double weight = scaled[k] * inverse_length_squared;
+        depth_weight[k] = static_cast<float>(weight);
+        weight_sum += std::fabs(weight);
+    }
+    depth_margin = bound_up(0x1p-19 * m * weight_sum);
+
     kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
-    shear_x = static_cast<float>(d[kx] / d[kz]);
-    shear_y = static_cast<float>(d[ky] / d[kz]);
+    // |scaled[kz]| is in [1, 2), so its inverse was not clamped; two roundings, well inside
+    // the 8u of the bound.
+    shear_x = static_cast<float>(scaled[kx] * inv[kz]);
+    shear_y = static_cast<float>(scaled[ky] * inv[kz]);
     const double eps = 0x1p-20 * m;
-    edge_margin_linear = round_up(8.0 * eps);
-    edge_margin_constant = round_up(8.0 * eps * eps);
+    edge_margin_linear = bound_up(8.0 * eps);
+    edge_margin_constant = bound_up(8.0 * eps * eps);
 }
 
 float FloatRay::scaled_down(double t) const {
-    return round_down(t * scale_t);
+    const double x = t * scale_t;
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? next_down(f) : f;
 }
+
 float FloatRay::scaled_up(double t) const {
-    return round_up(t * scale_t);
+    const double x = t * scale_t;
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? next_up(f) : f;
 }
 
 }  // namespace rt::bvh
