@@ -1,6 +1,7 @@
 #include "rt/accel/bvh/bvh_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <future>
 #include <thread>
 #include <utility>
@@ -48,6 +49,7 @@ private:
         const std::span<const PolygonReference> refs = refs_.subspan(r.begin, r.size());
         return kLeafBit | append_leaf_packets(scene_, refs, packets_);
     }
+    void fill(std::uint32_t index, Pending p, int depth);
     std::uint32_t append(Hierarchy&& sub);
     std::vector<Pending> open_up_to_four(Pending p, int depth);
 
@@ -86,12 +88,21 @@ std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
     if (p.split.leaf) {
         return leaf(p.range);
     }
-    const std::vector<Pending> children = open_up_to_four(std::move(p), depth + 1);
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
+    fill(index, std::move(p), depth);
+    return index;
+}
+
+// Fills node `index` with up to four children. The inner children built here get consecutive
+// nodes, and the leaves consecutive packets, so that a ray testing siblings reads neighbouring
+// cache lines.
+void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
+    const std::vector<Pending> children = open_up_to_four(std::move(p), depth + 1);
+    const int count = static_cast<int>(children.size());
     for (int c = 0; c < 4; ++c) {
         Node& node = nodes_[index];
-        const Box box = c < static_cast<int>(children.size()) ? children[c].range.box : Box{};
+        const Box box = c < count ? children[c].range.box : Box{};
         for (int k = 0; k < 3; ++k) {
             node.lo[k][c] = box.lo[k];
             node.hi[k][c] = box.hi[k];
@@ -99,29 +110,31 @@ std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
         node.child[c] = kNoChild;
     }
     std::vector<std::pair<int, std::future<Hierarchy>>> spawned;
-    for (int c = 0; c < static_cast<int>(children.size()); ++c) {
+    std::array<bool, 4> built_here{};
+    for (int c = 0; c < count; ++c) {
         const Pending& child = children[c];
-        if (parallel_ && !child.split.leaf && depth < kParallelDepth &&
-            child.range.size() >= kParallelSize) {
+        if (child.split.leaf) {
+            nodes_[index].child[c] = leaf(child.range);
+        } else if (parallel_ && depth < kParallelDepth && child.range.size() >= kParallelSize) {
             spawned.emplace_back(c, std::async(std::launch::async, [this, child, depth] {
                                      SubtreeBuilder sub(scene_, refs_, true);
                                      sub.build(child, depth + 1);
                                      return sub.take();
                                  }));
+        } else {
+            built_here[c] = true;
+            nodes_[index].child[c] = static_cast<std::uint32_t>(nodes_.size());
+            nodes_.emplace_back();
         }
     }
-    for (int c = 0; c < static_cast<int>(children.size()); ++c) {
-        const bool is_spawned = std::any_of(spawned.begin(), spawned.end(),
-                                            [c](const auto& s) { return s.first == c; });
-        if (!is_spawned) {
-            const std::uint32_t word = build(children[c], depth + 1);
-            nodes_[index].child[c] = word;
+    for (int c = 0; c < count; ++c) {
+        if (built_here[c]) {
+            fill(nodes_[index].child[c], children[c], depth + 1);
         }
     }
     for (auto& [c, future] : spawned) {
         nodes_[index].child[c] = append(future.get());
     }
-    return index;
 }
 
 // Moves a finished subtree in, shifting its node and packet indices; returns its root's index.

@@ -19,16 +19,17 @@ inline bool is_leaf(std::uint32_t child) {
     return (child & kLeafBit) != 0;
 }
 
-/// 112 bytes. Boxes are rounded outward from double, so each contains its polygons' corners.
-struct alignas(16) Node {
+/// 128 bytes on a 64-byte boundary: exactly two cache lines. Boxes are rounded outward from
+/// double, so each contains its polygons' corners.
+struct alignas(64) Node {
     float lo[3][4];  ///< [axis][child]
     float hi[3][4];
     std::uint32_t child[4];
 };
 
-/// 160 bytes: four fan triangles (v0, v_i, v_i+1) of the leaf's polygons; unused lanes repeat the
+/// 160 bytes on a 32-byte boundary (three cache lines): four fan triangles (v0, v_i, v_i+1) of the leaf's polygons; unused lanes repeat the
 /// last triangle, so they add no candidate the exact test would not already see.
-struct alignas(16) TrianglePacket {
+struct alignas(32) TrianglePacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest
     std::uint32_t polygon[4];  ///< the scene polygon each lane belongs to (| kLastPacketBit)
 };

@@ -77,8 +77,23 @@ bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::ui
     }
 }
 
+// Asks for a child's first cache lines early: a ray spends much of its time waiting for memory.
+void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
+#if defined(__GNUC__)
+    const void* at = bvh::is_leaf(child)
+                         ? static_cast<const void*>(&tree.packets[child & ~kLeafBit])
+                         : static_cast<const void*>(&tree.nodes[child]);
+    __builtin_prefetch(at);
+    __builtin_prefetch(static_cast<const char*>(at) + 64);
+#else
+    (void)tree;
+    (void)child;
+#endif
+}
+
 // Pushes the hit children farthest first, so the nearest is popped next.
-void push_in_order(const bvh::Node& node, const bvh::BoxHits& hits, StackEntry* stack, int& size) {
+void push_in_order(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh::BoxHits& hits,
+                   StackEntry* stack, int& size) {
     std::array<int, 4> order{};
     int count = 0;
     for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
@@ -90,6 +105,7 @@ void push_in_order(const bvh::Node& node, const bvh::BoxHits& hits, StackEntry* 
         order[i] = c;
     }
     for (int i = 0; i < count; ++i) {
+        prefetch_child(tree, node.child[order[i]]);
         stack[size++] = {node.child[order[i]], hits.nearest[order[i]]};
     }
 }
@@ -135,7 +151,7 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         }
         ++counters.nodes_visited;
         const bvh::Node& node = tree_.nodes[entry.child];
-        push_in_order(node, bvh::test_boxes(node, fray, t_min, t_max), stack.data(), size);
+        push_in_order(tree_, node, bvh::test_boxes(node, fray, t_min, t_max), stack.data(), size);
     }
     return nearest.best();
 }
