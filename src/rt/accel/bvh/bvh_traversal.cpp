@@ -91,12 +91,23 @@ void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
 #endif
 }
 
-// Pushes the hit children farthest first, so the nearest is popped next.
-void push_in_order(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh::BoxHits& hits,
-                   StackEntry* stack, int& size) {
-    std::array<int, 4> order{};
-    int count = 0;
-    for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
+// Of the children the ray may meet, returns the nearest (by box entry) to descend into and pushes
+// the others farthest first, so the next nearest is popped next; kNoChild if none. One or two
+// hits, the usual case, take no sorting.
+std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh::BoxHits& hits,
+                      StackEntry* stack, int& size) {
+    int bits = hits.mask;
+    if (bits == 0) {
+        return bvh::kNoChild;
+    }
+    const int first = std::countr_zero(static_cast<unsigned>(bits));
+    bits &= bits - 1;
+    if (bits == 0) {
+        return node.child[first];
+    }
+    std::array<int, 4> order{first};
+    int count = 1;
+    for (; bits != 0; bits &= bits - 1) {
         const int c = std::countr_zero(static_cast<unsigned>(bits));
         int i = count++;
         for (; i > 0 && hits.entry[order[i - 1]] < hits.entry[c]; --i) {
@@ -104,10 +115,11 @@ void push_in_order(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh:
         }
         order[i] = c;
     }
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i + 1 < count; ++i) {
         prefetch_child(tree, node.child[order[i]]);
         stack[size++] = {node.child[order[i]], hits.nearest[order[i]]};
     }
+    return node.child[order[count - 1]];
 }
 
 }  // namespace
@@ -135,23 +147,32 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
     float t_max = fray.scaled_up(nearest.reach());
     std::array<StackEntry, kStackSize> stack;
     int size = 0;
-    stack[size++] = {tree_.root, -HUGE_VALF};
-    while (size > 0) {
-        const StackEntry entry = stack[--size];
-        if (entry.nearest > t_max) {
-            continue;
+    std::uint32_t child = tree_.root;
+    for (;;) {
+        while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
+            ++counters.nodes_visited;
+            const bvh::Node& node = tree_.nodes[child];
+            child = descend(tree_, node, bvh::test_boxes(node, fray, t_min, t_max), stack.data(),
+                            size);
         }
-        if (bvh::is_leaf(entry.child)) {
-            for_each_candidate(tree_.packets, entry.child, fray, [&](std::uint32_t id) {
+        if (child != bvh::kNoChild) {
+            for_each_candidate(tree_.packets, child, fray, [&](std::uint32_t id) {
                 nearest.offer(scene_, id, counters);
                 return false;
             });
             t_max = fray.scaled_up(nearest.reach());
-            continue;
         }
-        ++counters.nodes_visited;
-        const bvh::Node& node = tree_.nodes[entry.child];
-        push_in_order(tree_, node, bvh::test_boxes(node, fray, t_min, t_max), stack.data(), size);
+        // The next pushed child that may still hold something nearer.
+        child = bvh::kNoChild;
+        while (size > 0 && child == bvh::kNoChild) {
+            const StackEntry entry = stack[--size];
+            if (entry.nearest <= t_max) {
+                child = entry.child;
+            }
+        }
+        if (child == bvh::kNoChild) {
+            break;
+        }
     }
     return nearest.best();
 }

@@ -23,8 +23,8 @@ struct SplitDecision {
     ReferenceRange right;
 };
 
-/// Most fan triangles in a leaf: four packets.
-constexpr std::uint32_t kMaxLeafTriangles = 16;
+/// Most fan triangles in a leaf (unless one polygon has more): two packets.
+constexpr std::uint32_t kMaxLeafTriangles = 8;
 
 /// Splits `range` (reordering refs inside it) or says it is a leaf. `by_median` forces an object
 /// median split on the longest centroid axis, which halves the range: the builder uses it past a
