@@ -16,9 +16,9 @@ namespace rt::lab {
 
 struct TraceRate {
     double mrays_per_second = 0.0;
-    std::size_t rays = 0;     ///< distinct rays traced (fewer than offered when subsampled)
-    bool subsampled = false;  ///< brute force on a big scene traces every k-th ray only
-    std::uint64_t hits = 0;   ///< in one pass, as a sanity check between methods
+    std::size_t rays = 0;        ///< distinct rays traced (fewer than offered when subsampled)
+    bool subsampled = false;     ///< brute force on a big scene traces every k-th ray only
+    std::uint64_t hits = 0;      ///< in one pass, as a sanity check between methods
     double nodes_per_ray = 0.0;  ///< TraceCounters::nodes_visited per ray
     double tests_per_ray = 0.0;  ///< TraceCounters::polygon_tests per ray
 };

@@ -43,14 +43,15 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
            "rays_traced,subsampled,primary_hits,random_hits,primary_nodes_per_ray,"
            "primary_tests_per_ray,random_nodes_per_ray,random_tests_per_ray\n";
     for (const Measurement& m : results) {
-        out << fmt::format("{},{},{},{:.3f},{:.2f},{},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{},{:.2f},{:.2f},{:.2f},{:.2f}\n",
-                           m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle,
-                           m.threads, m.primary_one.mrays_per_second, m.random_one.mrays_per_second,
-                           m.primary_all.mrays_per_second, m.random_all.mrays_per_second,
-                           m.primary_one.rays, m.primary_one.subsampled ? 1 : 0, m.primary_one.hits,
-                           m.random_one.hits, m.primary_one.nodes_per_ray,
-                           m.primary_one.tests_per_ray, m.random_one.nodes_per_ray,
-                           m.random_one.tests_per_ray);
+        out << fmt::format(
+            "{},{},{},{:.3f},{:.2f},{},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{},{:.2f},{:.2f},{:.2f}"
+            ",{:.2f}\n",
+            m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle, m.threads,
+            m.primary_one.mrays_per_second, m.random_one.mrays_per_second,
+            m.primary_all.mrays_per_second, m.random_all.mrays_per_second, m.primary_one.rays,
+            m.primary_one.subsampled ? 1 : 0, m.primary_one.hits, m.random_one.hits,
+            m.primary_one.nodes_per_ray, m.primary_one.tests_per_ray, m.random_one.nodes_per_ray,
+            m.random_one.tests_per_ray);
     }
     if (!out) {
         throw IoError("rt_lab: cannot write " + file);

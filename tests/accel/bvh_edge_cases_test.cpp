@@ -152,9 +152,12 @@ TEST(BvhEdgeCases, NonPlanarAndDegeneratePolygons) {
     for (int i = 0; i < 30; ++i) {
         const double x = i * 0.3;
         b.add_polygon({{x, 0, 0}, {x + 1, 0, 0.4}, {x + 1, 1, 0}, {x, 1, 0.5}});  // twisted
-        b.add_polygon({{x, 2, 0}, {x + 1, 2, 0}, {x + 2, 2, 0}});                  // a segment
-        b.add_polygon({{x, 3, 0}, {x, 3, 0}, {x, 3, 0}});                          // a point
-        b.add_polygon({{x, 4, 0}, {x + 1, 4, 1}, {x, 5, 0}, {x + 1, 4, 1},
+        b.add_polygon({{x, 2, 0}, {x + 1, 2, 0}, {x + 2, 2, 0}});                 // a segment
+        b.add_polygon({{x, 3, 0}, {x, 3, 0}, {x, 3, 0}});                         // a point
+        b.add_polygon({{x, 4, 0},
+                       {x + 1, 4, 1},
+                       {x, 5, 0},
+                       {x + 1, 4, 1},
                        {x + 2, 4, 0}});  // a loop that revisits a corner
     }
     const Scene& scene = b.scene();

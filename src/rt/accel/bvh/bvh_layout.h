@@ -3,6 +3,7 @@
 // structure-of-arrays, that a float pre-filter tests at once before the exact test decides.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -26,9 +27,12 @@ struct alignas(64) Node {
     float hi[3][4];
     std::uint32_t child[4];
 };
+static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float),
+              "FloatRay's plane offsets count on hi following lo");
 
-/// 160 bytes on a 32-byte boundary (three cache lines): four fan triangles (v0, v_i, v_i+1) of the leaf's polygons; unused lanes repeat the
-/// last triangle, so they add no candidate the exact test would not already see.
+/// 160 bytes on a 32-byte boundary (three cache lines): four fan triangles (v0, v_i, v_i+1) of the
+/// leaf's polygons; unused lanes repeat the last triangle, so they add no candidate the exact test
+/// would not already see.
 struct alignas(32) TrianglePacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest
     std::uint32_t polygon[4];  ///< the scene polygon each lane belongs to (| kLastPacketBit)

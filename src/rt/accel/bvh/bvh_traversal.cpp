@@ -91,35 +91,60 @@ void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
 #endif
 }
 
+struct Candidate {
+    float entry;
+    StackEntry entry_on_stack;
+};
+
+// Orders a pair by entry, nearest first, without a branch to mispredict.
+void order_pair(Candidate& a, Candidate& b) {
+    const bool swap = b.entry < a.entry;
+    const Candidate first = swap ? b : a;
+    const Candidate second = swap ? a : b;
+    a = first;
+    b = second;
+}
+
 // Of the children the ray may meet, returns the nearest (by box entry) to descend into and pushes
-// the others farthest first, so the next nearest is popped next; kNoChild if none. One or two
-// hits, the usual case, take no sorting.
+// the others farthest first, so the next nearest is popped next; kNoChild if none.
 std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh::BoxHits& hits,
                       StackEntry* stack, int& size) {
     int bits = hits.mask;
     if (bits == 0) {
         return bvh::kNoChild;
     }
-    const int first = std::countr_zero(static_cast<unsigned>(bits));
-    bits &= bits - 1;
-    if (bits == 0) {
-        return node.child[first];
+    if ((bits & (bits - 1)) == 0) {  // one child: nothing to order or push
+        return node.child[std::countr_zero(static_cast<unsigned>(bits))];
     }
-    std::array<int, 4> order{first};
-    int count = 1;
+    float entry[4];
+    float nearest[4];
+    hits.entry.store(entry);
+    hits.nearest.store(nearest);
+    std::array<Candidate, 4> c;
+    int count = 0;
     for (; bits != 0; bits &= bits - 1) {
-        const int c = std::countr_zero(static_cast<unsigned>(bits));
-        int i = count++;
-        for (; i > 0 && hits.entry[order[i - 1]] < hits.entry[c]; --i) {
-            order[i] = order[i - 1];
-        }
-        order[i] = c;
+        const int k = std::countr_zero(static_cast<unsigned>(bits));
+        c[count++] = {entry[k], {node.child[k], nearest[k]}};
     }
-    for (int i = 0; i + 1 < count; ++i) {
-        prefetch_child(tree, node.child[order[i]]);
-        stack[size++] = {node.child[order[i]], hits.nearest[order[i]]};
+    // A sorting network for 2, 3 or 4 elements.
+    if (count == 2) {
+        order_pair(c[0], c[1]);
+    } else if (count == 3) {
+        order_pair(c[0], c[1]);
+        order_pair(c[1], c[2]);
+        order_pair(c[0], c[1]);
+    } else {
+        order_pair(c[0], c[1]);
+        order_pair(c[2], c[3]);
+        order_pair(c[0], c[2]);
+        order_pair(c[1], c[3]);
+        order_pair(c[1], c[2]);
     }
-    return node.child[order[count - 1]];
+    for (int i = count - 1; i > 0; --i) {
+        prefetch_child(tree, c[i].entry_on_stack.child);
+        stack[size++] = c[i].entry_on_stack;
+    }
+    return c[0].entry_on_stack.child;
 }
 
 }  // namespace
@@ -143,7 +168,8 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
     if (tree_.root == bvh::kNoChild) {
         return nearest.best();
     }
-    const float t_min = fray.scaled_down(t.min);
+    const bvh::BoxRay box_ray(fray);
+    const simd::Float4 t_min = simd::Float4::broadcast(fray.scaled_down(t.min));
     float t_max = fray.scaled_up(nearest.reach());
     std::array<StackEntry, kStackSize> stack;
     int size = 0;
@@ -152,8 +178,9 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             ++counters.nodes_visited;
             const bvh::Node& node = tree_.nodes[child];
-            child = descend(tree_, node, bvh::test_boxes(node, fray, t_min, t_max), stack.data(),
-                            size);
+            const bvh::BoxHits hits =
+                bvh::test_boxes(node, box_ray, t_min, simd::Float4::broadcast(t_max));
+            child = descend(tree_, node, hits, stack.data(), size);
         }
         if (child != bvh::kNoChild) {
             for_each_candidate(tree_.packets, child, fray, [&](std::uint32_t id) {
@@ -206,8 +233,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     if (tree_.root == bvh::kNoChild) {
         return false;
     }
-    const float t_min = fray.scaled_down(t.min);
-    const float t_max = fray.scaled_up(t.max);
+    const bvh::BoxRay box_ray(fray);
+    const simd::Float4 t_min = simd::Float4::broadcast(fray.scaled_down(t.min));
+    const simd::Float4 t_max = simd::Float4::broadcast(fray.scaled_up(t.max));
     std::array<std::uint32_t, kStackSize> stack;
     int size = 0;
     stack[size++] = tree_.root;
@@ -221,7 +249,7 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         }
         ++counters.nodes_visited;
         const bvh::Node& node = tree_.nodes[child];
-        for (int bits = bvh::test_boxes(node, fray, t_min, t_max).mask; bits != 0;
+        for (int bits = bvh::test_boxes(node, box_ray, t_min, t_max).mask; bits != 0;
              bits &= bits - 1) {
             stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
         }

@@ -70,10 +70,14 @@ float next_up(float f) {
     return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
 }
 
-float next_down(float f) { return -next_up(-f); }
+float next_down(float f) {
+    return -next_up(-f);
+}
 
 // A positive bound, rounded up: the 2^-20 spare swallows the conversion's rounding.
-float bound_up(double x) { return static_cast<float>(x * (1.0 + 0x1p-20)); }
+float bound_up(double x) {
+    return static_cast<float>(x * (1.0 + 0x1p-20));
+}
 
 // 2^-e for the exponent e of x, so that x * result lies in [1, 2): cheap bit work for the usual
 // magnitudes, ldexp for the extremes.
@@ -107,7 +111,7 @@ FloatRay::FloatRay(const Ray& ray, double scene_scale) {
         return;
     }
     const double shrink = power_of_two_below(largest, scale_t);  // D = scale_t D'; t' = t scale_t
-    const Vec3 scaled = d * shrink;                               // exact
+    const Vec3 scaled = d * shrink;                              // exact
     const double inverse_length_squared = 1.0 / dot(scaled, scaled);
     double weight_sum = 0.0;
     double inv[3];
@@ -118,7 +122,10 @@ FloatRay::FloatRay(const Ray& ray, double scene_scale) {
             inv[k] = std::copysign(kLargestInverse, scaled[k]);
         }
         inverse[k] = static_cast<float>(inv[k]);
-        near_is_lo[k] = !std::signbit(inv[k]);
+        // Node stores lo[3][4] then hi[3][4].
+        const bool positive = !std::signbit(inv[k]);
+        near_plane[k] = positive ? 4 * k : 12 + 4 * k;
+        far_plane[k] = positive ? 12 + 4 * k : 4 * k;
         slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
         const double weight = scaled[k] * inverse_length_squared;
         depth_weight[k] = static_cast<float>(weight);

@@ -17,9 +17,12 @@ struct FloatRay {
 
     // Box tests.
     float origin[3] = {};
-    float inverse[3] = {};       ///< 1 / scaled direction, clamped to +-2^60
-    float slab_margin[3] = {};   ///< added to each axis's slab interval
-    bool near_is_lo[3] = {};     ///< the plane a ray enters through on each axis
+    float inverse[3] = {};      ///< 1 / scaled direction, clamped to +-2^60
+    float slab_margin[3] = {};  ///< added to each axis's slab interval
+    /// Where, from Node::lo[0], the four planes a ray enters (leaves) through on each axis are:
+    /// lo[k] for a positive direction component, hi[k] for a negative one.
+    int near_plane[3] = {};
+    int far_plane[3] = {};
     float depth_weight[3] = {};  ///< scaled direction / |scaled direction|^2
     float depth_margin = 0.0f;   ///< bound on the error of a box's depth range
 
