@@ -178,6 +178,13 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             ++counters.nodes_visited;
             const bvh::Node& node = tree_.nodes[child];
+            // Start fetching every child while the boxes are tested: in a big tree each level
+            // is a cache miss, and this overlaps the next one with the work on this one.
+            for (const std::uint32_t grandchild : node.child) {
+                if (grandchild != bvh::kNoChild) {
+                    prefetch_child(tree_, grandchild);
+                }
+            }
             const bvh::BoxHits hits =
                 bvh::test_boxes(node, box_ray, t_min, simd::Float4::broadcast(t_max));
             child = descend(tree_, node, hits, stack.data(), size);
