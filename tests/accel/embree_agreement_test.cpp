@@ -63,7 +63,9 @@ TEST(EmbreeAgreement, Spheres) {
     expect_mostly_same(test::make_sphere({1, 2, 3}, 2.0, 10, 16, false), 5000, 2);
 }
 
-TEST(EmbreeAgreement, Soup) { expect_mostly_same(make_triangle_soup(5000, 3), 5000, 3); }
+TEST(EmbreeAgreement, Soup) {
+    expect_mostly_same(make_triangle_soup(5000, 3), 5000, 3);
+}
 
 TEST(EmbreeAgreement, TwoCubes) {
     Diagnostics diagnostics;
