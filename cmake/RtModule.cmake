@@ -1,7 +1,11 @@
-# rt_add_module(NAME DEPS dep...): a static library from every .cpp in src/rt/NAME.
+# rt_add_module(NAME DEPS dep... [EXCLUDE regex]): a static library from every .cpp in
+# src/rt/NAME, less those whose path matches EXCLUDE (an optional backend not being built).
 function(rt_add_module name)
-  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "EXCLUDE" "DEPS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp)
+  if(ARG_EXCLUDE)
+    list(FILTER sources EXCLUDE REGEX "${ARG_EXCLUDE}")
+  endif()
   if(sources)
     add_library(rt_${name} STATIC ${sources})
     target_include_directories(rt_${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)

@@ -119,6 +119,8 @@ TEST(SamePicture, WhateverTheIntersectionMethod) {
              {"--accel", "octree"},
              {"--accel", "octree", "-od3", "-on"},
              {"--accel", "octree", "-op", "--zbuffer"},
+             {"--accel", "bvh"},
+             {"--accel", "bvh", "-De"},
                                                {"--accel", "seads", "-De", "--zbuffer"}}) {
         std::string name = "method";
         for (const std::string& word : method) {

@@ -6,6 +6,10 @@
 #include "rt/accel/brute_force.h"
 #include "rt/accel/octree/octree.h"
 #include "rt/accel/seads/seads.h"
+#include "rt/accel/bvh/bvh.h"
+#if RT_WITH_EMBREE
+#include "rt/accel/embree/embree_accelerator.h"
+#endif
 #include "rt/core/error.h"
 
 namespace rt {
@@ -48,6 +52,16 @@ std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSet
             return make_octree(scene, settings);
         case AccelKind::Seads:
             return make_seads(scene, settings);
+        case AccelKind::Bvh:
+            return make_bvh(scene);
+#if RT_WITH_EMBREE
+        case AccelKind::Embree:
+            return make_embree_accelerator(scene);
+#else
+        case AccelKind::Embree:
+            throw NotImplementedError(
+                "the embree intersection method needs Embree 3, which this build of rt lacks");
+#endif
         default:
             throw NotImplementedError(std::string("the ") +
                                       std::string(accel_kind_name(settings.kind)) +

@@ -1,0 +1,148 @@
+#include "lab_measure.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <ctime>
+#include <mutex>
+#include <thread>
+
+#include "rt/accel/make_accelerator.h"
+#include "rt/core/error.h"
+
+namespace rt::lab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The CPU time this thread has used: single-thread rates are taken from it, so that other
+// programs sharing the cores do not count against the method being measured.
+double thread_cpu_seconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+// Every k-th ray, so that brute force spends at most its budget of polygon tests.
+std::vector<Ray> subsample(const std::vector<Ray>& rays, std::size_t keep) {
+    if (keep >= rays.size()) {
+        return rays;
+    }
+    std::vector<Ray> kept;
+    const double stride = static_cast<double>(rays.size()) / static_cast<double>(keep);
+    for (std::size_t i = 0; i < keep; ++i) {
+        kept.push_back(rays[static_cast<std::size_t>(i * stride)]);
+    }
+    return kept;
+}
+
+// One pass over the rays on `threads` threads, which take chunks of 64 rays in turn.
+TraceCounters trace_pass(const Accelerator& accel, const std::vector<Ray>& rays, unsigned threads) {
+    constexpr std::size_t kChunk = 64;
+    std::atomic<std::size_t> next{0};
+    std::mutex sum_lock;
+    TraceCounters sum;
+    const auto work = [&] {
+        TraceCounters counters;
+        for (std::size_t begin = next.fetch_add(kChunk); begin < rays.size();
+             begin = next.fetch_add(kChunk)) {
+            const std::size_t end = std::min(rays.size(), begin + kChunk);
+            for (std::size_t i = begin; i < end; ++i) {
+                ++counters.rays;
+                counters.hits += accel.closest_hit(rays[i], Interval{}, counters).has_value();
+            }
+        }
+        const std::lock_guard<std::mutex> hold(sum_lock);
+        sum += counters;
+    };
+    if (threads <= 1) {
+        work();
+    } else {
+        std::vector<std::thread> pool;
+        for (unsigned t = 0; t < threads; ++t) {
+            pool.emplace_back(work);
+        }
+        for (std::thread& t : pool) {
+            t.join();
+        }
+    }
+    return sum;
+}
+
+TraceRate time_tracing(const Accelerator& accel, const std::vector<Ray>& rays, unsigned threads,
+                       double least_seconds, bool subsampled) {
+    TraceRate rate;
+    rate.rays = rays.size();
+    rate.subsampled = subsampled;
+    if (rays.empty()) {
+        return rate;
+    }
+    std::size_t traced = 0;
+    const Clock::time_point start = Clock::now();
+    const double cpu_start = thread_cpu_seconds();
+    double elapsed = 0.0;
+    do {
+        const TraceCounters counters = trace_pass(accel, rays, threads);
+        rate.hits = counters.hits;
+        rate.nodes_per_ray = static_cast<double>(counters.nodes_visited) / rays.size();
+        rate.tests_per_ray = static_cast<double>(counters.polygon_tests) / rays.size();
+        traced += rays.size();
+        elapsed = threads <= 1 ? thread_cpu_seconds() - cpu_start : seconds_since(start);
+    } while (elapsed < least_seconds);
+    rate.mrays_per_second = static_cast<double>(traced) / elapsed * 1e-6;
+    return rate;
+}
+
+}  // namespace
+
+std::uint64_t fan_triangles(const Scene& scene) {
+    std::uint64_t count = 0;
+    for (const Polygon& p : scene.polygons) {
+        count += p.corner_count >= 3 ? p.corner_count - 2 : 0;
+    }
+    return count;
+}
+
+std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, AccelKind kind,
+                                   const LabRays& rays, const LabOptions& options) {
+    AccelSettings settings;
+    settings.kind = kind;
+    Measurement m;
+    m.mesh = mesh;
+    m.triangles = fan_triangles(scene);
+    m.accel = std::string(accel_kind_name(kind));
+    m.threads =
+        options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::unique_ptr<Accelerator> accel;
+    const Clock::time_point start = Clock::now();
+    try {
+        accel = make_accelerator(scene, settings);
+    } catch (const NotImplementedError&) {
+        return std::nullopt;
+    }
+    m.build_ms = seconds_since(start) * 1e3;
+    m.bytes_per_triangle = static_cast<double>(accel->memory_bytes()) /
+                           static_cast<double>(std::max<std::uint64_t>(m.triangles, 1));
+
+    const bool brute = kind == AccelKind::BruteForce;
+    const auto budget = static_cast<std::size_t>(
+        options.brute_force_tests / static_cast<double>(std::max<std::uint64_t>(m.triangles, 1)));
+    const std::size_t keep = brute ? std::max<std::size_t>(budget, 16) : rays.primary.size();
+    const std::vector<Ray> primary = subsample(rays.primary, keep);
+    const std::vector<Ray> random = subsample(rays.random, keep);
+    const bool primary_cut = primary.size() < rays.primary.size();
+    const bool random_cut = random.size() < rays.random.size();
+    const double least = options.seconds_per_run;
+    m.primary_one = time_tracing(*accel, primary, 1, least, primary_cut);
+    m.random_one = time_tracing(*accel, random, 1, least, random_cut);
+    m.primary_all = time_tracing(*accel, primary, m.threads, least, primary_cut);
+    m.random_all = time_tracing(*accel, random, m.threads, least, random_cut);
+    return m;
+}
+
+}  // namespace rt::lab

@@ -1,0 +1,32 @@
+// The lab's command line: which meshes, sizes and intersection methods, and where to write.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rt/accel/accel_settings.h"
+
+namespace rt::lab {
+
+struct LabOptions {
+    std::vector<std::uint32_t> sizes{1000, 10000, 100000, 1000000};
+    std::vector<std::string> meshes{"sphere", "soup", "twocubes"};
+    std::vector<AccelKind> accels{AccelKind::BruteForce, AccelKind::Octree, AccelKind::Seads,
+                                  AccelKind::Bvh, AccelKind::Embree};
+    unsigned threads = 0;            ///< for the all-cores runs; 0: every hardware thread
+    double seconds_per_run = 0.3;    ///< each measurement repeats its rays at least this long
+    double brute_force_tests = 2e8;  ///< ray-polygon tests brute force may spend per measurement
+    std::string csv_file;
+    std::string svg_file;
+    std::string source_dir = ".";  ///< where scenes/twocubes.scn is
+    bool show_help = false;
+};
+
+/// Throws UsageError for an unknown or malformed switch.
+LabOptions parse_lab_options(const std::vector<std::string>& args);
+
+std::string lab_help();
+
+}  // namespace rt::lab

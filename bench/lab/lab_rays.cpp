@@ -1,0 +1,57 @@
+#include "lab_rays.h"
+
+#include <cmath>
+#include <random>
+
+namespace rt::lab {
+
+std::vector<Ray> camera_rays(const Scene& scene) {
+    Vec3 lo;
+    Vec3 hi;
+    scene.bounds(lo, hi);
+    const Vec3 middle = (lo + hi) * 0.5;
+    const double radius = std::max(0.5 * length(hi - lo), 1e-9);
+    // From a little above and to the side, so that axis-aligned scenes are not seen face-on.
+    const Vec3 back = normalize(Vec3{0.3, 0.4, -1.0});
+    const Vec3 eye = middle + back * (2.5 * radius);
+    const Vec3 forward = -back;
+    const Vec3 right = normalize(cross(Vec3{0, 1, 0}, forward));
+    const Vec3 up = cross(forward, right);
+    // The box's bounding sphere fills the height: half-angle asin(1 / 2.5).
+    const double half_height = std::tan(std::asin(1.0 / 2.5));
+    const double half_width = half_height * kImageWidth / kImageHeight;
+    std::vector<Ray> rays;
+    rays.reserve(static_cast<std::size_t>(kImageWidth) * kImageHeight);
+    for (int y = 0; y < kImageHeight; ++y) {
+        for (int x = 0; x < kImageWidth; ++x) {
+            const double u = (2.0 * (x + 0.5) / kImageWidth - 1.0) * half_width;
+            const double v = (1.0 - 2.0 * (y + 0.5) / kImageHeight) * half_height;
+            rays.push_back({eye, forward + right * u + up * v});
+        }
+    }
+    return rays;
+}
+
+std::vector<Ray> random_rays(const Scene& scene, std::size_t count, std::uint64_t seed) {
+    Vec3 lo;
+    Vec3 hi;
+    scene.bounds(lo, hi);
+    const Vec3 middle = (lo + hi) * 0.5;
+    const Vec3 size = hi - lo;
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::vector<Ray> rays;
+    rays.reserve(count);
+    while (rays.size() < count) {
+        const Vec3 origin =
+            middle + Vec3{size.x * unit(random), size.y * unit(random), size.z * unit(random)};
+        const Vec3 direction{normal(random), normal(random), normal(random)};
+        if (dot(direction, direction) > 1e-12) {
+            rays.push_back({origin, normalize(direction)});
+        }
+    }
+    return rays;
+}
+
+}  // namespace rt::lab

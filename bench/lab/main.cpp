@@ -1,0 +1,83 @@
+// rt_lab: builds every intersection method this rt has on the same meshes and traces the same
+// rays through each, printing a table (and, on request, CSV and an SVG plot). bench/lab/README.md.
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "rt/core/diagnostics.h"
+#include "rt/core/error.h"
+#include "rt/scene/generated_meshes.h"
+#include "rt/scene/load_scene.h"
+
+#include "lab_measure.h"
+#include "lab_options.h"
+#include "lab_rays.h"
+#include "lab_report.h"
+#include "svg_plot.h"
+
+namespace {
+
+using rt::lab::LabOptions;
+
+void run_scene(const rt::Scene& scene, const std::string& mesh, const LabOptions& options,
+               std::vector<rt::lab::Measurement>& results) {
+    rt::lab::LabRays rays;
+    rays.primary = rt::lab::camera_rays(scene);
+    rays.random = rt::lab::random_rays(scene, rays.primary.size());
+    for (const rt::AccelKind kind : options.accels) {
+        if (auto m = rt::lab::measure(scene, mesh, kind, rays, options)) {
+            rt::lab::print_table_row(std::cout, *m);
+            results.push_back(*m);
+        }
+    }
+}
+
+int run(const LabOptions& options) {
+    std::vector<rt::lab::Measurement> results;
+    rt::lab::print_table_header(std::cout);
+    for (const std::string& mesh : options.meshes) {
+        if (mesh == "twocubes") {
+            rt::Diagnostics diagnostics;
+            const auto file = std::filesystem::path(options.source_dir) / "scenes" / "twocubes.scn";
+            run_scene(rt::load_scene(file, rt::ReaderDialect{}, diagnostics), mesh, options,
+                      results);
+            continue;
+        }
+        if (mesh != "sphere" && mesh != "soup") {
+            throw rt::UsageError("rt_lab: unknown mesh '" + mesh + "' (sphere, soup, twocubes)");
+        }
+        for (const std::uint32_t size : options.sizes) {
+            const rt::Scene scene =
+                mesh == "sphere" ? rt::make_tessellated_sphere(size) : rt::make_triangle_soup(size);
+            run_scene(scene, mesh, options, results);
+        }
+    }
+    if (!options.csv_file.empty()) {
+        rt::lab::write_csv(options.csv_file, results);
+    }
+    if (!options.svg_file.empty()) {
+        rt::lab::write_svg_plot(options.svg_file, results);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const LabOptions options =
+            rt::lab::parse_lab_options(std::vector<std::string>(argv + 1, argv + argc));
+        if (options.show_help) {
+            std::cout << rt::lab::lab_help();
+            return 0;
+        }
+        return run(options);
+    } catch (const rt::UsageError& e) {
+        std::cerr << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "rt_lab: " << e.what() << '\n';
+        return 1;
+    }
+}

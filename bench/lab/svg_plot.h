@@ -1,0 +1,15 @@
+// A log-log plot of single-thread rays/s against triangle count, one line per intersection
+// method, one panel per mesh and kind of ray; plain SVG, written by hand.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lab_measure.h"
+
+namespace rt::lab {
+
+/// Throws IoError.
+void write_svg_plot(const std::string& file, const std::vector<Measurement>& results);
+
+}  // namespace rt::lab

@@ -1,0 +1,181 @@
+#include "rt/accel/bvh/bvh_builder.h"
+
+#include <algorithm>
+#include <array>
+#include <future>
+#include <thread>
+#include <utility>
+
+#include "rt/accel/bvh/leaf_packets.h"
+#include "rt/accel/bvh/sah_split.h"
+
+namespace rt::bvh {
+
+namespace {
+
+// Past this many 4-wide levels every split is an object median (which halves): the depth, and
+// so the traversal stack, stays below kMaxDepth + 16 for any 2^32 references.
+constexpr int kMedianDepth = 40;
+// Subtrees at most this deep and at least this big are built on their own thread.
+constexpr int kParallelDepth = 2;
+constexpr std::uint32_t kParallelSize = 4096;
+
+struct Pending {
+    ReferenceRange range;
+    SplitDecision split;
+};
+
+// Builds one subtree into its own arrays; a parent builder appends them to its own.
+class SubtreeBuilder {
+public:
+    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, bool parallel)
+        : scene_(scene), refs_(refs), parallel_(parallel) {}
+
+    /// The child word for `p` (an inner node's index is local to this builder).
+    std::uint32_t build(Pending p, int depth);
+
+    Hierarchy take() {
+        Hierarchy h;
+        h.nodes = std::move(nodes_);
+        h.packets = std::move(packets_);
+        return h;
+    }
+
+private:
+    Pending pending(const ReferenceRange& r, int depth) {
+        return {r, split_range(refs_, r, depth >= kMedianDepth)};
+    }
+    std::uint32_t leaf(const ReferenceRange& r) {
+        const std::span<const PolygonReference> refs = refs_.subspan(r.begin, r.size());
+        return kLeafBit | append_leaf_packets(scene_, refs, packets_);
+    }
+    void fill(std::uint32_t index, Pending p, int depth);
+    std::uint32_t append(Hierarchy&& sub);
+    std::vector<Pending> open_up_to_four(Pending p, int depth);
+
+    const Scene& scene_;
+    std::span<PolygonReference> refs_;
+    bool parallel_;
+    std::vector<Node> nodes_;
+    std::vector<TrianglePacket> packets_;
+};
+
+// Replaces the largest splittable range by its halves until there are four (or none left).
+std::vector<Pending> SubtreeBuilder::open_up_to_four(Pending p, int depth) {
+    std::vector<Pending> children;
+    children.push_back(std::move(p));
+    while (children.size() < 4) {
+        int widest = -1;
+        double widest_area = -1.0;
+        for (int i = 0; i < static_cast<int>(children.size()); ++i) {
+            const double area = children[i].range.box.half_area();
+            if (!children[i].split.leaf && area > widest_area) {
+                widest = i;
+                widest_area = area;
+            }
+        }
+        if (widest < 0) {
+            break;
+        }
+        const SplitDecision split = children[widest].split;
+        children[widest] = pending(split.left, depth);
+        children.push_back(pending(split.right, depth));
+    }
+    return children;
+}
+
+std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
+    if (p.split.leaf) {
+        return leaf(p.range);
+    }
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    fill(index, std::move(p), depth);
+    return index;
+}
+
+// Fills node `index` with up to four children. The inner children built here get consecutive
+// nodes, and the leaves consecutive packets, so that a ray testing siblings reads neighbouring
+// cache lines.
+void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
+    const std::vector<Pending> children = open_up_to_four(std::move(p), depth + 1);
+    const int count = static_cast<int>(children.size());
+    for (int c = 0; c < 4; ++c) {
+        Node& node = nodes_[index];
+        const Box box = c < count ? children[c].range.box : Box{};
+        for (int k = 0; k < 3; ++k) {
+            node.lo[k][c] = box.lo[k];
+            node.hi[k][c] = box.hi[k];
+        }
+        node.child[c] = kNoChild;
+    }
+    std::vector<std::pair<int, std::future<Hierarchy>>> spawned;
+    std::array<bool, 4> built_here{};
+    for (int c = 0; c < count; ++c) {
+        const Pending& child = children[c];
+        if (child.split.leaf) {
+            nodes_[index].child[c] = leaf(child.range);
+        } else if (parallel_ && depth < kParallelDepth && child.range.size() >= kParallelSize) {
+            spawned.emplace_back(c, std::async(std::launch::async, [this, child, depth] {
+                                     SubtreeBuilder sub(scene_, refs_, true);
+                                     sub.build(child, depth + 1);
+                                     return sub.take();
+                                 }));
+        } else {
+            built_here[c] = true;
+            nodes_[index].child[c] = static_cast<std::uint32_t>(nodes_.size());
+            nodes_.emplace_back();
+        }
+    }
+    for (int c = 0; c < count; ++c) {
+        if (built_here[c]) {
+            fill(nodes_[index].child[c], children[c], depth + 1);
+        }
+    }
+    for (auto& [c, future] : spawned) {
+        nodes_[index].child[c] = append(future.get());
+    }
+}
+
+// Moves a finished subtree in, shifting its node and packet indices; returns its root's index.
+std::uint32_t SubtreeBuilder::append(Hierarchy&& sub) {
+    const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
+    const auto packet_offset = static_cast<std::uint32_t>(packets_.size());
+    for (Node& node : sub.nodes) {
+        for (std::uint32_t& child : node.child) {
+            if (child == kNoChild) {
+                continue;
+            }
+            child += is_leaf(child) ? packet_offset : node_offset;
+        }
+        nodes_.push_back(node);
+    }
+    packets_.insert(packets_.end(), sub.packets.begin(), sub.packets.end());
+    return node_offset;  // the subtree's root is its node 0
+}
+
+}  // namespace
+
+Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned threads) {
+    if (threads == 0) {
+        threads = std::max(1u, std::thread::hardware_concurrency());
+    }
+    Hierarchy result;
+    result.scale = refs.scale;
+    if (refs.bounded.empty()) {
+        return result;
+    }
+    const std::span<PolygonReference> all(refs.bounded);
+    SubtreeBuilder builder(scene, all, threads > 1);
+    const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
+    const std::uint32_t root = builder.build({whole, split_range(all, whole, false)}, 0);
+    const double scale = result.scale;
+    result = builder.take();
+    result.root = root;
+    result.scale = scale;
+    result.nodes.shrink_to_fit();
+    result.packets.shrink_to_fit();
+    return result;
+}
+
+}  // namespace rt::bvh

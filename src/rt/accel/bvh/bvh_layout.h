@@ -1,0 +1,50 @@
+// The BVH's memory layout: 4-wide nodes with their children's boxes as structure-of-arrays floats
+// (one SSE register per plane), and leaves as packets of four fan triangles, also
+// structure-of-arrays, that a float pre-filter tests at once before the exact test decides.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rt::bvh {
+
+/// A child word: an inner node's index, or kLeafBit plus the index of the leaf's first packet.
+constexpr std::uint32_t kLeafBit = 0x80000000u;
+/// An unused child slot; its box is empty (lo = +inf, hi = -inf), so no ray ever enters it.
+constexpr std::uint32_t kNoChild = 0xffffffffu;
+/// Set in TrianglePacket::polygon[3] of the last packet of a leaf.
+constexpr std::uint32_t kLastPacketBit = 0x80000000u;
+
+inline bool is_leaf(std::uint32_t child) {
+    return (child & kLeafBit) != 0;
+}
+
+/// 128 bytes on a 64-byte boundary: exactly two cache lines. Boxes are rounded outward from
+/// double, so each contains its polygons' corners.
+struct alignas(64) Node {
+    float lo[3][4];  ///< [axis][child]
+    float hi[3][4];
+    std::uint32_t child[4];
+};
+static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float),
+              "FloatRay's plane offsets count on hi following lo");
+
+/// 160 bytes on a 32-byte boundary (three cache lines): four fan triangles (v0, v_i, v_i+1) of the
+/// leaf's polygons; unused lanes repeat the last triangle, so they add no candidate the exact test
+/// would not already see.
+struct alignas(32) TrianglePacket {
+    float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest
+    std::uint32_t polygon[4];  ///< the scene polygon each lane belongs to (| kLastPacketBit)
+};
+
+/// The whole structure as the builder leaves it and traversal reads it.
+struct Hierarchy {
+    std::vector<Node> nodes;
+    std::vector<TrianglePacket> packets;
+    std::uint32_t root = kNoChild;  ///< a child word; kNoChild for an empty scene
+    /// Largest |coordinate| of any (inflated) box: the scale the float error bounds are taken at.
+    double scale = 0.0;
+};
+
+}  // namespace rt::bvh

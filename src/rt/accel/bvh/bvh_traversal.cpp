@@ -1,0 +1,267 @@
+// Traversal: closest_hit goes front to back, nearest child first, and culls by the depth ranges
+// of box_test.h; occluded stops at the first hit. Both decide every hit with intersect_polygon.
+#include <array>
+#include <bit>
+#include <cmath>
+
+#include "rt/accel/bvh/box_test.h"
+#include "rt/accel/bvh/bvh.h"
+#include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/geometry/ray_polygon.h"
+
+namespace rt {
+
+namespace {
+
+using bvh::kLastPacketBit;
+using bvh::kLeafBit;
+
+// The builder keeps the tree below 56 levels; each level pushes at most three siblings.
+constexpr int kStackSize = 256;
+
+struct StackEntry {
+    std::uint32_t child;
+    float nearest;  ///< the smallest depth in the child's box, scaled
+};
+
+// The nearest hit so far, with brute force's rule: smaller t wins, equal t the lower id. The ray's
+// exact RaySpace is prepared on the first exact test: most rays never need one.
+class NearestHit {
+public:
+    NearestHit(const Ray& ray, Interval t) : ray_(ray), t_(t) {}
+    void offer(const Scene& scene, std::uint32_t id, TraceCounters& counters) {
+        ++counters.polygon_tests;
+        if (!space_) {
+            space_.emplace(ray_);
+        }
+        // t <= the best t still comes back, so an equal-t polygon of lower id can win.
+        const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
+        if (const std::optional<double> hit = intersect_polygon(*space_, scene, id, search)) {
+            if (!best_ || *hit < best_->t || id < best_->polygon) {
+                best_ = Hit{*hit, id};
+            }
+        }
+    }
+    const std::optional<Hit>& best() const { return best_; }
+    /// The largest t a box must reach to matter, inclusive.
+    double reach() const { return best_ ? best_->t : t_.max; }
+
+private:
+    const Ray& ray_;
+    Interval t_;
+    std::optional<RaySpace> space_;
+    std::optional<Hit> best_;
+};
+
+// Calls visit(id) for each polygon of the leaf that the pre-filter cannot rule out, once per run
+// of equal ids (a polygon's fan triangles are adjacent). Stops early when visit returns true.
+template <class Visit>
+bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf,
+                        const bvh::FloatRay& ray, Visit visit) {
+    std::uint32_t previous = ~0u;
+    for (std::uint32_t index = leaf & ~kLeafBit;; ++index) {
+        const bvh::TrianglePacket& packet = packets[index];
+        for (int bits = bvh::packet_candidates(packet, ray); bits != 0; bits &= bits - 1) {
+            const std::uint32_t id =
+                packet.polygon[std::countr_zero(static_cast<unsigned>(bits))] & ~kLastPacketBit;
+            if (id != previous) {
+                previous = id;
+                if (visit(id)) {
+                    return true;
+                }
+            }
+        }
+        if ((packet.polygon[3] & kLastPacketBit) != 0) {
+            return false;
+        }
+    }
+}
+
+// Asks for a child's first cache lines early: a ray spends much of its time waiting for memory.
+void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
+#if defined(__GNUC__)
+    const void* at = bvh::is_leaf(child)
+                         ? static_cast<const void*>(&tree.packets[child & ~kLeafBit])
+                         : static_cast<const void*>(&tree.nodes[child]);
+    __builtin_prefetch(at);
+    __builtin_prefetch(static_cast<const char*>(at) + 64);
+#else
+    (void)tree;
+    (void)child;
+#endif
+}
+
+struct Candidate {
+    float entry;
+    StackEntry entry_on_stack;
+};
+
+// Orders a pair by entry, nearest first, without a branch to mispredict.
+void order_pair(Candidate& a, Candidate& b) {
+    const bool swap = b.entry < a.entry;
+    const Candidate first = swap ? b : a;
+    const Candidate second = swap ? a : b;
+    a = first;
+    b = second;
+}
+
+// Of the children the ray may meet, returns the nearest (by box entry) to descend into and pushes
+// the others farthest first, so the next nearest is popped next; kNoChild if none.
+std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh::BoxHits& hits,
+                      StackEntry* stack, int& size) {
+    int bits = hits.mask;
+    if (bits == 0) {
+        return bvh::kNoChild;
+    }
+    if ((bits & (bits - 1)) == 0) {  // one child: nothing to order or push
+        return node.child[std::countr_zero(static_cast<unsigned>(bits))];
+    }
+    float entry[4];
+    float nearest[4];
+    hits.entry.store(entry);
+    hits.nearest.store(nearest);
+    std::array<Candidate, 4> c;
+    int count = 0;
+    for (; bits != 0; bits &= bits - 1) {
+        const int k = std::countr_zero(static_cast<unsigned>(bits));
+        c[count++] = {entry[k], {node.child[k], nearest[k]}};
+    }
+    // A sorting network for 2, 3 or 4 elements.
+    if (count == 2) {
+        order_pair(c[0], c[1]);
+    } else if (count == 3) {
+        order_pair(c[0], c[1]);
+        order_pair(c[1], c[2]);
+        order_pair(c[0], c[1]);
+    } else {
+        order_pair(c[0], c[1]);
+        order_pair(c[2], c[3]);
+        order_pair(c[0], c[2]);
+        order_pair(c[1], c[3]);
+        order_pair(c[1], c[2]);
+    }
+    for (int i = count - 1; i > 0; --i) {
+        prefetch_child(tree, c[i].entry_on_stack.child);
+        stack[size++] = c[i].entry_on_stack;
+    }
+    return c[0].entry_on_stack.child;
+}
+
+}  // namespace
+
+std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
+    // A usable FloatRay has a finite origin and a finite nonzero direction, so RaySpace would be
+    // valid too; an unusable one falls back to testing every polygon (an invalid ray misses all).
+    const bvh::FloatRay fray(ray, tree_.scale);
+    NearestHit nearest(ray, t);
+    if (!fray.usable) {
+        if (RaySpace(ray).valid()) {
+            for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
+                nearest.offer(scene_, id, counters);
+            }
+        }
+        return nearest.best();
+    }
+    for (const std::uint32_t id : unbounded_) {
+        nearest.offer(scene_, id, counters);
+    }
+    if (tree_.root == bvh::kNoChild) {
+        return nearest.best();
+    }
+    const bvh::BoxRay box_ray(fray);
+    const simd::Float4 t_min = simd::Float4::broadcast(fray.scaled_down(t.min));
+    float t_max = fray.scaled_up(nearest.reach());
+    std::array<StackEntry, kStackSize> stack;
+    int size = 0;
+    std::uint32_t child = tree_.root;
+    for (;;) {
+        while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
+            ++counters.nodes_visited;
+            const bvh::Node& node = tree_.nodes[child];
+            // Start fetching every child while the boxes are tested: in a big tree each level
+            // is a cache miss, and this overlaps the next one with the work on this one.
+            for (const std::uint32_t grandchild : node.child) {
+                if (grandchild != bvh::kNoChild) {
+                    prefetch_child(tree_, grandchild);
+                }
+            }
+            const bvh::BoxHits hits =
+                bvh::test_boxes(node, box_ray, t_min, simd::Float4::broadcast(t_max));
+            child = descend(tree_, node, hits, stack.data(), size);
+        }
+        if (child != bvh::kNoChild) {
+            for_each_candidate(tree_.packets, child, fray, [&](std::uint32_t id) {
+                nearest.offer(scene_, id, counters);
+                return false;
+            });
+            t_max = fray.scaled_up(nearest.reach());
+        }
+        // The next pushed child that may still hold something nearer.
+        child = bvh::kNoChild;
+        while (size > 0 && child == bvh::kNoChild) {
+            const StackEntry entry = stack[--size];
+            if (entry.nearest <= t_max) {
+                child = entry.child;
+            }
+        }
+        if (child == bvh::kNoChild) {
+            break;
+        }
+    }
+    return nearest.best();
+}
+
+bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
+    const bvh::FloatRay fray(ray, tree_.scale);
+    std::optional<RaySpace> space;  // prepared on the first exact test, as in closest_hit
+    const auto blocks = [&](std::uint32_t id) {
+        ++counters.polygon_tests;
+        if (!space) {
+            space.emplace(ray);
+        }
+        return intersect_polygon(*space, scene_, id, t).has_value();
+    };
+    if (!fray.usable) {
+        if (!RaySpace(ray).valid()) {
+            return false;
+        }
+        for (std::uint32_t id = 0; id < scene_.polygons.size(); ++id) {
+            if (blocks(id)) {
+                return true;
+            }
+        }
+        return false;
+    }
+    for (const std::uint32_t id : unbounded_) {
+        if (blocks(id)) {
+            return true;
+        }
+    }
+    if (tree_.root == bvh::kNoChild) {
+        return false;
+    }
+    const bvh::BoxRay box_ray(fray);
+    const simd::Float4 t_min = simd::Float4::broadcast(fray.scaled_down(t.min));
+    const simd::Float4 t_max = simd::Float4::broadcast(fray.scaled_up(t.max));
+    std::array<std::uint32_t, kStackSize> stack;
+    int size = 0;
+    stack[size++] = tree_.root;
+    while (size > 0) {
+        const std::uint32_t child = stack[--size];
+        if (bvh::is_leaf(child)) {
+            if (for_each_candidate(tree_.packets, child, fray, blocks)) {
+                return true;
+            }
+            continue;
+        }
+        ++counters.nodes_visited;
+        const bvh::Node& node = tree_.nodes[child];
+        for (int bits = bvh::test_boxes(node, box_ray, t_min, t_max).mask; bits != 0;
+             bits &= bits - 1) {
+            stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
+        }
+    }
+    return false;
+}
+
+}  // namespace rt

@@ -1,0 +1,160 @@
+// Why the float tests never lose a hit the exact test would find.
+//
+// Let m = S + |O| (S the largest |coordinate| of any box, |O| the largest |coordinate| of the
+// origin) and u = 2^-24, float's rounding unit. Every bound below is taken with a factor of at
+// least 2 to spare; kRelativeSlack = 2^-20 = 16u.
+//
+// 1. Where the exact test can hit. intersect_polygon decides by the winding number of the ray
+//    around the polygon's corners projected in double (RaySpace::project), each projected
+//    coordinate within about 2^-49 m of the real projection. A nonzero winding number means the
+//    ray passes through one of the polygon's fan triangles as projected, so within 2^-49 m of
+//    that real triangle: the ray's line passes within 2^-49 m of the polygon's box.
+//    The t it returns is either the plane's (polygon normal, |cos| above RaySpace's grazing
+//    limit of 1e-6) or a grazing depth clamped to the range of the corners' depths along the
+//    ray. The plane's t lies within the polygon's box as long as the plane is the polygon's
+//    (non-planar corners are covered by inflating the box, polygon_references.cpp); the grazing
+//    depth lies within the box's range of depths, but NOT necessarily where the line crosses the
+//    box (a line in the plane of a triangle "hit" by rounding gets the depth of a corner). So:
+//      - a box is culled spatially only when the line misses it (slab test, all t), and
+//      - culled by t only when its whole range of depths, dot(p - O, D) / |D|^2 over the box,
+//        lies outside the interval (the "depth range" test).
+//    Both with margins that swallow the rounding of the double and float computations.
+//
+// 2. Slab test. With o = float(O) (error <= u|O|), inverse = float(1/D') (relative error <= u),
+//    plane p a float, the computed (p - o) * inverse differs from the real (p - O) / D' by at
+//    most 3u |t| + u |O| |1/D'| (relative roundings, and the origin's rounding divided by D').
+//    slab_margin[k] = 2^-20 m |inverse[k]| covers the origin and the 2^-49 m of part 1; the
+//    3u |t| is covered by widening the final interval by kRelativeSlack |t|. A zero direction
+//    component is clamped to 2^-60 times the largest: the pretend ray drifts by 2^-60 t, below
+//    2^-57 m for any t at which it is still within the scene, far inside the margin.
+//
+// 3. Depth range. sum_k (p_k - o_k) * depth_weight[k] with |p_k - o_k| <= m: each term within
+//    about 3u m |w_k| plus the origin's u |O| |w_k|; depth_margin = 2^-19 m sum |w_k| covers it.
+//    The double t of a plane hit is ill-conditioned by at most 1e6 (the grazing limit); its
+//    error, 2^-52 * 1e6 * m / |D'| < 2^-31 m, is also far inside depth_margin >= 2^-21 m.
+//
+// 4. Triangle pre-filter. The float projection of a corner (stored rounded to nearest) differs
+//    from the double one by at most eps = 2^-20 m (about 8u m: the corner's and origin's
+//    rounding, the shear's, three operations). The edge function E = x_a y_b - y_a x_b computed
+//    in float then differs from the double one by at most 4 eps L + 4 eps^2 + 4u L^2, L the
+//    largest |coordinate| of the triangle's projected corners. If the double E of the three
+//    edges had strictly mixed signs, the origin would lie outside the triangle as projected in
+//    double, and so would the exact test's displaced ray (which is within an infinitesimal of
+//    the origin): rejecting needs the float E's to have mixed signs beyond
+//    8 eps L + 2^-20 L^2 + 8 eps^2.
+#include "rt/accel/bvh/float_ray.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace rt::bvh {
+
+namespace {
+
+constexpr double kLargestScale = 0x1p40;
+constexpr double kSmallestScale = 0x1p-40;
+constexpr double kLargestInverse = 0x1p60;
+
+// The next float towards +inf (towards -inf for next_down); infinities and NaN stay.
+float next_up(float f) {
+    if (!(f < HUGE_VALF)) {
+        return f;
+    }
+    if (f == 0.0f) {
+        return std::numeric_limits<float>::denorm_min();
+    }
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
+}
+
+float next_down(float f) {
+    return -next_up(-f);
+}
+
+// A positive bound, rounded up: the 2^-20 spare swallows the conversion's rounding.
+float bound_up(double x) {
+    return static_cast<float>(x * (1.0 + 0x1p-20));
+}
+
+// 2^-e for the exponent e of x, so that x * result lies in [1, 2): cheap bit work for the usual
+// magnitudes, ldexp for the extremes.
+double power_of_two_below(double x, double& inverse) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const int exponent = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+    if (exponent < -1000 || exponent > 1000) {
+        const int e = std::ilogb(x);
+        inverse = std::ldexp(1.0, e);
+        return std::ldexp(1.0, -e);
+    }
+    inverse = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + exponent) << 52);
+    return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - exponent) << 52);
+}
+
+}  // namespace
+
+FloatRay::FloatRay(const Ray& ray, double scene_scale) {
+    const Vec3& d = ray.direction;
+    const double ax = std::fabs(d.x);
+    const double ay = std::fabs(d.y);
+    const double az = std::fabs(d.z);
+    const double largest = std::max({ax, ay, az});
+    const double origin_size =
+        std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)});
+    const double m = scene_scale + origin_size;
+    // (max ignores a NaN, so finiteness is asked of every component.)
+    usable = is_finite(d) && is_finite(ray.origin) && largest > 0.0 && m >= kSmallestScale &&
+             m <= kLargestScale;
+    if (!usable) {
+        return;
+    }
+    const double shrink = power_of_two_below(largest, scale_t);  // D = scale_t D'; t' = t scale_t
+    const Vec3 scaled = d * shrink;                              // exact
+    const double inverse_length_squared = 1.0 / dot(scaled, scaled);
+    double weight_sum = 0.0;
+    double inv[3];
+    for (int k = 0; k < 3; ++k) {
+        origin[k] = static_cast<float>(ray.origin[k]);
+        inv[k] = 1.0 / scaled[k];
+        if (!(std::fabs(inv[k]) <= kLargestInverse)) {
+            inv[k] = std::copysign(kLargestInverse, scaled[k]);
+        }
+        inverse[k] = static_cast<float>(inv[k]);
+        // Node stores lo[3][4] then hi[3][4].
+        const bool positive = !std::signbit(inv[k]);
+        near_plane[k] = positive ? 4 * k : 12 + 4 * k;
+        far_plane[k] = positive ? 12 + 4 * k : 4 * k;
+        slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
+        const double weight = scaled[k] * inverse_length_squared;
+        depth_weight[k] = static_cast<float>(weight);
+        weight_sum += std::fabs(weight);
+    }
+    depth_margin = bound_up(0x1p-19 * m * weight_sum);
+
+    kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    // |scaled[kz]| is in [1, 2), so its inverse was not clamped; two roundings, well inside
+    // the 8u of the bound.
+    shear_x = static_cast<float>(scaled[kx] * inv[kz]);
+    shear_y = static_cast<float>(scaled[ky] * inv[kz]);
+    const double eps = 0x1p-20 * m;
+    edge_margin_linear = bound_up(8.0 * eps);
+    edge_margin_constant = bound_up(8.0 * eps * eps);
+}
+
+float FloatRay::scaled_down(double t) const {
+    const double x = t * scale_t;
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? next_down(f) : f;
+}
+
+float FloatRay::scaled_up(double t) const {
+    const double x = t * scale_t;
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? next_up(f) : f;
+}
+
+}  // namespace rt::bvh

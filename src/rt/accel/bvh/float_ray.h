@@ -1,0 +1,48 @@
+// A ray prepared for the BVH's float tests, with the error bounds that make them conservative:
+// a box or a fan triangle is rejected only when the exact test (intersect_polygon, in double on
+// the untransformed ray) could not hit anything in it. The bounds are argued in float_ray.cpp.
+#pragma once
+
+#include "rt/geometry/ray.h"
+
+namespace rt::bvh {
+
+/// t in the float tests is t * scale_t (scale_t a power of two, making the largest direction
+/// component lie in [1, 2)).
+struct FloatRay {
+    /// False when the float tests cannot be trusted for this ray (scene or origin beyond
+    /// 2^+-40 in size): the caller then tests every polygon exactly.
+    bool usable = false;
+    double scale_t = 1.0;
+
+    // Box tests.
+    float origin[3] = {};
+    float inverse[3] = {};      ///< 1 / scaled direction, clamped to +-2^60
+    float slab_margin[3] = {};  ///< added to each axis's slab interval
+    /// Where, from Node::lo[0], the four planes a ray enters (leaves) through on each axis are:
+    /// lo[k] for a positive direction component, hi[k] for a negative one.
+    int near_plane[3] = {};
+    int far_plane[3] = {};
+    float depth_weight[3] = {};  ///< scaled direction / |scaled direction|^2
+    float depth_margin = 0.0f;   ///< bound on the error of a box's depth range
+
+    // Triangle pre-filter, in the ray's sheared 2D space (as RaySpace, in float).
+    int kx = 0;
+    int ky = 1;
+    int kz = 2;
+    float shear_x = 0.0f;
+    float shear_y = 0.0f;
+    float edge_margin_linear = 0.0f;    ///< times the triangle's 2D size
+    float edge_margin_constant = 0.0f;  ///< plus this
+
+    FloatRay(const Ray& ray, double scene_scale);
+
+    /// t as the float tests see it, rounded towards -inf or +inf (so comparisons stay safe).
+    float scaled_down(double t) const;
+    float scaled_up(double t) const;
+};
+
+/// The relative slack of every float bound (2^-20, sixteen times float's rounding unit).
+constexpr float kRelativeSlack = 0x1p-20f;
+
+}  // namespace rt::bvh

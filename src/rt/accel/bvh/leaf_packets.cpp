@@ -1,0 +1,50 @@
+#include "rt/accel/bvh/leaf_packets.h"
+
+namespace rt::bvh {
+
+namespace {
+
+void set_lane(TrianglePacket& packet, int lane, const Vec3 (&corners)[3], std::uint32_t polygon) {
+    for (int v = 0; v < 3; ++v) {
+        for (int k = 0; k < 3; ++k) {
+            packet.corner[v][k][lane] = static_cast<float>(corners[v][k]);
+        }
+    }
+    packet.polygon[lane] = polygon;
+}
+
+void copy_lane(TrianglePacket& packet, int from, int to) {
+    for (int v = 0; v < 3; ++v) {
+        for (int k = 0; k < 3; ++k) {
+            packet.corner[v][k][to] = packet.corner[v][k][from];
+        }
+    }
+    packet.polygon[to] = packet.polygon[from];
+}
+
+}  // namespace
+
+std::uint32_t append_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
+                                  std::vector<TrianglePacket>& packets) {
+    const auto first = static_cast<std::uint32_t>(packets.size());
+    int lane = 4;  // the current packet is full: start a new one
+    for (const PolygonReference& ref : refs) {
+        const Polygon& p = scene.polygons[ref.polygon];
+        for (std::uint32_t i = 1; i + 1 < p.corner_count; ++i) {
+            if (lane == 4) {
+                packets.emplace_back();
+                lane = 0;
+            }
+            const Vec3 corners[3] = {scene.corner_position(p, 0), scene.corner_position(p, i),
+                                     scene.corner_position(p, i + 1)};
+            set_lane(packets.back(), lane++, corners, ref.polygon);
+        }
+    }
+    for (; lane < 4; ++lane) {
+        copy_lane(packets.back(), lane - 1, lane);
+    }
+    packets.back().polygon[3] |= kLastPacketBit;
+    return first;
+}
+
+}  // namespace rt::bvh

@@ -1,0 +1,41 @@
+// The float pre-filter of a packet of four fan triangles: it rejects a triangle only when the
+// ray certainly misses it (float_ray.cpp, part 4); the exact test decides every other one.
+#pragma once
+
+#include "rt/accel/bvh/bvh_layout.h"
+#include "rt/accel/bvh/float4.h"
+#include "rt/accel/bvh/float_ray.h"
+
+namespace rt::bvh {
+
+/// Bit k set: lane k's triangle may be hit.
+inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) {
+    using simd::Float4;
+    const Float4 ox = Float4::broadcast(ray.origin[ray.kx]);
+    const Float4 oy = Float4::broadcast(ray.origin[ray.ky]);
+    const Float4 oz = Float4::broadcast(ray.origin[ray.kz]);
+    const Float4 sx = Float4::broadcast(ray.shear_x);
+    const Float4 sy = Float4::broadcast(ray.shear_y);
+    Float4 x[3];
+    Float4 y[3];
+    Float4 size = Float4::broadcast(0.0f);
+    for (int v = 0; v < 3; ++v) {
+        const Float4 az = Float4::load(packet.corner[v][ray.kz]) - oz;
+        x[v] = (Float4::load(packet.corner[v][ray.kx]) - ox) - sx * az;
+        y[v] = (Float4::load(packet.corner[v][ray.ky]) - oy) - sy * az;
+        size = max(size, max(abs(x[v]), abs(y[v])));
+    }
+    const Float4 e0 = x[1] * y[2] - y[1] * x[2];
+    const Float4 e1 = x[2] * y[0] - y[2] * x[0];
+    const Float4 e2 = x[0] * y[1] - y[0] * x[1];
+    const Float4 margin = size * (Float4::broadcast(ray.edge_margin_linear) +
+                                  size * Float4::broadcast(kRelativeSlack)) +
+                          Float4::broadcast(ray.edge_margin_constant);
+    const Float4 negative_margin = Float4::broadcast(0.0f) - margin;
+    const simd::Mask4 all_positive =
+        (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);
+    const simd::Mask4 all_negative = (e0 <= margin) & (e1 <= margin) & (e2 <= margin);
+    return (all_positive | all_negative).bits();
+}
+
+}  // namespace rt::bvh

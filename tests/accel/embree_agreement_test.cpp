@@ -1,0 +1,89 @@
+// Embree (comparison only) against brute force: single precision and not watertight against our
+// exact test, so it may name another polygon, or none, for rays through edges and corners. It must
+// agree on all but a tiny fraction of random rays, with nearly the same t.
+#include <cmath>
+#include <memory>
+
+#include "rt/accel/brute_force.h"
+#include "rt/accel/make_accelerator.h"
+#include "rt/core/diagnostics.h"
+#include "rt/core/error.h"
+#include "rt/scene/generated_meshes.h"
+#include "rt/scene/load_scene.h"
+
+#include <gtest/gtest.h>
+
+#include "accel_compare.h"
+#include "support/scene_builder.h"
+#include "support/temp_dir.h"
+
+namespace rt {
+namespace {
+
+std::unique_ptr<Accelerator> embree_or_skip(const Scene& scene) {
+    try {
+        AccelSettings settings;
+        settings.kind = AccelKind::Embree;
+        return make_accelerator(scene, settings);
+    } catch (const NotImplementedError&) {
+        return nullptr;
+    }
+}
+
+// Rays from anywhere in and around the box, in any direction, over the default interval.
+void expect_mostly_same(const Scene& scene, int rays, std::uint64_t seed) {
+    const std::unique_ptr<Accelerator> embree = embree_or_skip(scene);
+    if (!embree) {
+        GTEST_SKIP() << "this rt was built without Embree";
+    }
+    const BruteForce brute(scene);
+    TraceCounters counters;
+    int differ = 0;
+    int hits = 0;
+    // Only the queries in random directions: the others aim at corners and edges on purpose.
+    const std::vector<test::RayQuery> queries = test::random_queries(scene, 2 * rays, seed);
+    for (int i = 0; i < 2 * rays; i += 2) {
+        test::RayQuery q = queries[i];
+        q.t = Interval{};
+        const std::optional<Hit> want = brute.closest_hit(q.ray, q.t, counters);
+        const std::optional<Hit> got = embree->closest_hit(q.ray, q.t, counters);
+        hits += want.has_value();
+        const bool same = want.has_value() == got.has_value() &&
+                          (!want || (want->polygon == got->polygon &&
+                                     std::fabs(want->t - got->t) <= 1e-4 * (1 + want->t)));
+        differ += !same;
+        differ += brute.occluded(q.ray, q.t, counters) != embree->occluded(q.ray, q.t, counters);
+    }
+    EXPECT_GT(hits, rays / 20) << "the rays should hit something";
+    EXPECT_LE(differ, rays / 100) << "of " << rays << " rays";
+}
+
+TEST(EmbreeAgreement, Spheres) {
+    expect_mostly_same(make_tessellated_sphere(5000), 5000, 1);
+    expect_mostly_same(test::make_sphere({1, 2, 3}, 2.0, 10, 16, false), 5000, 2);
+}
+
+TEST(EmbreeAgreement, Soup) {
+    expect_mostly_same(make_triangle_soup(5000, 3), 5000, 3);
+}
+
+TEST(EmbreeAgreement, TwoCubes) {
+    Diagnostics diagnostics;
+    expect_mostly_same(
+        load_scene(test::source_dir() / "scenes" / "twocubes.scn", ReaderDialect{}, diagnostics),
+        5000, 4);
+}
+
+TEST(EmbreeAgreement, EmptyScene) {
+    const Scene empty;
+    const std::unique_ptr<Accelerator> embree = embree_or_skip(empty);
+    if (!embree) {
+        GTEST_SKIP() << "this rt was built without Embree";
+    }
+    TraceCounters counters;
+    EXPECT_FALSE(embree->closest_hit({{0, 0, 0}, {0, 0, 1}}, Interval{}, counters));
+    EXPECT_FALSE(embree->occluded({{0, 0, 0}, {0, 0, 1}}, Interval{}, counters));
+}
+
+}  // namespace
+}  // namespace rt
