@@ -112,6 +112,8 @@ std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, 
                                    const LabRays& rays, const LabOptions& options) {
     AccelSettings settings;
     settings.kind = kind;
+    settings.seads_resolution = suggested_seads_resolution(scene.polygons.size());
+    settings.octree_depth = suggested_octree_depth(scene.polygons.size());
     Measurement m;
     m.mesh = mesh;
     m.triangles = fan_triangles(scene);

@@ -124,12 +124,11 @@ int main(int argc, char** argv) {
         // About one voxel a side per cube root of the triangle count (measured best for the
         // sphere: finer grids walk more empty voxels than they save tests).
         seads.seads_resolution =
-            from_environment("SIDE", std::clamp(static_cast<int>(std::cbrt(triangles)), 4, 322));
+            from_environment("SIDE", rt::suggested_seads_resolution(triangles));
         measure(scene, seads, ray_count);
         rt::AccelSettings octree;
         octree.kind = rt::AccelKind::Octree;
-        octree.octree_depth = from_environment(
-            "DEPTH", std::clamp(static_cast<int>(std::lround(std::log2(triangles) / 2.5)), 1, 20));
+        octree.octree_depth = from_environment("DEPTH", rt::suggested_octree_depth(triangles));
         measure(scene, octree, ray_count);
     }
     return 0;

@@ -2,6 +2,7 @@
 // the Appendix's -o and -t switches). Filled from the scene header and the switches by the app.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string_view>
 
@@ -12,6 +13,13 @@ enum class AccelKind { BruteForce, Octree, Seads, Bvh, Embree };
 /// "brute", "octree", "seads", "bvh", "embree": the names --accel takes and the lab prints.
 std::string_view accel_kind_name(AccelKind kind);
 std::optional<AccelKind> accel_kind_from_name(std::string_view name);
+
+/// Voxel sizes for a scene of this many polygons when nothing names one, measured best on
+/// tessellated spheres (tools/voxel_bench): about one SEADS voxel a side per cube root of the
+/// count (finer grids walk more empty voxels than they save tests), and an octree depth of
+/// log2(count) / 2.5.
+int suggested_seads_resolution(std::size_t polygons);
+int suggested_octree_depth(std::size_t polygons);
 
 struct AccelSettings {
     AccelKind kind = AccelKind::BruteForce;

@@ -1,12 +1,14 @@
 #include "rt/accel/make_accelerator.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "rt/accel/brute_force.h"
+#include "rt/accel/bvh/bvh.h"
 #include "rt/accel/octree/octree.h"
 #include "rt/accel/seads/seads.h"
-#include "rt/accel/bvh/bvh.h"
 #if RT_WITH_EMBREE
 #include "rt/accel/embree/embree_accelerator.h"
 #endif
@@ -25,6 +27,15 @@ constexpr std::array<std::pair<AccelKind, std::string_view>, 5> kNames{{
 }};
 
 }  // namespace
+
+int suggested_seads_resolution(std::size_t polygons) {
+    return std::clamp(static_cast<int>(std::cbrt(static_cast<double>(polygons))), 4, 322);
+}
+
+int suggested_octree_depth(std::size_t polygons) {
+    const double count = static_cast<double>(std::max<std::size_t>(polygons, 1));
+    return std::clamp(static_cast<int>(std::lround(std::log2(count) / 2.5)), 1, 20);
+}
 
 std::string_view accel_kind_name(AccelKind kind) {
     for (const auto& [k, name] : kNames) {

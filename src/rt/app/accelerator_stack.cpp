@@ -8,12 +8,7 @@
 
 namespace rt {
 
-namespace {
-
-constexpr int kDefaultOctreeDepth = 8;
-constexpr int kDefaultSeadsResolution = 32;
-
-}  // namespace
+namespace {}  // namespace
 
 AccelSettings accel_settings(const Scene& scene, const Options& o) {
     const SceneHeader& h = scene.header;
@@ -21,8 +16,10 @@ AccelSettings accel_settings(const Scene& scene, const Options& o) {
     a.kind = h.sptncde == 0   ? AccelKind::BruteForce
              : h.sptncde == 1 ? AccelKind::Octree
                               : AccelKind::Seads;
-    a.octree_depth = h.sptncde == 1 ? h.octr : kDefaultOctreeDepth;
-    a.seads_resolution = h.sptncde > 1 ? h.sptncde : kDefaultSeadsResolution;
+    // A method the header does not name gets the voxel size measured best for the scene's size.
+    a.octree_depth = h.sptncde == 1 ? h.octr : suggested_octree_depth(scene.polygons.size());
+    a.seads_resolution =
+        h.sptncde > 1 ? h.sptncde : suggested_seads_resolution(scene.polygons.size());
     if (o.accel) {
         const std::optional<AccelKind> kind = accel_kind_from_name(*o.accel);
         if (!kind) {

@@ -421,9 +421,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "--accel", .form = SeparateText, .topic = SpatialEncoding,
      .first = {"NAME", {}}, .apply = [](Options& o, A a) { o.accel = a.text; },
      .summary = "Intersection method: brute, octree, seads, bvh or embree",
-     .details = "Overrides the third and fourth numbers of the scene header; octree and seads take "
-                "their depth or size from the header or 8 (octree depth, -od) and 32 (SEADS "
-                "voxels a side) when the header names another method.",
+     .details = "Overrides the third and fourth numbers of the scene header. When the header "
+                "names another method, octree and seads size themselves for the scene: a depth "
+                "of log2(polygons)/2.5 (-od overrides it) and cbrt(polygons) voxels a side. "
+                "embree (a comparison only, not exact) needs a build with Embree 3.",
      .section = "new", .example = "--accel bvh"},
     {.spelling = "--zbuffer", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.zbuffer_first_hits = true; },
