@@ -126,3 +126,28 @@ TEST(NearHitsAcceptedAtOnce, AndNoFudgeReturnOnlyRealHits) {
 
 }  // namespace
 }  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+// Nothing to find, or nothing to look with: no hit, no crash.
+TEST(VoxelMethods, EmptySceneAndBrokenRaysMissQuietly) {
+    const Scene empty = SceneBuilder().scene();
+    const Scene box = make_box({0, 0, 0}, {1, 1, 1}, true);
+    const double nan = std::nan("");
+    for (const AccelSettings& settings : voxel_methods()) {
+        TraceCounters counters;
+        const auto on_empty = make_accelerator(empty, settings);
+        EXPECT_FALSE(on_empty->closest_hit({{0, 0, -1}, {0, 0, 1}}, {}, counters));
+        EXPECT_FALSE(on_empty->occluded({{0, 0, -1}, {0, 0, 1}}, {}, counters));
+        const auto on_box = make_accelerator(box, settings);
+        EXPECT_FALSE(on_box->closest_hit({{0.5, 0.5, -1}, {0, 0, 0}}, {}, counters));
+        EXPECT_FALSE(on_box->closest_hit({{0.5, 0.5, -1}, {nan, 0, 1}}, {}, counters));
+        EXPECT_FALSE(on_box->closest_hit({{nan, 0.5, -1}, {0, 0, 1}}, {}, counters));
+        EXPECT_FALSE(on_box->occluded({{0.5, 0.5, -1}, {0, 0, 1}}, {0.0, 0.5}, counters));
+        EXPECT_TRUE(on_box->closest_hit({{0.5, 0.5, -1}, {0, 0, 1}}, {}, counters));
+    }
+}
+
+}  // namespace
+}  // namespace rt::test
