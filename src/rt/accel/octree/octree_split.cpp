@@ -1,6 +1,7 @@
 #include "rt/accel/octree/octree_split.h"
 
 #include <algorithm>
+#include <new>
 #include <numeric>
 #include <string>
 
@@ -43,7 +44,12 @@ OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) 
     tree_.world = world_box(scene, true);
     tree_.step = tree_.world.extent() * (1.0 / static_cast<double>(std::int64_t{1} << tree_.depth));
     // -ss: the pool's first allocation; it then doubles as needed, up to the -ol limit.
-    tree_.nodes.reserve(pool_limit(seed));
+    try {
+        tree_.nodes.reserve(pool_limit(seed));
+    } catch (const std::bad_alloc&) {
+        throw UsageError("-ss " + std::to_string(seed) + ": cannot allocate 2^" +
+                         std::to_string(seed) + " octree nodes at once; lower -ss");
+    }
     tree_.nodes.emplace_back();
     fudge_ = voxel_fudge(tree_.world, settings.no_fudge);
     bounds_.reserve(scene.polygons.size());
@@ -66,7 +72,14 @@ std::uint32_t OctreeFill::allocate_children() {
                          std::to_string(octlist_power_) + ") or lower the depth (-od)");
     }
     const auto first = static_cast<std::uint32_t>(tree_.nodes.size());
-    tree_.nodes.resize(tree_.nodes.size() + 8);
+    try {
+        tree_.nodes.resize(tree_.nodes.size() + 8);
+    } catch (const std::bad_alloc&) {
+        throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
+                         " ran out of memory at " + std::to_string(tree_.nodes.size()) +
+                         " nodes: lower -ol (now " + std::to_string(octlist_power_) +
+                         ") or the depth (-od)");
+    }
     return first;
 }
 
