@@ -151,3 +151,35 @@ TEST(VoxelMethods, EmptySceneAndBrokenRaysMissQuietly) {
 
 }  // namespace
 }  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+// The walk's slack grows with the distance of the ray's origin, so rays from far away (where a
+// computed t strays further than the fudge) still get brute force's answer.
+TEST(VoxelMethods, RaysFromFarAwayMatchBruteForce) {
+    const Scene scene = random_triangle_soup(300, 71);
+    std::mt19937 rng(72);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<RayCase> rays;
+    for (const double distance : {30.0, 1e3, 1e6}) {
+        for (int i = 0; i < 3000; ++i) {
+            const Vec3 away = normalize(Vec3{normal(rng), normal(rng), normal(rng)}) * distance;
+            const Vec3 target{unit(rng), unit(rng), unit(rng)};
+            RayCase c;
+            c.ray.origin = Vec3{0.5, 0.5, 0.5} + away;
+            c.ray.direction = target - c.ray.origin;
+            rays.push_back(c);
+        }
+    }
+    for (AccelSettings settings : voxel_methods()) {
+        settings.seads_resolution = 16;
+        settings.octree_depth = 7;
+        const auto accel = make_accelerator(scene, settings);
+        expect_same_as_brute_force(scene, *accel, rays);
+    }
+}
+
+}  // namespace
+}  // namespace rt::test
