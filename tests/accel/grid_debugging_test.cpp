@@ -52,7 +52,6 @@ TEST(StrikeCheck, ReportsEachDifferenceWithTheVoxelsVisited) {
     const StrikeCheck check(scene, make_accelerator(scene, seads(12, true)), {true, true},
                             printed.sink());
     TraceCounters counters;
-    std::optional<Hit> returned;
     for (const RayCase& c : random_rays({{0, 0, 0}, {1, 1, 1}}, 3000, 54)) {
         (void)check.closest_hit(c.ray, c.t, counters);
     }

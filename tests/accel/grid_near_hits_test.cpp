@@ -126,3 +126,60 @@ TEST(NearHitsAcceptedAtOnce, AndNoFudgeReturnOnlyRealHits) {
 
 }  // namespace
 }  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+// Nothing to find, or nothing to look with: no hit, no crash.
+TEST(VoxelMethods, EmptySceneAndBrokenRaysMissQuietly) {
+    const Scene empty = SceneBuilder().scene();
+    const Scene box = make_box({0, 0, 0}, {1, 1, 1}, true);
+    const double nan = std::nan("");
+    for (const AccelSettings& settings : voxel_methods()) {
+        TraceCounters counters;
+        const auto on_empty = make_accelerator(empty, settings);
+        EXPECT_FALSE(on_empty->closest_hit({{0, 0, -1}, {0, 0, 1}}, {}, counters));
+        EXPECT_FALSE(on_empty->occluded({{0, 0, -1}, {0, 0, 1}}, {}, counters));
+        const auto on_box = make_accelerator(box, settings);
+        EXPECT_FALSE(on_box->closest_hit({{0.5, 0.5, -1}, {0, 0, 0}}, {}, counters));
+        EXPECT_FALSE(on_box->closest_hit({{0.5, 0.5, -1}, {nan, 0, 1}}, {}, counters));
+        EXPECT_FALSE(on_box->closest_hit({{nan, 0.5, -1}, {0, 0, 1}}, {}, counters));
+        EXPECT_FALSE(on_box->occluded({{0.5, 0.5, -1}, {0, 0, 1}}, {0.0, 0.5}, counters));
+        EXPECT_TRUE(on_box->closest_hit({{0.5, 0.5, -1}, {0, 0, 1}}, {}, counters));
+    }
+}
+
+}  // namespace
+}  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+// The walk's slack grows with the distance of the ray's origin, so rays from far away (where a
+// computed t strays further than the fudge) still get brute force's answer.
+TEST(VoxelMethods, RaysFromFarAwayMatchBruteForce) {
+    const Scene scene = random_triangle_soup(300, 71);
+    std::mt19937 rng(72);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<RayCase> rays;
+    for (const double distance : {30.0, 1e3, 1e6}) {
+        for (int i = 0; i < 3000; ++i) {
+            const Vec3 away = normalize(Vec3{normal(rng), normal(rng), normal(rng)}) * distance;
+            const Vec3 target{unit(rng), unit(rng), unit(rng)};
+            RayCase c;
+            c.ray.origin = Vec3{0.5, 0.5, 0.5} + away;
+            c.ray.direction = target - c.ray.origin;
+            rays.push_back(c);
+        }
+    }
+    for (AccelSettings settings : voxel_methods()) {
+        settings.seads_resolution = 16;
+        settings.octree_depth = 7;
+        const auto accel = make_accelerator(scene, settings);
+        expect_same_as_brute_force(scene, *accel, rays);
+    }
+}
+
+}  // namespace
+}  // namespace rt::test

@@ -1,12 +1,14 @@
 // voxel_bench: build time, memory and single-thread rays per second of SEADS and the octree on
 // tessellated spheres of 1k to 1M triangles (the yardstick). Usage:
-//   [SIDE=n] [DEPTH=n] build/bin/voxel_bench [max_triangles [rays [min_triangles]]]
+//   [ONLY=seads|octree] [SIDE=n] [DEPTH=n] build/bin/voxel_bench [max_triangles [rays
+//   [min_triangles]]]
 // Rays are eye rays through a square grid of pixels in raster order, as the renderer traces them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <string>
 #include <vector>
 
 #include "rt/accel/make_accelerator.h"
@@ -116,6 +118,7 @@ void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_
 int main(int argc, char** argv) {
     const int max_triangles = argc > 1 ? std::atoi(argv[1]) : 1000000;
     const int ray_count = argc > 2 ? std::atoi(argv[2]) : 200000;
+    const char* only = std::getenv("ONLY");  // "seads" or "octree": measure just that one
     const int min_triangles = argc > 3 ? std::atoi(argv[3]) : 1000;
     for (int triangles = min_triangles; triangles <= max_triangles; triangles *= 10) {
         const rt::Scene scene = sphere(triangles);
@@ -125,11 +128,15 @@ int main(int argc, char** argv) {
         // sphere: finer grids walk more empty voxels than they save tests).
         seads.seads_resolution =
             from_environment("SIDE", rt::suggested_seads_resolution(triangles));
-        measure(scene, seads, ray_count);
+        if (only == nullptr || std::string(only) == "seads") {
+            measure(scene, seads, ray_count);
+        }
         rt::AccelSettings octree;
         octree.kind = rt::AccelKind::Octree;
         octree.octree_depth = from_environment("DEPTH", rt::suggested_octree_depth(triangles));
-        measure(scene, octree, ray_count);
+        if (only == nullptr || std::string(only) == "octree") {
+            measure(scene, octree, ray_count);
+        }
     }
     return 0;
 }

@@ -89,8 +89,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-on"},
     {.spelling = "-of", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.no_fudge = true; },
      .summary = "Don't fudge (ddda is precise enough)",
-     .details = "Files polygons in voxels without the fudge (voxels grown by 2^-24 of the world); "
-                "answers may then differ from brute force at voxel faces.", .section = "App.",
+     .details = "No fudge: polygons are filed in voxels without growing them (by 2^-24 of "
+                "the world) and hits are accepted without the rounding slack; answers may then "
+                "differ from brute force at voxel faces.", .section = "App.",
      .example = "-of"},
     {.spelling = "-op", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.new_fillplane = true; },

@@ -31,8 +31,9 @@ std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters
         return std::nullopt;
     }
     NearestHitSearch search(scene_, boxes_, space, t, counters);
-    NearHitRule rule(rules_);
-    walk_octree(tree_, ray, t,
+    const double slack = rounding_slack(ray, tree_.world, rules_);
+    NearHitRule rule(rules_, slack);
+    walk_octree(tree_, ray, walk_interval(t, slack),
                 [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
                     search.test(polygons);
                     return rule.ends_walk(search.nearest(), t_exit, counters);
@@ -47,7 +48,7 @@ bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const
     }
     AnyHitSearch search(scene_, boxes_, space, t, counters);
     bool hit = false;
-    walk_octree(tree_, ray, t,
+    walk_octree(tree_, ray, walk_interval(t, rounding_slack(ray, tree_.world, rules_)),
                 [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {
                     ++counters.voxels_stepped;
                     hit = search.test(polygons);

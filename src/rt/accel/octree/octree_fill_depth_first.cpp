@@ -37,7 +37,11 @@ OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSetting
     root.size = std::int64_t{1} << settings.depth;
     std::vector<ChildLists> scratch(static_cast<std::size_t>(settings.depth) + 1);
     fill(fill_state, 0, root, fill_state.all_polygons(), scratch);
-    return std::move(fill_state.tree());
+    // The pool grew by doubling; give back the slack so memory_bytes() is what the tree needs.
+    OctreeTree& tree = fill_state.tree();
+    tree.nodes.shrink_to_fit();
+    tree.polygons.shrink_to_fit();
+    return std::move(tree);
 }
 
 }  // namespace rt

@@ -1,6 +1,8 @@
 #include "rt/accel/octree/octree_split.h"
 
 #include <algorithm>
+#include <bit>
+#include <new>
 #include <numeric>
 #include <string>
 
@@ -43,7 +45,12 @@ OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) 
     tree_.world = world_box(scene, true);
     tree_.step = tree_.world.extent() * (1.0 / static_cast<double>(std::int64_t{1} << tree_.depth));
     // -ss: the pool's first allocation; it then doubles as needed, up to the -ol limit.
-    tree_.nodes.reserve(pool_limit(seed));
+    try {
+        tree_.nodes.reserve(pool_limit(seed));
+    } catch (const std::bad_alloc&) {
+        throw UsageError("-ss " + std::to_string(seed) + ": cannot allocate 2^" +
+                         std::to_string(seed) + " octree nodes at once; lower -ss");
+    }
     tree_.nodes.emplace_back();
     fudge_ = voxel_fudge(tree_.world, settings.no_fudge);
     bounds_.reserve(scene.polygons.size());
@@ -66,7 +73,14 @@ std::uint32_t OctreeFill::allocate_children() {
                          std::to_string(octlist_power_) + ") or lower the depth (-od)");
     }
     const auto first = static_cast<std::uint32_t>(tree_.nodes.size());
-    tree_.nodes.resize(tree_.nodes.size() + 8);
+    try {
+        tree_.nodes.resize(tree_.nodes.size() + 8);
+    } catch (const std::bad_alloc&) {
+        throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
+                         " ran out of memory at " + std::to_string(tree_.nodes.size()) +
+                         " nodes: lower -ol (now " + std::to_string(octlist_power_) +
+                         ") or the depth (-od)");
+    }
     return first;
 }
 
@@ -88,6 +102,38 @@ Box OctreeFill::cell_box(const OctreeCell& cell) const {
     return box;
 }
 
+int OctreeFill::children_reached(std::uint32_t polygon, const double middle[3]) const {
+    // Which halves along each axis the polygon's box reaches (the node's own box it reaches
+    // already). Child c takes the upper half on the axes of its set bits, the lower on the others.
+    const Box& b = bounds_[polygon];
+    int lower = 0;
+    int upper = 0;
+    for (int a = 0; a < 3; ++a) {
+        lower |= (b.lo[a] <= middle[a] + fudge_ ? 1 : 0) << a;
+        upper |= (b.hi[a] >= middle[a] - fudge_ ? 1 : 0) << a;
+    }
+    int reached = 0;
+    for (int c = 0; c < 8; ++c) {
+        if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
+            reached |= 1 << c;
+        }
+    }
+    return reached;
+}
+
+bool OctreeFill::touches(std::uint32_t polygon, const OctreeCell& child) const {
+    // A child holding one of the corners certainly touches the polygon; only the others need the
+    // exact test (for a small polygon across one midplane, none does).
+    const Box box = cell_box(child).padded(fudge_);
+    const Polygon& p = scene_.polygons[polygon];
+    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+        if (box.contains(scene_.corner_position(p, k))) {
+            return true;
+        }
+    }
+    return polygon_overlaps_box(scene_, polygon, box);
+}
+
 void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>& polygons,
                        std::array<std::vector<std::uint32_t>, 8>& children) const {
     for (auto& child : children) {
@@ -98,47 +144,14 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
         middle[a] = tree_.lattice(a, cell.origin[a] + cell.size / 2);
     }
     for (const std::uint32_t id : polygons) {
-        // Which halves along each axis the polygon's box reaches (the node's own box it reaches
-        // already); a polygon within one child needs no exact test.
-        const Box& b = bounds_[id];
-        int lower = 0;
-        int upper = 0;
-        for (int a = 0; a < 3; ++a) {
-            lower |= (b.lo[a] <= middle[a] + fudge_ ? 1 : 0) << a;
-            upper |= (b.hi[a] >= middle[a] - fudge_ ? 1 : 0) << a;
-        }
-        int candidates = 0;
-        int only = 0;
-        for (int c = 0; c < 8; ++c) {
-            // Child c takes the upper half on the axes of its set bits, the lower on the others.
-            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
-                ++candidates;
-                only = c;
-            }
-        }
-        if (candidates == 1) {
-            children[only].push_back(id);
+        const int reached = children_reached(id, middle);
+        if (std::has_single_bit(static_cast<unsigned>(reached))) {
+            // Within one child's half on every axis: no exact test needed.
+            children[std::countr_zero(static_cast<unsigned>(reached))].push_back(id);
             continue;
         }
-        // A child holding one of the corners certainly touches the polygon; only the others
-        // need the exact test (for a small polygon across one midplane, none does).
-        std::array<Box, 8> boxes;
-        int holds_corner = 0;
-        const Polygon& p = scene_.polygons[id];
         for (int c = 0; c < 8; ++c) {
-            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
-                boxes[c] = cell_box(cell.child(c)).padded(fudge_);
-                for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-                    if (boxes[c].contains(scene_.corner_position(p, k))) {
-                        holds_corner |= 1 << c;
-                        break;
-                    }
-                }
-            }
-        }
-        for (int c = 0; c < 8; ++c) {
-            if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0 &&
-                (((holds_corner >> c) & 1) != 0 || polygon_overlaps_box(scene_, id, boxes[c]))) {
+            if (((reached >> c) & 1) != 0 && touches(id, cell.child(c))) {
                 children[c].push_back(id);
             }
         }

@@ -43,6 +43,10 @@ public:
 
 private:
     Box cell_box(const OctreeCell& cell) const;
+    /// Bit c set: the polygon's box reaches child c (each grown by the fudge).
+    int children_reached(std::uint32_t polygon, const double middle[3]) const;
+    /// Whether the polygon touches the child grown by the fudge.
+    bool touches(std::uint32_t polygon, const OctreeCell& child) const;
 
     const Scene& scene_;
     OctreeTree tree_;

@@ -20,8 +20,9 @@ std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters&
         return std::nullopt;
     }
     NearestHitSearch search(scene_, boxes_, space, t, counters);
-    NearHitRule rule(rules_);
-    walk_seads(grid_, ray, t,
+    const double slack = rounding_slack(ray, grid_.world, rules_);
+    NearHitRule rule(rules_, slack);
+    walk_seads(grid_, ray, walk_interval(t, slack),
                [&](std::span<const std::uint32_t> polygons, double t_exit, const int*) {
                    search.test(polygons);
                    return rule.ends_walk(search.nearest(), t_exit, counters);
@@ -36,11 +37,12 @@ bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const 
     }
     AnyHitSearch search(scene_, boxes_, space, t, counters);
     bool hit = false;
-    walk_seads(grid_, ray, t, [&](std::span<const std::uint32_t> polygons, double, const int*) {
-        ++counters.voxels_stepped;
-        hit = search.test(polygons);
-        return hit;
-    });
+    walk_seads(grid_, ray, walk_interval(t, rounding_slack(ray, grid_.world, rules_)),
+               [&](std::span<const std::uint32_t> polygons, double, const int*) {
+                   ++counters.voxels_stepped;
+                   hit = search.test(polygons);
+                   return hit;
+               });
     return hit;
 }
 

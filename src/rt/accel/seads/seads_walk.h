@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #include "rt/accel/seads/seads_grid.h"
@@ -30,26 +31,30 @@ void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit
         cell[a] = static_cast<int>(std::clamp(c, 0.0, static_cast<double>(grid.side - 1)));
         step[a] = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
     }
-    // Each boundary's t is computed afresh from the integer voxel number (not by adding deltas),
-    // so the error stays that of a few products however long the walk (far below the fudge).
+    // The first boundary's t from the voxel number, then one voxel's width in t per step
+    // (Amanatides and Woo). The sum's rounding after even 3 x 1024 steps is some 1e-13 of t, far
+    // below the fudge; the voxel number itself is kept in integers.
     const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
-    auto boundary_t = [&](int a) {
+    double t_delta[3];
+    for (int a = 0; a < 3; ++a) {
         if (step[a] == 0) {
-            return kNever;
+            t_next[a] = kNever;
+            t_delta[a] = 0.0;
+            continue;
         }
         const int plane = cell[a] + (step[a] > 0 ? 1 : 0);
         const double x = grid.world.lo[a] + plane * grid.voxel_size[a];
-        return (x - ray.origin[a]) * inverse[a];
-    };
-    for (int a = 0; a < 3; ++a) {
-        t_next[a] = boundary_t(a);
+        t_next[a] = (x - ray.origin[a]) * inverse[a];
+        t_delta[a] = grid.voxel_size[a] * std::fabs(inverse[a]);
     }
+    const std::ptrdiff_t side = grid.side;
+    const std::ptrdiff_t stride[3] = {step[0], step[1] * side, step[2] * side * side};
+    std::size_t voxel = grid.index(cell[0], cell[1], cell[2]);
     while (true) {
         const int axis = t_next[0] < t_next[1] ? (t_next[0] < t_next[2] ? 0 : 2)
                                                : (t_next[1] < t_next[2] ? 1 : 2);
         const double t_exit = t_next[axis];
-        if (visit(grid.voxel_if_occupied(grid.index(cell[0], cell[1], cell[2])), t_exit,
-                  static_cast<const int*>(cell))) {
+        if (visit(grid.voxel_if_occupied(voxel), t_exit, static_cast<const int*>(cell))) {
             return;
         }
         if (!(t_exit < inside.max)) {
@@ -59,7 +64,8 @@ void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit
         if (cell[axis] < 0 || cell[axis] >= grid.side) {
             return;
         }
-        t_next[axis] = boundary_t(axis);
+        voxel += static_cast<std::size_t>(stride[axis]);
+        t_next[axis] += t_delta[axis];
     }
 }
 

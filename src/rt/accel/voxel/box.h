@@ -28,11 +28,10 @@ struct Box {
 Box world_box(const Scene& scene, bool cube);
 
 /// "The fudge" (-of turns it off): how far every voxel is grown when deciding which polygons go
-/// into it, 2^-24 of the world's largest side. It makes the voxel methods exact: a hit computed in
-/// floating point may stray from its polygon by rounding, and the walk's voxel boundaries by a
-/// little more; with every polygon also filed in the voxels within the fudge of it, a polygon
-/// the walk has not met yet cannot have a t below the current voxel's exit (see
-/// docs/accelerators.md). Zero with -of.
+/// into it, 2^-24 of the world's largest side. The walk's voxel boundaries and entry point are
+/// computed in floating point and may cut a voxel's corner by rounding; with every polygon also
+/// filed in the voxels within the fudge of it, a polygon the ray touches is still met. (The
+/// rounding of the hit's own t is the per-ray slack's job: near_hit_rule.h.) Zero with -of.
 double voxel_fudge(const Box& world, bool no_fudge);
 
 /// The smallest box around the polygon's corners.

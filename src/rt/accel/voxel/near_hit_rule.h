@@ -12,19 +12,34 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator.h"
+#include "rt/accel/voxel/box.h"
 
 namespace rt {
 
 struct WalkRules {
     bool accept_near_hits = false;                                                    ///< -on
     std::uint64_t fruitless_voxel_limit = std::numeric_limits<std::uint64_t>::max();  ///< -tv
+    bool no_fudge = false;                                                            ///< -of
 
     static WalkRules from(const AccelSettings& settings);
 };
 
+/// How far in t a computed hit may lie from its true point, for this ray: the plane's t is off by
+/// a few units in the last place of the distance from the ray's origin, divided by |cos| >= 1e-6
+/// (below that intersect_polygon leaves the plane), so 2^-29 of (distance to the world's centre
+/// plus the world's size) covers it. The walk starts and ends that much beyond the interval and
+/// accepts a hit only that much before a voxel's exit, so it stays exact wherever the origin is.
+/// Zero with -of.
+double rounding_slack(const Ray& ray, const Box& world, const WalkRules& rules);
+
+/// The interval to walk for a ray asked about `t`: `t` widened by the slack at both ends.
+inline Interval walk_interval(Interval t, double slack) {
+    return {t.min - slack, t.max + slack};
+}
+
 class NearHitRule {
 public:
-    explicit NearHitRule(const WalkRules& rules) : rules_(rules) {}
+    NearHitRule(const WalkRules& rules, double slack) : rules_(rules), slack_(slack) {}
 
     /// Called after each voxel's polygons are tested, with the nearest hit so far and the t at
     /// which the ray leaves that voxel: whether the walk ends here. Counts the voxel and any new
@@ -34,7 +49,7 @@ public:
         if (!nearest) {
             return ++fruitless_ >= rules_.fruitless_voxel_limit;
         }
-        if (nearest->t <= t_exit) {
+        if (nearest->t <= t_exit - slack_) {
             return true;
         }
         if (!counted_any_ || last_.t != nearest->t || last_.polygon != nearest->polygon) {
@@ -47,6 +62,7 @@ public:
 
 private:
     WalkRules rules_;
+    double slack_ = 0.0;
     std::uint64_t fruitless_ = 0;
     Hit last_;  ///< the last near hit counted (a plain Hit: GCC 12 misreads an optional here)
     bool counted_any_ = false;

@@ -20,7 +20,6 @@ namespace rt {
 /// then tested again with the same result: never wrong, just slower.
 class TestedPolygons {
 public:
-    TestedPolygons() { slots_.fill(kEmpty); }
     /// True if `id` was tested already; otherwise records it and returns false.
     bool seen(std::uint32_t id) {
         std::uint32_t& slot = slots_[id % kSlots];
@@ -34,7 +33,12 @@ public:
 private:
     static constexpr std::uint32_t kSlots = 64;
     static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
-    std::array<std::uint32_t, kSlots> slots_;
+    static constexpr std::array<std::uint32_t, kSlots> kAllEmpty = [] {
+        std::array<std::uint32_t, kSlots> slots{};
+        slots.fill(kEmpty);
+        return slots;
+    }();
+    std::array<std::uint32_t, kSlots> slots_ = kAllEmpty;
 };
 
 /// The nearest hit over every polygon tested so far along one ray: nearest t strictly inside the
