@@ -168,3 +168,26 @@ TEST(RtProfile, DashRFiresRandomRaysAndWritesNoPicture) {
 
 }  // namespace
 }  // namespace rt::test
+
+namespace rt::test {
+namespace {
+
+TEST(RtDebugColor, DashDdPrintsTheMapAndEveryPixel) {
+    const TempDir dir;
+    const ProgramResult r = run_program(
+        "rt", {(source_dir() / "scenes/twocubes").string(), "-n", "--quiet", "-dd", "-L2"},
+        dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("color map: display value = intensity x 255 x 1"), std::string::npos);
+    // Rows 0..2 of a 512-wide window, drawn bottom up: row 2 first.
+    std::size_t pixels = 0;
+    for (std::size_t at = r.err.find("\npixel "); at != std::string::npos;
+         at = r.err.find("\npixel ", at + 1)) {
+        ++pixels;
+    }
+    EXPECT_EQ(pixels, 3U * 512U);
+    EXPECT_LT(r.err.find("pixel 0 2:"), r.err.find("pixel 0 0:"));
+}
+
+}  // namespace
+}  // namespace rt::test

@@ -14,6 +14,7 @@
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
 #include "rt/core/text.h"
+#include "rt/image/display_mapping.h"
 #include "rt/image/image_writer.h"
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
@@ -21,6 +22,8 @@
 #include "rt/scene/load_scene.h"
 #include "rt/shading/lights.h"
 #include "rt/shading/weight_scaling.h"
+
+#include <fmt/format.h>
 
 namespace rt {
 
@@ -200,6 +203,24 @@ private:
     bool print_samples_;
 };
 
+// -dd: the colour map (here, the display mapping) and every pixel's display value, in the order
+// the rows were drawn (bottom up), with the intensity behind it.
+void print_colors(const Film& film, const RunConsole& console) {
+    const DisplayMapping& m = film.mapping;
+    console.trace(fmt::format(
+        "color map: display value = intensity x 255 x {} ({})", m.multiplier,
+        m.clip ? "over 255 scaled down keeping the hue" : "not clipped: over 255 wraps"));
+    const FilmWindow& w = film.window();
+    for (int y = w.bottom; y >= std::max(w.top, film.first_finished_row()); --y) {
+        for (int x = w.left; x <= w.right; ++x) {
+            const Rgb v = film.pixel(x, y);
+            const std::array<std::uint8_t, 3> d = to_display(v, m);
+            console.trace(fmt::format("pixel {} {}: {} {} {} (intensity {:.6g} {:.6g} {:.6g})", x,
+                                      y, d[0], d[1], d[2], v.r, v.g, v.b));
+        }
+    }
+}
+
 void write_outputs(const Film& film, const Options& options) {
     if (!options.no_gro) {
         write_image(film, default_gro_path(options.scene));
@@ -305,6 +326,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     film.mapping = {options.display_multiplier, options.clip_intensity};
     film.provenance = {options.scene, join(options.given_switches),
                        std::string("rt ") + std::string(kVersion), utc_now()};
+    if (options.debug_color) {
+        print_colors(film, console);
+    }
     phase = Clock::now();
     write_outputs(film, options);
     times.write_seconds = seconds_since(phase);

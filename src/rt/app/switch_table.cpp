@@ -388,8 +388,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-df"},
     {.spelling = "-dd", .topic = Debugging, .apply = [](Options& o, A) { o.debug_color = true; },
      .summary = "debug color info",
-     .details = "Prints the color map and the pixel values as they are output.", .section = "App.",
-     .example = "-dd", .status = NotYet, .feature = "the color debug output"},
+     .details = "Prints the color map (the display mapping of -m and -c) and every pixel's display "
+                "value and intensity, row by row from the bottom, on standard error.", .section = "App.",
+     .example = "-dd"},
     {.spelling = "-dx", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_chi_square = true; }, .summary = "Debug chi-square stuff",
      .details = "Prints, for each pixel, the samples taken, the intersections that distributed rays "
