@@ -189,5 +189,19 @@ TEST(RtDebugColor, DashDdPrintsTheMapAndEveryPixel) {
     EXPECT_LT(r.err.find("pixel 0 2:"), r.err.find("pixel 0 0:"));
 }
 
+TEST(RtDebugFill, DashDofTracesTheFillPlaneLevels) {
+    const TempDir dir;
+    const ProgramResult r = run_program(
+        "rt", {(source_dir() / "scenes/twocubes").string(), "-n", "--quiet", "-op", "-dof"},
+        dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // twocubes asks for an octree of depth 4: levels 0 to 4, the root always split.
+    EXPECT_NE(r.err.find("fill-plane level 0: 1 nodes, 71 polygon references, 0 leaves, 1 split"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("fill-plane level 4:"), std::string::npos);
+    EXPECT_EQ(r.err.find("fill-plane level 5:"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace rt::test

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace rt {
@@ -31,6 +33,8 @@ struct AccelSettings {
     bool accept_near_hits = false;              ///< -on
     bool no_fudge = false;                      ///< -of
     std::optional<int> terminate_after_voxels;  ///< -tv
+    /// -dof: told, level by level, what the -op fill did (may be empty).
+    std::function<void(const std::string&)> fill_trace;
 };
 
 }  // namespace rt

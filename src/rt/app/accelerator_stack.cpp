@@ -46,7 +46,13 @@ namespace {
 // the same picture; one asked for by --accel is refused.
 std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options& o,
                                                const RunConsole& console) {
-    const AccelSettings settings = accel_settings(scene, o);
+    AccelSettings settings = accel_settings(scene, o);
+    if (o.debug_fillplane) {
+        settings.fill_trace = console.trace;
+        if (!settings.new_fillplane || settings.kind != AccelKind::Octree) {
+            console.note("-dof traces the -op octree fill only; nothing to trace here");
+        }
+    }
     try {
         return make_accelerator(scene, settings);
     } catch (const NotImplementedError& e) {

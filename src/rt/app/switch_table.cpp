@@ -380,8 +380,8 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .section = "App.", .example = "-doi", .status = NotYet, .feature = kOctreeDebug},
     {.spelling = "-dof", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_fillplane = true; }, .summary = "Debug octree fillplane",
-     .details = "Debugs the new fillplane routines.", .section = "App.", .example = "-dof",
-     .status = NotYet, .feature = kOctreeDebug},
+     .details = "Traces the -op fill-plane build of the octree level by level on standard error: "
+                "nodes, polygon references, leaves and splits of each level. Only with -op.", .section = "App.", .example = "-dof"},
     {.spelling = "-df", .topic = Debugging, .apply = [](Options& o, A) { o.trace_parsing = true; },
      .summary = "(file) debug file parsing",
      .details = "Traces the parsing of every file read, on stderr.", .section = "App.",

@@ -14,6 +14,7 @@ OctreeBuildSettings octree_build_settings(const AccelSettings& settings) {
     build.octlist_power = settings.octlist_power;
     build.seed_size_power = settings.seed_size_power;
     build.no_fudge = settings.no_fudge;
+    build.fill_trace = settings.fill_trace;
     return build;
 }
 

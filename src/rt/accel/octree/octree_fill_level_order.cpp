@@ -8,6 +8,8 @@
 
 #include "rt/accel/octree/octree_split.h"
 
+#include <fmt/format.h>
+
 namespace rt {
 
 namespace {
@@ -56,10 +58,14 @@ OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSetting
     level[0].cell.size = std::int64_t{1} << settings.depth;
     level[0].polygons = fill_state.all_polygons();
     std::array<std::vector<std::uint32_t>, 8> children;
-    while (!level.empty()) {
+    for (int depth = 0; !level.empty(); ++depth) {
         std::vector<PendingNode> next;
+        std::size_t references = 0;
+        std::size_t leaves = 0;
         for (PendingNode& node : level) {
+            references += node.polygons.size();
             if (!fill_state.splits(node.cell.level, node.polygons.size())) {
+                ++leaves;
                 fill_state.make_leaf(node.index, node.polygons);
                 continue;
             }
@@ -71,6 +77,11 @@ OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSetting
                 next.push_back({first + static_cast<std::uint32_t>(c), node.cell.child(c),
                                 std::move(children[c])});
             }
+        }
+        if (settings.fill_trace) {
+            settings.fill_trace(fmt::format(
+                "fill-plane level {}: {} nodes, {} polygon references, {} leaves, {} split", depth,
+                level.size(), references, leaves, level.size() - leaves));
         }
         level = std::move(next);
     }

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "rt/accel/voxel/box.h"
@@ -53,9 +55,10 @@ struct OctreeTree {
 /// How to build: depth, -ol, -ss, -of.
 struct OctreeBuildSettings {
     int depth = 0;
-    std::optional<int> octlist_power;    ///< -ol: at most 2^n nodes
-    std::optional<int> seed_size_power;  ///< -ss: 2^n nodes allocated at first
-    bool no_fudge = false;               ///< -of
+    std::optional<int> octlist_power;                    ///< -ol: at most 2^n nodes
+    std::optional<int> seed_size_power;                  ///< -ss: 2^n nodes allocated at first
+    bool no_fudge = false;                               ///< -of
+    std::function<void(const std::string&)> fill_trace;  ///< -dof: the -op fill, level by level
 };
 
 /// The default fill: each node's polygons sent to its children depth first.
