@@ -7,7 +7,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/exit_culling/exit_culling.h"
-#include "rt/accel/zbuffer/pinhole_view.h"
+#include "rt/scene/pinhole_view.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

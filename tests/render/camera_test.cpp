@@ -61,8 +61,8 @@ TEST(Camera, LookingStraightDownStillHasAnUp) {
     const Camera c = Camera::from_view(v);
     const Ray r = c.primary_ray(100.0, 50.0);
     EXPECT_NEAR(r.direction.y, -1.0, 1e-12);
-    EXPECT_TRUE(is_finite(c.right()));
-    EXPECT_NEAR(length(c.up()), 1.0, 1e-12);
+    EXPECT_TRUE(is_finite(c.right));
+    EXPECT_NEAR(length(c.up), 1.0, 1e-12);
 }
 
 }  // namespace

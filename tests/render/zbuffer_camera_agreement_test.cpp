@@ -1,6 +1,5 @@
-// The accel module mirrors the camera in PinholeView (it cannot see render/). If the two ever
-// drift apart, the z-buffer would stop recognising eye rays or answer them from the wrong pixel;
-// this checks it against the real Camera.
+// The renderer's camera and the z-buffer share PinholeView; this checks that every eye ray the
+// renderer makes is recognised by the z-buffer and answered from its pixel as brute force would.
 #include "rt/accel/brute_force.h"
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
 #include "rt/core/diagnostics.h"
@@ -20,9 +19,6 @@ TEST(ZBufferCameraAgreement, EveryCameraRayIsAnsweredByTheItemBufferAsBruteForce
                                    ReaderDialect{}, diagnostics);
     const Camera camera = Camera::from_view(scene.view);
     const PinholeView view = PinholeView::from_view(scene.view);
-    EXPECT_EQ(camera.forward(), view.forward);
-    EXPECT_EQ(camera.right(), view.right);
-    EXPECT_EQ(camera.up(), view.up);
     const BruteForce brute(scene);
     const auto zbuffer = make_zbuffer_first_hits(scene, view, brute);
     TraceCounters brute_counters;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/accel/zbuffer/pinhole_view.h"
+#include "rt/scene/pinhole_view.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

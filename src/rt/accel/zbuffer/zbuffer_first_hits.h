@@ -9,7 +9,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/zbuffer/item_buffer.h"
-#include "rt/accel/zbuffer/pinhole_view.h"
+#include "rt/scene/pinhole_view.h"
 
 namespace rt {
 

@@ -1,7 +1,6 @@
-// The pinhole camera's geometry as the z-buffer needs it: eye, frame, screen and pixel grid. The
-// accel module cannot see render/camera.h, so this mirrors Camera::from_view() and
-// Camera::primary_ray() (manual 2.2: eye, look point, +y up, screen at screendist, view angles);
-// a render test checks that the two agree.
+// The pinhole camera of the .scn file (manual 2.2): eye, look point, +y up, a screen at
+// screendist, view angles, and the view area in pixels. The renderer's eye rays and the z-buffer's
+// projection both come from here, so they agree exactly.
 #pragma once
 
 #include "rt/geometry/ray.h"
@@ -20,11 +19,13 @@ struct PinholeView {
     int width = 1;  ///< view area in pixels
     int height = 1;
 
-    /// The frame of Camera::from_view(view).
+    /// Requires eye != look, positive screen distance and angles in (0, 180) degrees. "Up" is +y
+    /// (+z when looking straight up or down); +x is to the right: the view is left-handed.
     static PinholeView from_view(const SceneView& view);
 
-    /// As Camera::primary_ray(): the eye ray through a point of the view area in pixels ((0, 0)
-    /// the top-left corner of the top-left pixel), starting on the screen, unit direction.
+    /// The eye ray through a point of the view area in pixels ((0, 0) the top-left corner of the
+    /// top-left pixel, (width, height) the bottom-right corner of the last one). It starts on the
+    /// screen (objects between the eye and the screen are not seen) and has a unit direction.
     Ray primary_ray(double px, double py) const;
 
     /// The point of the view area, in pixels, where the line from the eye through `p` meets the

@@ -1,4 +1,4 @@
-#include "rt/accel/zbuffer/pinhole_view.h"
+#include "rt/scene/pinhole_view.h"
 
 #include <cmath>
 #include <numbers>
@@ -9,8 +9,8 @@ PinholeView PinholeView::from_view(const SceneView& view) {
     PinholeView v;
     v.eye = view.eye;
     v.forward = normalize(view.look - view.eye);
-    // As the camera: +y is up, and straight up or down +z stands in for it; the view is
-    // left-handed (+x right with z into the screen).
+    // +y is up, and straight up or down +z stands in for it; the view is left-handed (+x right
+    // with z into the screen), as the manual describes the original's internals.
     Vec3 world_up{0.0, 1.0, 0.0};
     if (length(cross(world_up, v.forward)) < 1e-12) {
         world_up = {0.0, 0.0, 1.0};
