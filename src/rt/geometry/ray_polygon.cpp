@@ -239,10 +239,16 @@ std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> co
 std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
                                         std::uint32_t polygon, Interval t) {
     const Polygon& p = scene.polygons[polygon];
-    const std::uint32_t* ids = scene.corners.data() + p.first_corner;
+    return intersect_polygon(space, scene.positions, scene.corners.data() + p.first_corner,
+                             p.corner_count, p.normal, t);
+}
+
+std::optional<double> intersect_polygon(const RaySpace& space, std::span<const Vec3> positions,
+                                        const std::uint32_t* ids, std::uint32_t count,
+                                        const Vec3& normal, Interval t) {
     return hit_of(
-        space, p.normal, p.corner_count,
-        [&](std::uint32_t k) -> const Vec3& { return scene.positions[ids[k]]; }, t);
+        space, normal, count, [&](std::uint32_t k) -> const Vec3& { return positions[ids[k]]; },
+        t);
 }
 
 std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,

@@ -78,6 +78,13 @@ std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> co
 std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
                                         std::uint32_t polygon, Interval t);
 
+/// The same test for a polygon given by its corners' indices into `positions` (Scene::corners
+/// order) and its normal: the Scene form calls this, so an accelerator keeping its own copy of
+/// the indices gets the same answer bit for bit without reading the Scene's polygon records.
+std::optional<double> intersect_polygon(const RaySpace& space, std::span<const Vec3> positions,
+                                        const std::uint32_t* ids, std::uint32_t count,
+                                        const Vec3& normal, Interval t);
+
 /// As above, preparing the ray itself.
 std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,
                                         Interval t);

@@ -30,12 +30,19 @@ struct alignas(64) Node {
 static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float),
               "FloatRay's plane offsets count on hi following lo");
 
-/// 160 bytes on a 32-byte boundary (three cache lines): four fan triangles (v0, v_i, v_i+1) of the
-/// leaf's polygons; unused lanes repeat the last triangle, so they add no candidate the exact test
-/// would not already see.
-struct alignas(32) TrianglePacket {
+/// In TrianglePacket::position, lane not a triangle polygon: the exact test reads the Scene.
+constexpr std::uint32_t kNotTriangle = 0xffffffffu;
+
+/// 208 bytes on a 16-byte boundary: four fan triangles (v0, v_i, v_i+1) of the leaf's polygons;
+/// unused lanes repeat the last triangle, so they add no candidate the exact test would not
+/// already see.
+struct alignas(16) TrianglePacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest
     std::uint32_t polygon[4];  ///< the scene polygon each lane belongs to (| kLastPacketBit)
+    /// [vertex][lane]: a triangle polygon's corners as indices into Scene::positions, in its
+    /// Scene::corners order, so the exact test need not read Scene::corners; position[0][lane]
+    /// is kNotTriangle for a lane of a polygon of more corners.
+    std::uint32_t position[3][4];
 };
 
 /// The whole structure as the builder leaves it and traversal reads it.

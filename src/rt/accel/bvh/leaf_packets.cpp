@@ -4,8 +4,10 @@ namespace rt::bvh {
 
 namespace {
 
-void set_lane(TrianglePacket& packet, int lane, const Vec3 (&corners)[3], std::uint32_t polygon) {
+void set_lane(TrianglePacket& packet, int lane, const Vec3 (&corners)[3], std::uint32_t polygon,
+              const std::uint32_t* positions) {
     for (int v = 0; v < 3; ++v) {
+        packet.position[v][lane] = positions != nullptr ? positions[v] : kNotTriangle;
         for (int k = 0; k < 3; ++k) {
             packet.corner[v][k][lane] = static_cast<float>(corners[v][k]);
         }
@@ -15,6 +17,7 @@ void set_lane(TrianglePacket& packet, int lane, const Vec3 (&corners)[3], std::u
 
 void copy_lane(TrianglePacket& packet, int from, int to) {
     for (int v = 0; v < 3; ++v) {
+        packet.position[v][to] = packet.position[v][from];
         for (int k = 0; k < 3; ++k) {
             packet.corner[v][k][to] = packet.corner[v][k][from];
         }
@@ -37,7 +40,9 @@ std::uint32_t append_leaf_packets(const Scene& scene, std::span<const PolygonRef
             }
             const Vec3 corners[3] = {scene.corner_position(p, 0), scene.corner_position(p, i),
                                      scene.corner_position(p, i + 1)};
-            set_lane(packets.back(), lane++, corners, ref.polygon);
+            const std::uint32_t* triangle =
+                p.corner_count == 3 ? scene.corners.data() + p.first_corner : nullptr;
+            set_lane(packets.back(), lane++, corners, ref.polygon, triangle);
         }
     }
     for (; lane < 4; ++lane) {
