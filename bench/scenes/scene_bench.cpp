@@ -4,8 +4,8 @@
 #include <exception>
 #include <iostream>
 
-#include "rt/app/run.h"
 #include "rt/app/accelerator_stack.h"
+#include "rt/app/run.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
@@ -38,12 +38,13 @@ int bench(const std::vector<std::string>& args) {
     auto start = std::chrono::steady_clock::now();
     rt::Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
-    const rt::Scene scene =
+    rt::Scene scene =
         rt::load_scene(rt::resolve_scene_path(options.scene), options.dialect, diagnostics);
     run.load_seconds = seconds_since(start);
 
     rt::RenderSettings settings;
     settings.shading = rt::shading_settings(options);
+    rt::prepare_scene(scene, options, settings.shading);  // -E, -K
     settings.window = rt::render_window(scene, options);
     settings.threads = options.threads;
     start = std::chrono::steady_clock::now();

@@ -16,6 +16,10 @@ ShadingSettings shading_settings(const Options& options);
 /// The scene's output matrix, cut at -L. Throws UsageError for an -L above the window.
 FilmWindow render_window(const Scene& scene, const Options& options);
 
+/// What the switches change in the loaded scene itself: -E's crease normals and -K's scaled
+/// weights (which depend on the lights the shading settings keep).
+void prepare_scene(Scene& scene, const Options& options, const ShadingSettings& settings);
+
 /// The intersection method comes from AcceleratorStack (rt/app/accelerator_stack.h).
 
 }  // namespace rt
