@@ -65,32 +65,37 @@ std::vector<std::uint32_t> OctreeFill::all_polygons() const {
     return ids;
 }
 
-std::uint32_t OctreeFill::allocate_children() {
-    if (tree_.nodes.size() + 8 > max_nodes_) {
+void OctreeFill::check_node_count(std::size_t nodes) const {
+    if (nodes > max_nodes_) {
         throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
                          " needs more than 2^" + std::to_string(octlist_power_) + " = " +
                          std::to_string(max_nodes_) + " nodes: raise -ol (now " +
                          std::to_string(octlist_power_) + ") or lower the depth (-od)");
     }
-    const auto first = static_cast<std::uint32_t>(tree_.nodes.size());
+}
+
+std::uint32_t OctreeFill::allocate_children(OctreeTree& tree) const {
+    check_node_count(tree.nodes.size() + 8);
+    const auto first = static_cast<std::uint32_t>(tree.nodes.size());
     try {
-        tree_.nodes.resize(tree_.nodes.size() + 8);
+        tree.nodes.resize(tree.nodes.size() + 8);
     } catch (const std::bad_alloc&) {
         throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
-                         " ran out of memory at " + std::to_string(tree_.nodes.size()) +
+                         " ran out of memory at " + std::to_string(tree.nodes.size()) +
                          " nodes: lower -ol (now " + std::to_string(octlist_power_) +
                          ") or the depth (-od)");
     }
     return first;
 }
 
-void OctreeFill::make_leaf(std::uint32_t index, const std::vector<std::uint32_t>& polygons) {
-    if (tree_.polygons.size() + polygons.size() >= OctreeNode::kInterior) {
+void OctreeFill::make_leaf(OctreeTree& tree, std::uint32_t index,
+                           const std::vector<std::uint32_t>& polygons) const {
+    if (tree.polygons.size() + polygons.size() >= OctreeNode::kInterior) {
         throw UsageError("the octree holds more than 2^32 polygon references: lower the depth");
     }
-    tree_.nodes[index] = {static_cast<std::uint32_t>(tree_.polygons.size()),
-                          static_cast<std::uint32_t>(polygons.size())};
-    tree_.polygons.insert(tree_.polygons.end(), polygons.begin(), polygons.end());
+    tree.nodes[index] = {static_cast<std::uint32_t>(tree.polygons.size()),
+                         static_cast<std::uint32_t>(polygons.size())};
+    tree.polygons.insert(tree.polygons.end(), polygons.begin(), polygons.end());
 }
 
 Box OctreeFill::cell_box(const OctreeCell& cell) const {
@@ -143,9 +148,25 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
     for (int a = 0; a < 3; ++a) {
         middle[a] = tree_.lattice(a, cell.origin[a] + cell.size / 2);
     }
-    for (const std::uint32_t id : polygons) {
+    // Deep in the tree a node's polygons lie scattered through memory, so their boxes and
+    // records are fetched some steps ahead, and their first corner's position a few steps later
+    // (it needs the record). Only the timing changes, never the result.
+    constexpr std::size_t kAhead = 16;
+    constexpr std::size_t kCornerAhead = 6;
+    const std::size_t count = polygons.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i + kAhead < count) {
+            const std::uint32_t later = polygons[i + kAhead];
+            __builtin_prefetch(&bounds_[later]);
+            __builtin_prefetch(&scene_.polygons[later]);
+        }
+        if (i + kCornerAhead < count) {
+            const Polygon& later = scene_.polygons[polygons[i + kCornerAhead]];
+            __builtin_prefetch(&scene_.corners[later.first_corner]);
+        }
+        const std::uint32_t id = polygons[i];
         const int reached = children_reached(id, middle);
-        if (std::has_single_bit(static_cast<unsigned>(reached))) {
+        if (reached != 0 && (reached & (reached - 1)) == 0) {
             // Within one child's half on every axis: no exact test needed.
             children[std::countr_zero(static_cast<unsigned>(reached))].push_back(id);
             continue;

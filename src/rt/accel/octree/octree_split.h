@@ -34,9 +34,17 @@ public:
     }
     /// Appends 8 children, each a leaf for now; returns the first's index. Throws UsageError
     /// naming -ol when the pool is full.
-    std::uint32_t allocate_children();
+    std::uint32_t allocate_children() { return allocate_children(tree_); }
+    /// The same on another tree (a subtree built apart, to be spliced into tree()).
+    std::uint32_t allocate_children(OctreeTree& tree) const;
     /// Turns node `index` into a leaf holding these polygons.
-    void make_leaf(std::uint32_t index, const std::vector<std::uint32_t>& polygons);
+    void make_leaf(std::uint32_t index, const std::vector<std::uint32_t>& polygons) {
+        make_leaf(tree_, index, polygons);
+    }
+    void make_leaf(OctreeTree& tree, std::uint32_t index,
+                   const std::vector<std::uint32_t>& polygons) const;
+    /// Throws the UsageError allocate_children() gives when the pool holds `nodes` > -ol nodes.
+    void check_node_count(std::size_t nodes) const;
     /// Sends each of the node's polygons to every child it touches (each grown by the fudge).
     void split(const OctreeCell& cell, const std::vector<std::uint32_t>& polygons,
                std::array<std::vector<std::uint32_t>, 8>& children) const;
