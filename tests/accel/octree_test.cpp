@@ -83,6 +83,26 @@ TEST(Octree, BothFillsBuildTheSameTree) {
     }
 }
 
+TEST(Octree, ThreadCountDoesNotChangeTheTree) {
+    const std::vector<Scene> scenes = {random_triangle_soup(3000, 34),
+                                       make_sphere({0, 0, 0}, 1.0, 24, 40, false)};
+    for (const Scene& scene : scenes) {
+        for (const int depth : {0, 1, 2, 6}) {
+            OctreeBuildSettings settings = at_depth(depth);
+            settings.threads = 1;
+            const OctreeTree one = build_octree_depth_first(scene, settings);
+            for (const unsigned threads : {2u, 3u, 16u, 64u}) {
+                settings.threads = threads;
+                const OctreeTree many = build_octree_depth_first(scene, settings);
+                EXPECT_EQ(one.nodes, many.nodes) << depth << " " << threads;
+                EXPECT_EQ(one.polygons, many.polygons) << depth << " " << threads;
+                EXPECT_EQ(many.nodes.capacity(), many.nodes.size());
+                EXPECT_EQ(many.polygons.capacity(), many.polygons.size());
+            }
+        }
+    }
+}
+
 TEST(Octree, SeedSizeDoesNotChangeTheTree) {
     const Scene scene = random_triangle_soup(400, 32);
     const OctreeTree a = build_octree_depth_first(scene, at_depth(6, 0));

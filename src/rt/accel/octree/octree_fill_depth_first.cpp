@@ -98,8 +98,8 @@ void place(const TopNode& node, std::uint32_t index, const std::vector<OctreeTre
     }
 }
 
-unsigned build_threads() {
-    return std::clamp(std::thread::hardware_concurrency(), 1u, 64u);
+unsigned build_threads(unsigned asked) {
+    return std::clamp(asked != 0 ? asked : std::thread::hardware_concurrency(), 1u, 64u);
 }
 
 }  // namespace
@@ -109,7 +109,7 @@ OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSetting
     OctreeTree& tree = fill_state.tree();
     OctreeCell root_cell;
     root_cell.size = std::int64_t{1} << settings.depth;
-    const unsigned threads = build_threads();
+    const unsigned threads = build_threads(settings.threads);
     if (threads <= 1) {
         std::vector<ChildLists> scratch(static_cast<std::size_t>(settings.depth) + 1);
         fill(fill_state, tree, 0, root_cell, fill_state.all_polygons(), scratch);

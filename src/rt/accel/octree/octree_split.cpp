@@ -149,10 +149,11 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
         middle[a] = tree_.lattice(a, cell.origin[a] + cell.size / 2);
     }
     // Deep in the tree a node's polygons lie scattered through memory, so their boxes and
-    // records are fetched some steps ahead, and their first corner's position a few steps later
-    // (it needs the record). Only the timing changes, never the result.
+    // records are fetched some steps ahead, their corner indices a few steps later (they need the
+    // record) and the corners' positions later still. Only the timing changes, never the result.
     constexpr std::size_t kAhead = 16;
-    constexpr std::size_t kCornerAhead = 6;
+    constexpr std::size_t kCornerAhead = 8;
+    constexpr std::size_t kPositionAhead = 3;
     const std::size_t count = polygons.size();
     for (std::size_t i = 0; i < count; ++i) {
         if (i + kAhead < count) {
@@ -163,6 +164,13 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
         if (i + kCornerAhead < count) {
             const Polygon& later = scene_.polygons[polygons[i + kCornerAhead]];
             __builtin_prefetch(&scene_.corners[later.first_corner]);
+        }
+        if (i + kPositionAhead < count) {
+            const Polygon& later = scene_.polygons[polygons[i + kPositionAhead]];
+            const std::uint32_t n = std::min<std::uint32_t>(later.corner_count, 4);
+            for (std::uint32_t k = 0; k < n; ++k) {
+                __builtin_prefetch(&scene_.positions[scene_.corners[later.first_corner + k]]);
+            }
         }
         const std::uint32_t id = polygons[i];
         const int reached = children_reached(id, middle);

@@ -58,6 +58,8 @@ struct OctreeBuildSettings {
     std::optional<int> octlist_power;                    ///< -ol: at most 2^n nodes
     std::optional<int> seed_size_power;                  ///< -ss: 2^n nodes allocated at first
     bool no_fudge = false;                               ///< -of
+    /// Threads for the default fill's subtrees (0: one a core); the tree is the same for any.
+    unsigned threads = 0;
     std::function<void(const std::string&)> fill_trace;  ///< -dof: the -op fill, level by level
 };
 
