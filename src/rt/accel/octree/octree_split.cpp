@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstddef>
 #include <new>
 #include <numeric>
 #include <string>
@@ -117,11 +118,13 @@ int OctreeFill::children_reached(std::uint32_t polygon, const double middle[3]) 
         lower |= (b.lo[a] <= middle[a] + fudge_ ? 1 : 0) << a;
         upper |= (b.hi[a] >= middle[a] - fudge_ ? 1 : 0) << a;
     }
-    int reached = 0;
-    for (int c = 0; c < 8; ++c) {
-        if ((c & ~upper) == 0 && ((~c & 7) & ~lower) == 0) {
-            reached |= 1 << c;
-        }
+    // Per axis, the children taking the upper half (bit a of c set) and the lower.
+    constexpr int kUpper[3] = {0xAA, 0xCC, 0xF0};
+    int reached = 0xFF;
+    for (int a = 0; a < 3; ++a) {
+        const int allowed = (((upper >> a) & 1) != 0 ? kUpper[a] : 0) |
+                            (((lower >> a) & 1) != 0 ? (~kUpper[a] & 0xFF) : 0);
+        reached &= allowed;
     }
     return reached;
 }
@@ -158,8 +161,13 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
     for (std::size_t i = 0; i < count; ++i) {
         if (i + kAhead < count) {
             const std::uint32_t later = polygons[i + kAhead];
-            __builtin_prefetch(&bounds_[later]);
-            __builtin_prefetch(&scene_.polygons[later]);
+            // A box (48 bytes) or a record may straddle two cache lines: fetch both ends.
+            const char* box = reinterpret_cast<const char*>(&bounds_[later]);
+            __builtin_prefetch(box);
+            __builtin_prefetch(box + sizeof(Box) - 1);
+            const char* record = reinterpret_cast<const char*>(&scene_.polygons[later]);
+            __builtin_prefetch(record);
+            __builtin_prefetch(record + offsetof(Polygon, normal) + sizeof(Vec3) - 1);
         }
         if (i + kCornerAhead < count) {
             const Polygon& later = scene_.polygons[polygons[i + kCornerAhead]];
