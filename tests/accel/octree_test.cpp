@@ -103,6 +103,29 @@ TEST(Octree, ThreadCountDoesNotChangeTheTree) {
     }
 }
 
+TEST(Octree, RunningOutOfOctlistIsTheSameErrorOnAnyThreadCount) {
+    const Scene scene = random_triangle_soup(3000, 35);
+    OctreeBuildSettings settings = at_depth(7);
+    settings.threads = 1;
+    const std::size_t needed = build_octree_depth_first(scene, settings).nodes.size();
+    int power = 0;
+    while ((std::size_t{1} << power) < needed) {
+        ++power;
+    }
+    for (const unsigned threads : {1u, 2u, 16u}) {
+        settings.threads = threads;
+        settings.octlist_power = power;
+        EXPECT_EQ(build_octree_depth_first(scene, settings).nodes.size(), needed) << threads;
+        settings.octlist_power = power - 1;
+        try {
+            build_octree_depth_first(scene, settings);
+            ADD_FAILURE() << "no error for -ol " << power - 1 << " on " << threads << " threads";
+        } catch (const UsageError& e) {
+            EXPECT_NE(std::string(e.what()).find("-ol"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(Octree, SeedSizeDoesNotChangeTheTree) {
     const Scene scene = random_triangle_soup(400, 32);
     const OctreeTree a = build_octree_depth_first(scene, at_depth(6, 0));
