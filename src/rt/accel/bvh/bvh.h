@@ -26,7 +26,7 @@ public:
     std::size_t memory_bytes() const override;
 
     /// For tests and the lab: the tree's size.
-    std::size_t node_count() const { return tree_.nodes.size(); }
+    std::size_t node_count() const { return tree_.wide.size(); }
     std::size_t packet_count() const { return tree_.packets.size(); }
 
 private:
