@@ -77,27 +77,90 @@ private:
     std::optional<Hit> best_;
 };
 
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define RT_BVH_AVX2 1
+const bool kHasAvx2 = __builtin_cpu_supports("avx2");
+
+__attribute__((target("avx2"))) inline __m256 load_pair(const bvh::TrianglePacket* packet, int v,
+                                                        int axis) {
+    return _mm256_set_m128(_mm_loadu_ps(packet[1].corner[v][axis]),
+                           _mm_loadu_ps(packet[0].corner[v][axis]));
+}
+
+// packet_candidates of two consecutive packets at once, lane for lane the same operations in the
+// same order (no FMA: target "avx2" alone does not allow contraction). Bits 4-7: the second.
+__attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePacket* packet,
+                                                         const bvh::FloatRay& ray) {
+    const __m256 ox = _mm256_set1_ps(ray.origin[ray.kx]);
+    const __m256 oy = _mm256_set1_ps(ray.origin[ray.ky]);
+    const __m256 oz = _mm256_set1_ps(ray.origin[ray.kz]);
+    const __m256 sx = _mm256_set1_ps(ray.shear_x);
+    const __m256 sy = _mm256_set1_ps(ray.shear_y);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 x[3];
+    __m256 y[3];
+    __m256 size = _mm256_setzero_ps();
+    for (int v = 0; v < 3; ++v) {
+        const __m256 az = _mm256_sub_ps(load_pair(packet, v, ray.kz), oz);
+        x[v] = _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.kx), ox), _mm256_mul_ps(sx, az));
+        y[v] = _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.ky), oy), _mm256_mul_ps(sy, az));
+        size = _mm256_max_ps(size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]),
+                                                 _mm256_andnot_ps(sign, y[v])));
+    }
+    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
+    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
+    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
+    const __m256 margin = _mm256_add_ps(
+        _mm256_mul_ps(size,
+                      _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
+                                    _mm256_mul_ps(size, _mm256_set1_ps(bvh::kRelativeSlack)))),
+        _mm256_set1_ps(ray.edge_margin_constant));
+    const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
+    const __m256 all_positive =
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
+                                    _mm256_cmp_ps(e1, negative_margin, _CMP_GE_OQ)),
+                      _mm256_cmp_ps(e2, negative_margin, _CMP_GE_OQ));
+    const __m256 all_negative = _mm256_and_ps(
+        _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
+        _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
+    return _mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative));
+}
+#endif
+
 // Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out, once per run
 // of equal ids (a polygon's fan triangles are adjacent). Stops early when visit returns true.
+// With AVX2, two packets at a time.
 template <class Visit>
 bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf,
                         const bvh::FloatRay& ray, Visit visit) {
     std::uint32_t previous = ~0u;
-    for (std::uint32_t index = leaf & ~kLeafBit;; ++index) {
-        const bvh::TrianglePacket& packet = packets[index];
-        for (int bits = bvh::packet_candidates(packet, ray); bits != 0; bits &= bits - 1) {
-            const int lane = std::countr_zero(static_cast<unsigned>(bits));
-            const std::uint32_t id = packet.polygon[lane] & ~kLastPacketBit;
+    for (std::uint32_t index = leaf & ~kLeafBit;;) {
+        const bvh::TrianglePacket* packet = &packets[index];
+        const bool last = (packet->polygon[3] & kLastPacketBit) != 0;
+        int bits;
+#ifdef RT_BVH_AVX2
+        const bool pair = kHasAvx2 && !last;
+        bits = pair ? pair_candidates_avx2(packet, ray) : bvh::packet_candidates(*packet, ray);
+#else
+        const bool pair = false;
+        bits = bvh::packet_candidates(*packet, ray);
+#endif
+        for (; bits != 0; bits &= bits - 1) {
+            const int bit = std::countr_zero(static_cast<unsigned>(bits));
+            const bvh::TrianglePacket& p = packet[bit >> 2];
+            const int lane = bit & 3;
+            const std::uint32_t id = p.polygon[lane] & ~kLastPacketBit;
             if (id != previous) {
                 previous = id;
-                if (visit(packet, lane, id)) {
+                if (visit(p, lane, id)) {
                     return true;
                 }
             }
         }
-        if ((packet.polygon[3] & kLastPacketBit) != 0) {
+        if (last || (pair && (packet[1].polygon[3] & kLastPacketBit) != 0)) {
             return false;
         }
+        index += pair ? 2 : 1;
     }
 }
 
@@ -168,8 +231,7 @@ std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::WideNode& node,
     return c[0].entry_on_stack.child;
 }
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#define RT_BVH_AVX2 1
+#ifdef RT_BVH_AVX2
 // The same test with one AVX2 register per plane: the same operations in the same order per lane
 // (no FMA: target "avx2" alone does not allow contraction into one).
 __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& node,
@@ -209,7 +271,6 @@ __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& n
     _mm256_store_ps(out.nearest, nearest);
 }
 
-const bool kHasAvx2 = __builtin_cpu_supports("avx2");
 #endif
 
 void test_wide_boxes(const bvh::WideNode& node, const bvh::BoxRay& ray, float t_min, float t_max,

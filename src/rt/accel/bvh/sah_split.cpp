@@ -8,7 +8,7 @@ namespace rt::bvh {
 
 namespace {
 
-constexpr int kBins = 16;
+constexpr int kBins = 32;
 // Cost of testing one node relative to one packet of four triangles.
 constexpr double kTraversalCost = 2.0;
 
