@@ -19,7 +19,7 @@ namespace {
 using bvh::kLastPacketBit;
 using bvh::kLeafBit;
 
-// The builder keeps the tree below 56 levels; each level pushes at most three siblings.
+// The builder keeps the tree below 56 levels; each (8-wide) level pushes at most seven siblings.
 constexpr int kStackSize = 512;
 
 struct StackEntry {
