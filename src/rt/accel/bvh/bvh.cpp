@@ -1,7 +1,7 @@
 #include "rt/accel/bvh/bvh.h"
-#include "rt/accel/bvh/collapse.h"
 
 #include "rt/accel/bvh/bvh_builder.h"
+#include "rt/accel/bvh/collapse.h"
 #include "rt/accel/bvh/polygon_references.h"
 
 namespace rt {

@@ -57,9 +57,9 @@ public:
         }
         // t <= the best t still comes back, so an equal-t polygon of lower id can win.
         const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
-        const std::optional<double> hit =
-            packet != nullptr ? exact_hit(*space_, scene, *packet, lane, id, search)
-                              : intersect_polygon(*space_, scene, id, search);
+        const std::optional<double> hit = packet != nullptr
+                                              ? exact_hit(*space_, scene, *packet, lane, id, search)
+                                              : intersect_polygon(*space_, scene, id, search);
         if (hit) {
             if (!best_ || *hit < best_->t || id < best_->polygon) {
                 best_ = Hit{*hit, id};
@@ -102,10 +102,12 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
     __m256 size = _mm256_setzero_ps();
     for (int v = 0; v < 3; ++v) {
         const __m256 az = _mm256_sub_ps(load_pair(packet, v, ray.kz), oz);
-        x[v] = _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.kx), ox), _mm256_mul_ps(sx, az));
-        y[v] = _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.ky), oy), _mm256_mul_ps(sy, az));
-        size = _mm256_max_ps(size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]),
-                                                 _mm256_andnot_ps(sign, y[v])));
+        x[v] =
+            _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.kx), ox), _mm256_mul_ps(sx, az));
+        y[v] =
+            _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.ky), oy), _mm256_mul_ps(sy, az));
+        size = _mm256_max_ps(
+            size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]), _mm256_andnot_ps(sign, y[v])));
     }
     const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
     const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
@@ -127,9 +129,9 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
 }
 #endif
 
-// Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out, once per run
-// of equal ids (a polygon's fan triangles are adjacent). Stops early when visit returns true.
-// With AVX2, two packets at a time.
+// Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out,
+// once per run of equal ids (a polygon's fan triangles are adjacent). Stops early when visit
+// returns true. With AVX2, two packets at a time.
 template <class Visit>
 bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf,
                         const bvh::FloatRay& ray, Visit visit) {
@@ -267,10 +269,10 @@ __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& n
     const __m256 depth_margin = _mm256_set1_ps(_mm_cvtss_f32(ray.depth_margin.v));
     nearest = _mm256_sub_ps(nearest, depth_margin);
     farthest = _mm256_add_ps(farthest, depth_margin);
-    const __m256 hit = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps(entry, exit, _CMP_LE_OQ),
-                      _mm256_cmp_ps(nearest, _mm256_set1_ps(t_max), _CMP_LE_OQ)),
-        _mm256_cmp_ps(farthest, _mm256_set1_ps(t_min), _CMP_GE_OQ));
+    const __m256 hit =
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(entry, exit, _CMP_LE_OQ),
+                                    _mm256_cmp_ps(nearest, _mm256_set1_ps(t_max), _CMP_LE_OQ)),
+                      _mm256_cmp_ps(farthest, _mm256_set1_ps(t_min), _CMP_GE_OQ));
     out.mask = _mm256_movemask_ps(hit);
     _mm256_store_ps(out.entry, entry);
     _mm256_store_ps(out.nearest, nearest);
@@ -402,8 +404,7 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         ++counters.nodes_visited;
         const bvh::WideNode& node = tree_.wide[child];
         test_wide_boxes(node, box_ray, t_min, t_max, hits);
-        for (int bits = hits.mask; bits != 0;
-             bits &= bits - 1) {
+        for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
             stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
         }
     }

@@ -79,8 +79,8 @@ std::uint32_t collapse(const Hierarchy& tree, std::uint32_t node_index,
             result.lo[k][c] = slots[c].lo[k];
             result.hi[k][c] = slots[c].hi[k];
         }
-        result.child[c] = is_leaf(slots[c].child) ? slots[c].child
-                                                  : collapse(tree, slots[c].child, wide);
+        result.child[c] =
+            is_leaf(slots[c].child) ? slots[c].child : collapse(tree, slots[c].child, wide);
     }
     wide[index] = result;
     return index;
