@@ -30,6 +30,16 @@ struct alignas(64) Node {
 static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float),
               "FloatRay's plane offsets count on hi following lo");
 
+/// 256 bytes on a 64-byte boundary: the node traversal reads, two levels of Node collapsed into
+/// up to eight children (collapse.cpp); the same conservative boxes, the same child words.
+struct alignas(64) WideNode {
+    float lo[3][8];  ///< [axis][child]
+    float hi[3][8];
+    std::uint32_t child[8];
+};
+static_assert(offsetof(WideNode, hi) == offsetof(WideNode, lo) + 24 * sizeof(float),
+              "BoxRay's plane offsets count on hi following lo");
+
 /// In TrianglePacket::position, lane not a triangle polygon: the exact test reads the Scene.
 constexpr std::uint32_t kNotTriangle = 0xffffffffu;
 
@@ -49,6 +59,8 @@ struct alignas(16) TrianglePacket {
 struct Hierarchy {
     std::vector<Node> nodes;
     std::vector<TrianglePacket> packets;
+    /// `nodes` collapsed to 8-wide (collapse.cpp); traversal reads these, `nodes` is then empty.
+    std::vector<WideNode> wide;
     std::uint32_t root = kNoChild;  ///< a child word; kNoChild for an empty scene
     /// Largest |coordinate| of any (inflated) box: the scale the float error bounds are taken at.
     double scale = 0.0;

@@ -3,6 +3,9 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#endif
 
 #include "rt/accel/bvh/box_test.h"
 #include "rt/accel/bvh/bvh.h"
@@ -16,8 +19,8 @@ namespace {
 using bvh::kLastPacketBit;
 using bvh::kLeafBit;
 
-// The builder keeps the tree below 56 levels; each level pushes at most three siblings.
-constexpr int kStackSize = 256;
+// The builder keeps the tree below 56 levels; each (8-wide) level pushes at most seven siblings.
+constexpr int kStackSize = 512;
 
 struct StackEntry {
     std::uint32_t child;
@@ -54,9 +57,9 @@ public:
         }
         // t <= the best t still comes back, so an equal-t polygon of lower id can win.
         const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
-        const std::optional<double> hit =
-            packet != nullptr ? exact_hit(*space_, scene, *packet, lane, id, search)
-                              : intersect_polygon(*space_, scene, id, search);
+        const std::optional<double> hit = packet != nullptr
+                                              ? exact_hit(*space_, scene, *packet, lane, id, search)
+                                              : intersect_polygon(*space_, scene, id, search);
         if (hit) {
             if (!best_ || *hit < best_->t || id < best_->polygon) {
                 best_ = Hit{*hit, id};
@@ -74,27 +77,92 @@ private:
     std::optional<Hit> best_;
 };
 
-// Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out, once per run
-// of equal ids (a polygon's fan triangles are adjacent). Stops early when visit returns true.
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define RT_BVH_AVX2 1
+const bool kHasAvx2 = __builtin_cpu_supports("avx2");
+
+__attribute__((target("avx2"))) inline __m256 load_pair(const bvh::TrianglePacket* packet, int v,
+                                                        int axis) {
+    return _mm256_set_m128(_mm_loadu_ps(packet[1].corner[v][axis]),
+                           _mm_loadu_ps(packet[0].corner[v][axis]));
+}
+
+// packet_candidates of two consecutive packets at once, lane for lane the same operations in the
+// same order (no FMA: target "avx2" alone does not allow contraction). Bits 4-7: the second.
+__attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePacket* packet,
+                                                         const bvh::FloatRay& ray) {
+    const __m256 ox = _mm256_set1_ps(ray.origin[ray.kx]);
+    const __m256 oy = _mm256_set1_ps(ray.origin[ray.ky]);
+    const __m256 oz = _mm256_set1_ps(ray.origin[ray.kz]);
+    const __m256 sx = _mm256_set1_ps(ray.shear_x);
+    const __m256 sy = _mm256_set1_ps(ray.shear_y);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 x[3];
+    __m256 y[3];
+    __m256 size = _mm256_setzero_ps();
+    for (int v = 0; v < 3; ++v) {
+        const __m256 az = _mm256_sub_ps(load_pair(packet, v, ray.kz), oz);
+        x[v] =
+            _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.kx), ox), _mm256_mul_ps(sx, az));
+        y[v] =
+            _mm256_sub_ps(_mm256_sub_ps(load_pair(packet, v, ray.ky), oy), _mm256_mul_ps(sy, az));
+        size = _mm256_max_ps(
+            size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]), _mm256_andnot_ps(sign, y[v])));
+    }
+    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
+    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
+    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
+    const __m256 margin = _mm256_add_ps(
+        _mm256_mul_ps(size,
+                      _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
+                                    _mm256_mul_ps(size, _mm256_set1_ps(bvh::kRelativeSlack)))),
+        _mm256_set1_ps(ray.edge_margin_constant));
+    const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
+    const __m256 all_positive =
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
+                                    _mm256_cmp_ps(e1, negative_margin, _CMP_GE_OQ)),
+                      _mm256_cmp_ps(e2, negative_margin, _CMP_GE_OQ));
+    const __m256 all_negative = _mm256_and_ps(
+        _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
+        _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
+    return _mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative));
+}
+#endif
+
+// Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out,
+// once per run of equal ids (a polygon's fan triangles are adjacent). Stops early when visit
+// returns true. With AVX2, two packets at a time.
 template <class Visit>
 bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf,
                         const bvh::FloatRay& ray, Visit visit) {
     std::uint32_t previous = ~0u;
-    for (std::uint32_t index = leaf & ~kLeafBit;; ++index) {
-        const bvh::TrianglePacket& packet = packets[index];
-        for (int bits = bvh::packet_candidates(packet, ray); bits != 0; bits &= bits - 1) {
-            const int lane = std::countr_zero(static_cast<unsigned>(bits));
-            const std::uint32_t id = packet.polygon[lane] & ~kLastPacketBit;
+    for (std::uint32_t index = leaf & ~kLeafBit;;) {
+        const bvh::TrianglePacket* packet = &packets[index];
+        const bool last = (packet->polygon[3] & kLastPacketBit) != 0;
+        int bits;
+#ifdef RT_BVH_AVX2
+        const bool pair = kHasAvx2 && !last;
+        bits = pair ? pair_candidates_avx2(packet, ray) : bvh::packet_candidates(*packet, ray);
+#else
+        const bool pair = false;
+        bits = bvh::packet_candidates(*packet, ray);
+#endif
+        for (; bits != 0; bits &= bits - 1) {
+            const int bit = std::countr_zero(static_cast<unsigned>(bits));
+            const bvh::TrianglePacket& p = packet[bit >> 2];
+            const int lane = bit & 3;
+            const std::uint32_t id = p.polygon[lane] & ~kLastPacketBit;
             if (id != previous) {
                 previous = id;
-                if (visit(packet, lane, id)) {
+                if (visit(p, lane, id)) {
                     return true;
                 }
             }
         }
-        if ((packet.polygon[3] & kLastPacketBit) != 0) {
+        if (last || (pair && (packet[1].polygon[3] & kLastPacketBit) != 0)) {
             return false;
         }
+        index += pair ? 2 : 1;
     }
 }
 
@@ -103,12 +171,15 @@ void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
 #if defined(__GNUC__)
     const void* at = bvh::is_leaf(child)
                          ? static_cast<const void*>(&tree.packets[child & ~kLeafBit])
-                         : static_cast<const void*>(&tree.nodes[child]);
+                         : static_cast<const void*>(&tree.wide[child]);
     __builtin_prefetch(at);
     __builtin_prefetch(static_cast<const char*>(at) + 64);
-    if (bvh::is_leaf(child)) {  // a packet reaches into a third and a fourth cache line
-        __builtin_prefetch(static_cast<const char*>(at) + 128);
-        __builtin_prefetch(static_cast<const char*>(at) + 192);
+    __builtin_prefetch(static_cast<const char*>(at) + 128);
+    __builtin_prefetch(static_cast<const char*>(at) + 192);
+    if (bvh::is_leaf(child)) {  // two packets reach into an eighth cache line
+        for (int line = 4; line < 7; ++line) {
+            __builtin_prefetch(static_cast<const char*>(at) + 64 * line);
+        }
     }
 #else
     (void)tree;
@@ -132,8 +203,8 @@ void order_pair(Candidate& a, Candidate& b) {
 
 // Of the children the ray may meet, returns the nearest (by box entry) to descend into and pushes
 // the others farthest first, so the next nearest is popped next; kNoChild if none.
-std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::Node& node, const bvh::BoxHits& hits,
-                      StackEntry* stack, int& size) {
+std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::WideNode& node,
+                      const bvh::WideHits& hits, StackEntry* stack, int& size) {
     int bits = hits.mask;
     if (bits == 0) {
         return bvh::kNoChild;
@@ -141,35 +212,84 @@ std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::Node& node, const b
     if ((bits & (bits - 1)) == 0) {  // one child: nothing to order or push
         return node.child[std::countr_zero(static_cast<unsigned>(bits))];
     }
-    float entry[4];
-    float nearest[4];
-    hits.entry.store(entry);
-    hits.nearest.store(nearest);
-    std::array<Candidate, 4> c;
+    std::array<Candidate, 8> c;
     int count = 0;
     for (; bits != 0; bits &= bits - 1) {
         const int k = std::countr_zero(static_cast<unsigned>(bits));
-        c[count++] = {entry[k], {node.child[k], nearest[k]}};
+        c[count++] = {hits.entry[k], {node.child[k], hits.nearest[k]}};
     }
-    // A sorting network for 2, 3 or 4 elements.
     if (count == 2) {
         order_pair(c[0], c[1]);
-    } else if (count == 3) {
-        order_pair(c[0], c[1]);
-        order_pair(c[1], c[2]);
-        order_pair(c[0], c[1]);
     } else {
-        order_pair(c[0], c[1]);
-        order_pair(c[2], c[3]);
-        order_pair(c[0], c[2]);
-        order_pair(c[1], c[3]);
-        order_pair(c[1], c[2]);
+        // Insertion sort: at most eight, usually two to four.
+        for (int i = 1; i < count; ++i) {
+            const Candidate x = c[i];
+            int j = i;
+            for (; j > 0 && x.entry < c[j - 1].entry; --j) {
+                c[j] = c[j - 1];
+            }
+            c[j] = x;
+        }
     }
     for (int i = count - 1; i > 0; --i) {
         prefetch_child(tree, c[i].entry_on_stack.child);
         stack[size++] = c[i].entry_on_stack;
     }
     return c[0].entry_on_stack.child;
+}
+
+#ifdef RT_BVH_AVX2
+// The same test with one AVX2 register per plane: the same operations in the same order per lane
+// (no FMA: target "avx2" alone does not allow contraction into one).
+__attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& node,
+                                                          const bvh::BoxRay& ray, float t_min,
+                                                          float t_max, bvh::WideHits& out) {
+    __m256 entry = _mm256_set1_ps(-HUGE_VALF);
+    __m256 exit = _mm256_set1_ps(HUGE_VALF);
+    __m256 nearest = _mm256_setzero_ps();
+    __m256 farthest = _mm256_setzero_ps();
+    const float* base = node.lo[0];
+    for (int k = 0; k < 3; ++k) {
+        const __m256 origin = _mm256_set1_ps(_mm_cvtss_f32(ray.origin[k].v));
+        const __m256 inverse = _mm256_set1_ps(_mm_cvtss_f32(ray.inverse[k].v));
+        const __m256 margin = _mm256_set1_ps(_mm_cvtss_f32(ray.margin[k].v));
+        const __m256 weight = _mm256_set1_ps(_mm_cvtss_f32(ray.weight[k].v));
+        const __m256 near_side =
+            _mm256_sub_ps(_mm256_load_ps(base + 2 * ray.near_plane[k]), origin);
+        const __m256 far_side = _mm256_sub_ps(_mm256_load_ps(base + 2 * ray.far_plane[k]), origin);
+        entry = _mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(near_side, inverse), margin), entry);
+        exit = _mm256_min_ps(_mm256_add_ps(_mm256_mul_ps(far_side, inverse), margin), exit);
+        nearest = _mm256_add_ps(nearest, _mm256_mul_ps(near_side, weight));
+        farthest = _mm256_add_ps(farthest, _mm256_mul_ps(far_side, weight));
+    }
+    const __m256 slack = _mm256_set1_ps(bvh::kRelativeSlack);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
+    exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
+    const __m256 depth_margin = _mm256_set1_ps(_mm_cvtss_f32(ray.depth_margin.v));
+    nearest = _mm256_sub_ps(nearest, depth_margin);
+    farthest = _mm256_add_ps(farthest, depth_margin);
+    const __m256 hit =
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(entry, exit, _CMP_LE_OQ),
+                                    _mm256_cmp_ps(nearest, _mm256_set1_ps(t_max), _CMP_LE_OQ)),
+                      _mm256_cmp_ps(farthest, _mm256_set1_ps(t_min), _CMP_GE_OQ));
+    out.mask = _mm256_movemask_ps(hit);
+    _mm256_store_ps(out.entry, entry);
+    _mm256_store_ps(out.nearest, nearest);
+}
+
+#endif
+
+void test_wide_boxes(const bvh::WideNode& node, const bvh::BoxRay& ray, float t_min, float t_max,
+                     bvh::WideHits& out) {
+#ifdef RT_BVH_AVX2
+    if (kHasAvx2) {
+        test_wide_boxes_avx2(node, ray, t_min, t_max, out);
+        return;
+    }
+#endif
+    bvh::test_wide_boxes_sse2(node, ray, simd::Float4::broadcast(t_min),
+                              simd::Float4::broadcast(t_max), out);
 }
 
 }  // namespace
@@ -194,24 +314,17 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         return nearest.best();
     }
     const bvh::BoxRay box_ray(fray);
-    const simd::Float4 t_min = simd::Float4::broadcast(fray.scaled_down(t.min));
+    const float t_min = fray.scaled_down(t.min);
     float t_max = fray.scaled_up(nearest.reach());
+    bvh::WideHits hits;
     std::array<StackEntry, kStackSize> stack;
     int size = 0;
     std::uint32_t child = tree_.root;
     for (;;) {
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             ++counters.nodes_visited;
-            const bvh::Node& node = tree_.nodes[child];
-            // Start fetching every child while the boxes are tested: in a big tree each level
-            // is a cache miss, and this overlaps the next one with the work on this one.
-            for (const std::uint32_t grandchild : node.child) {
-                if (grandchild != bvh::kNoChild) {
-                    prefetch_child(tree_, grandchild);
-                }
-            }
-            const bvh::BoxHits hits =
-                bvh::test_boxes(node, box_ray, t_min, simd::Float4::broadcast(t_max));
+            const bvh::WideNode& node = tree_.wide[child];
+            test_wide_boxes(node, box_ray, t_min, t_max, hits);
             child = descend(tree_, node, hits, stack.data(), size);
         }
         if (child != bvh::kNoChild) {
@@ -274,8 +387,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         return false;
     }
     const bvh::BoxRay box_ray(fray);
-    const simd::Float4 t_min = simd::Float4::broadcast(fray.scaled_down(t.min));
-    const simd::Float4 t_max = simd::Float4::broadcast(fray.scaled_up(t.max));
+    const float t_min = fray.scaled_down(t.min);
+    const float t_max = fray.scaled_up(t.max);
+    bvh::WideHits hits;
     std::array<std::uint32_t, kStackSize> stack;
     int size = 0;
     stack[size++] = tree_.root;
@@ -288,9 +402,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
             continue;
         }
         ++counters.nodes_visited;
-        const bvh::Node& node = tree_.nodes[child];
-        for (int bits = bvh::test_boxes(node, box_ray, t_min, t_max).mask; bits != 0;
-             bits &= bits - 1) {
+        const bvh::WideNode& node = tree_.wide[child];
+        test_wide_boxes(node, box_ray, t_min, t_max, hits);
+        for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
             stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
         }
     }

@@ -8,9 +8,9 @@ namespace rt::bvh {
 
 namespace {
 
-constexpr int kBins = 16;
+constexpr int kBins = 32;
 // Cost of testing one node relative to one packet of four triangles.
-constexpr double kTraversalCost = 1.0;
+constexpr double kTraversalCost = 2.0;
 
 double packets(std::uint32_t triangles) {
     return static_cast<double>((triangles + 3) / 4);
