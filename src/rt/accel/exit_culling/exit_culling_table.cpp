@@ -16,6 +16,8 @@
 #include <bit>
 #include <cmath>
 
+#include "rt/accel/voxel/box.h"
+
 namespace rt {
 
 namespace {
@@ -120,29 +122,11 @@ void ExitCullingTable::fill_region(int cell) {
 
 int ExitCullingTable::entry_cell(const Ray& ray) const {
     const AxisBox& world = cells_.world();
-    double enter = 0.0;
-    double leave = AxisBox::kInfinity;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double o = ray.origin[axis];
-        const double d = ray.direction[axis];
-        if (d == 0.0) {
-            if (o < world.lo[axis] || o > world.hi[axis]) {
-                return -1;
-            }
-            continue;
-        }
-        double t0 = (world.lo[axis] - o) / d;
-        double t1 = (world.hi[axis] - o) / d;
-        if (t0 > t1) {
-            std::swap(t0, t1);
-        }
-        enter = std::max(enter, t0);
-        leave = std::min(leave, t1);
-    }
-    if (enter > leave) {
+    Interval inside;
+    if (!clip_to_box(ray, Box{world.lo, world.hi}, {0.0, AxisBox::kInfinity}, inside)) {
         return -1;
     }
-    Vec3 q = ray.at(enter);
+    Vec3 q = ray.at(inside.min);
     q = max_components(world.lo, min_components(world.hi, q));
     return cells_.cell_of(q);
 }
