@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 
 #include "rt/accel/octree/octree_tree.h"
 
@@ -81,14 +82,10 @@ private:
     std::int64_t at_[3] = {0, 0, 0};
 };
 
-/// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest
-/// first, until visit returns true or the ray leaves the world or the interval.
+/// walk_octree for a ray already clipped to the world: `inside` is what clip_to_box gave for
+/// the interval (callers that clip first skip the rest of their setup for rays that miss).
 template <class Visit>
-void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& visit) {
-    Interval inside;
-    if (!clip_to_box(ray, tree.world, t, inside)) {
-        return;
-    }
+void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
     // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
@@ -144,6 +141,16 @@ void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& vis
         if (visit(tree.leaf_polygons(*leaf.node), t_exit, leaf) || !more) {
             return;
         }
+    }
+}
+
+/// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest
+/// first, until visit returns true or the ray leaves the world or the interval.
+template <class Visit>
+void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& visit) {
+    Interval inside;
+    if (clip_to_box(ray, tree.world, t, inside)) {
+        walk_octree_inside(tree, ray, inside, std::forward<Visit>(visit));
     }
 }
 
