@@ -26,15 +26,22 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(tree_.world, false)) {}
 
+// Both queries clip the ray to the world before anything else: a ray that misses it (about
+// half of random rays starting outside) then costs no ray-space or search setup. Invalid rays
+// answer "no hit" either way.
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
+    const double slack = rounding_slack(ray, tree_.world, rules_);
+    Interval inside;
+    if (!clip_to_box(ray, tree_.world, walk_interval(t, slack), inside)) {
+        return std::nullopt;
+    }
     const RaySpace space(ray);
     if (!space.valid()) {
         return std::nullopt;
     }
     NearestHitSearch search(scene_, boxes_, space, t, counters);
-    const double slack = rounding_slack(ray, tree_.world, rules_);
     NearHitRule rule(rules_, slack);
-    walk_octree(tree_, ray, walk_interval(t, slack),
+    walk_octree_inside(tree_, ray, inside,
                 [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
                     search.test(polygons);
                     return rule.ends_walk(search.nearest(), t_exit, counters);
@@ -43,13 +50,18 @@ std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
+    Interval inside;
+    if (!clip_to_box(ray, tree_.world, walk_interval(t, rounding_slack(ray, tree_.world, rules_)),
+                     inside)) {
+        return false;
+    }
     const RaySpace space(ray);
     if (!space.valid()) {
         return false;
     }
     AnyHitSearch search(scene_, boxes_, space, t, counters);
     bool hit = false;
-    walk_octree(tree_, ray, walk_interval(t, rounding_slack(ray, tree_.world, rules_)),
+    walk_octree_inside(tree_, ray, inside,
                 [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {
                     ++counters.voxels_stepped;
                     hit = search.test(polygons);

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 
 #include "rt/accel/octree/octree_tree.h"
 
@@ -50,6 +51,9 @@ public:
         descend();
     }
 
+    /// The leaf holding the current point.
+    const OctreeNode* leaf_node() const { return path_[level_]; }
+
     OctreeLeafAt leaf() const {
         OctreeLeafAt leaf;
         leaf.node = path_[level_];
@@ -78,14 +82,10 @@ private:
     std::int64_t at_[3] = {0, 0, 0};
 };
 
-/// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest
-/// first, until visit returns true or the ray leaves the world or the interval.
+/// walk_octree for a ray already clipped to the world: `inside` is what clip_to_box gave for
+/// the interval (callers that clip first skip the rest of their setup for rays that miss).
 template <class Visit>
-void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& visit) {
-    Interval inside;
-    if (!clip_to_box(ray, tree.world, t, inside)) {
-        return;
-    }
+void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
     // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
@@ -117,26 +117,40 @@ void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& vis
         const int axis = t_face[0] < t_face[1] ? (t_face[0] < t_face[2] ? 0 : 2)
                                                : (t_face[1] < t_face[2] ? 1 : 2);
         const double t_exit = t_face[axis];
-        if (visit(tree.leaf_polygons(*leaf.node), t_exit, leaf)) {
-            return;
+        // The next leaf is found before this one's polygons are tested, and its polygon list
+        // asked for, so that the memory it lives in arrives while they are being tested. The
+        // leaves visited, and where the walk ends, are the same as stepping after the visit.
+        bool more = t_exit < inside.max;
+        if (more) {
+            at[axis] = step[axis] > 0 ? leaf.origin[axis] + leaf.size : leaf.origin[axis] - 1;
+            more = at[axis] >= 0 && at[axis] <= last;
         }
-        if (!(t_exit < inside.max)) {
-            return;
-        }
-        at[axis] = step[axis] > 0 ? leaf.origin[axis] + leaf.size : leaf.origin[axis] - 1;
-        if (at[axis] < 0 || at[axis] > last) {
-            return;
-        }
-        // Within the face, and never back against the ray's direction: every coordinate then
-        // only moves forward, so the walk cannot revisit a leaf whatever the rounding.
-        for (int a = 0; a < 3; ++a) {
-            if (a != axis && step[a] > 0) {
-                at[a] = lattice_cell(a, t_exit, at[a], leaf.origin[a] + leaf.size - 1);
-            } else if (a != axis && step[a] < 0) {
-                at[a] = lattice_cell(a, t_exit, leaf.origin[a], at[a]);
+        if (more) {
+            // Within the face, and never back against the ray's direction: every coordinate
+            // then only moves forward, so the walk cannot revisit a leaf whatever the rounding.
+            for (int a = 0; a < 3; ++a) {
+                if (a != axis && step[a] > 0) {
+                    at[a] = lattice_cell(a, t_exit, at[a], leaf.origin[a] + leaf.size - 1);
+                } else if (a != axis && step[a] < 0) {
+                    at[a] = lattice_cell(a, t_exit, leaf.origin[a], at[a]);
+                }
             }
+            cursor.move_to(at);
+            __builtin_prefetch(tree.polygons.data() + cursor.leaf_node()->first);
         }
-        cursor.move_to(at);
+        if (visit(tree.leaf_polygons(*leaf.node), t_exit, leaf) || !more) {
+            return;
+        }
+    }
+}
+
+/// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest
+/// first, until visit returns true or the ray leaves the world or the interval.
+template <class Visit>
+void walk_octree(const OctreeTree& tree, const Ray& ray, Interval t, Visit&& visit) {
+    Interval inside;
+    if (clip_to_box(ray, tree.world, t, inside)) {
+        walk_octree_inside(tree, ray, inside, std::forward<Visit>(visit));
     }
 }
 
