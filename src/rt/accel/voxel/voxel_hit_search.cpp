@@ -4,7 +4,23 @@
 
 namespace rt {
 
+namespace {
+
+// A long list's boxes are all asked for first, so their cache misses overlap instead of following
+// each other (on a big scene they lie all over the array); a short one is not worth the pass.
+void prefetch_boxes(const PolygonBoxes& boxes, std::span<const std::uint32_t> polygons) {
+    if (polygons.size() < 8) {
+        return;
+    }
+    for (const std::uint32_t id : polygons) {
+        boxes.prefetch(id);
+    }
+}
+
+}  // namespace
+
 void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
+    prefetch_boxes(boxes_, polygons);
     for (const std::uint32_t id : polygons) {
         if (tested_.seen(id) || !boxes_.line_may_meet(line_, id)) {
             continue;
@@ -25,6 +41,7 @@ void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
 }
 
 bool AnyHitSearch::test(std::span<const std::uint32_t> polygons) {
+    prefetch_boxes(boxes_, polygons);
     for (const std::uint32_t id : polygons) {
         if (tested_.seen(id) || !boxes_.line_may_meet(line_, id)) {
             continue;
