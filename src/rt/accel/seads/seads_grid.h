@@ -17,10 +17,6 @@ inline constexpr std::uint64_t kMaxSeadsVoxels = std::uint64_t{1} << 25;
 /// Voxels along each side of a macro cell (see SeadsGrid::macro_occupied).
 inline constexpr int kSeadsMacro = 4;
 
-/// Grids of fewer macro cells a side are walked voxel by voxel: there is little empty space to
-/// cross, and looking for it costs small scenes more than it saves.
-inline constexpr int kSeadsMinMacroSide = 4;
-
 struct SeadsGrid {
     Box world;
     int side = 1;                         ///< voxels along each axis
@@ -52,12 +48,10 @@ struct SeadsGrid {
     }
     /// Whether the macro cell holding voxel (x, y, z) holds any polygon.
     bool macro_occupied_at(int x, int y, int z) const {
-        constexpr unsigned kM = kSeadsMacro;
         const std::size_t m =
-            (static_cast<std::size_t>(static_cast<unsigned>(z) / kM) * macro_side +
-             static_cast<unsigned>(y) / kM) *
+            (static_cast<std::size_t>(z / kSeadsMacro) * macro_side + y / kSeadsMacro) *
                 macro_side +
-            static_cast<unsigned>(x) / kM;
+            x / kSeadsMacro;
         return ((macro_occupied[m >> 6] >> (m & 63)) & 1) != 0;
     }
     /// Box of voxel (x, y, z), unpadded.

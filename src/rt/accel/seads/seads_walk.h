@@ -117,30 +117,18 @@ void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit
     const std::ptrdiff_t side = grid.side;
     const std::ptrdiff_t stride[3] = {step[0], step[1] * side, step[2] * side * side};
     std::size_t voxel = grid.index(cell[0], cell[1], cell[2]);
-    // The macro cell is looked at only on entering one: within it the answer cannot turn to
-    // "skip", as its occupancy is fixed and skip.may_skip() only ever turns false.
-    const bool skips = grid.macro_side >= kSeadsMinMacroSide;
-    int entry_residue[3];
-    for (int a = 0; a < 3; ++a) {
-        entry_residue[a] = step[a] > 0 ? 0 : kSeadsMacro - 1;
-    }
-    bool new_macro_cell = skips;
     while (true) {
-        if (new_macro_cell) {
-            new_macro_cell = false;
-            if (!grid.is_occupied(voxel) && skip.may_skip() &&
-                !grid.macro_occupied_at(cell[0], cell[1], cell[2])) {
-                const MacroMove move =
-                    cross_empty_macro_cell(grid, step, t_delta, inside.max, cell, t_next);
-                if (move.voxels != 0) {
-                    skip.skipped(move.voxels);
-                    if (move.left_grid) {
-                        return;
-                    }
-                    voxel = grid.index(cell[0], cell[1], cell[2]);
-                    new_macro_cell = true;
-                    continue;
+        if (!grid.is_occupied(voxel) && skip.may_skip() &&
+            !grid.macro_occupied_at(cell[0], cell[1], cell[2])) {
+            const MacroMove move =
+                cross_empty_macro_cell(grid, step, t_delta, inside.max, cell, t_next);
+            if (move.voxels != 0) {
+                skip.skipped(move.voxels);
+                if (move.left_grid) {
+                    return;
                 }
+                voxel = grid.index(cell[0], cell[1], cell[2]);
+                continue;
             }
         }
         const int axis = t_next[0] < t_next[1] ? (t_next[0] < t_next[2] ? 0 : 2)
@@ -158,7 +146,6 @@ void walk_seads(const SeadsGrid& grid, const Ray& ray, Interval t, Visit&& visit
         }
         voxel += static_cast<std::size_t>(stride[axis]);
         t_next[axis] += t_delta[axis];
-        new_macro_cell = cell[axis] % kSeadsMacro == entry_residue[axis] && skips;
     }
 }
 
