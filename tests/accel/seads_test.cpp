@@ -1,7 +1,6 @@
 // SEADS against brute force: identical answers on random and adversarial rays, grids of 1 to 256
 // voxels a side, and the refusal of absurd grids.
 #include "rt/accel/seads/seads.h"
-#include "rt/accel/seads/seads_walk.h"
 
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
@@ -134,71 +133,6 @@ TEST(Seads, PolygonsInVoxelFacesAndRaysAlongThemMatchBruteForce) {
         ASSERT_EQ(accel.grid().world.lo, bare.world.lo);
         expect_same_as_brute_force(scene, accel, lattice_rays(seads_lattice(bare), side, 12000, 3));
         expect_same_as_brute_force(scene, accel, random_rays(accel.grid().world, 4000, 4));
-    }
-}
-
-// Crossing empty macro cells in one move visits the same occupied voxels, with the same exit t's
-// and the same voxel count, as the voxel-by-voxel walk.
-TEST(Seads, SkippingEmptyMacroCellsVisitsTheSameVoxels) {
-    struct Visited {
-        int x, y, z;
-        double t_exit;
-        bool operator==(const Visited&) const = default;
-    };
-    struct CountSkips {
-        std::uint64_t* count;
-        bool may_skip() const { return true; }
-        void skipped(std::uint64_t n) const { *count += n; }
-    };
-    for (const int side : {1, 5, 9, 33, 64}) {
-        SceneBuilder b;
-        b.add_polygon({{0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0}});
-        b.add_polygon({{1, 1, 1}, {0.99, 1, 1}, {1, 0.99, 1}});
-        b.add_polygon({{0.5, 0.5, 0.5}, {0.6, 0.5, 0.5}, {0.5, 0.6, 0.5}});
-        b.add_polygon({{0.2, 0.7, 0.3}, {0.25, 0.7, 0.3}, {0.2, 0.75, 0.35}});
-        const SeadsGrid grid = build_seads_grid(b.scene(), side, false);
-        int mismatches = 0;
-        for (int z = 0; z < side; ++z) {
-            for (int y = 0; y < side; ++y) {
-                for (int x = 0; x < side; ++x) {
-                    if (grid.is_occupied(grid.index(x, y, z))) {
-                        EXPECT_TRUE(grid.macro_occupied_at(x, y, z)) << x << " " << y << " " << z;
-                    }
-                }
-            }
-        }
-        for (const RayCase& r : random_rays(grid.world, 3000, 40 + side)) {
-            std::vector<Visited> every;
-            std::vector<Visited> skipping;
-            std::uint64_t all = 0;
-            std::uint64_t counted = 0;
-            walk_seads(grid, r.ray, r.t,
-                       [&](std::span<const std::uint32_t> ids, double t_exit, const int* v) {
-                           ++all;
-                           if (!ids.empty()) {
-                               every.push_back({v[0], v[1], v[2], t_exit});
-                           }
-                           return false;
-                       });
-            walk_seads(
-                grid, r.ray, r.t,
-                [&](std::span<const std::uint32_t> ids, double t_exit, const int* v) {
-                    ++counted;
-                    if (!ids.empty()) {
-                        skipping.push_back({v[0], v[1], v[2], t_exit});
-                    }
-                    return false;
-                },
-                CountSkips{&counted});
-            if (every != skipping || all != counted) {
-                if (++mismatches <= 3) {
-                    ADD_FAILURE() << "side " << side << ": " << every.size() << " vs "
-                                  << skipping.size() << " occupied voxels, " << all << " vs "
-                                  << counted << " in all";
-                }
-            }
-        }
-        EXPECT_EQ(mismatches, 0) << "side " << side;
     }
 }
 

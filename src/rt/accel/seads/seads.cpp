@@ -8,19 +8,6 @@
 
 namespace rt {
 
-namespace {
-
-// walk_seads's skip policy from two lambdas.
-template <class MaySkip, class Skipped>
-struct SkipEmpty {
-    MaySkip may_skip;
-    Skipped skipped;
-};
-template <class MaySkip, class Skipped>
-SkipEmpty(MaySkip, Skipped) -> SkipEmpty<MaySkip, Skipped>;
-
-}  // namespace
-
 Seads::Seads(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
       grid_(build_seads_grid(scene, settings.seads_resolution, settings.no_fudge)),
@@ -39,9 +26,7 @@ std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters&
                [&](std::span<const std::uint32_t> polygons, double t_exit, const int*) {
                    search.test(polygons);
                    return rule.ends_walk(search.nearest(), t_exit, counters);
-               },
-               SkipEmpty{[&] { return rule.may_skip_empty(search.nearest()); },
-                         [&](std::uint64_t voxels) { counters.voxels_stepped += voxels; }});
+               });
     return search.nearest();
 }
 
@@ -57,9 +42,7 @@ bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const 
                    ++counters.voxels_stepped;
                    hit = search.test(polygons);
                    return hit;
-               },
-               SkipEmpty{[] { return true; },
-                         [&](std::uint64_t voxels) { counters.voxels_stepped += voxels; }});
+               });
     return hit;
 }
 

@@ -123,25 +123,6 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     for (const auto& [voxel, id] : pairs) {
         grid.occupied[voxel >> 6] |= std::uint64_t{1} << (voxel & 63);
     }
-    grid.macro_side = (side + kSeadsMacro - 1) / kSeadsMacro;
-    const std::size_t macros = static_cast<std::size_t>(grid.macro_side) * grid.macro_side *
-                               grid.macro_side;
-    grid.macro_occupied.assign((macros + 63) / 64, 0);
-    for (int z = 0; z < side; ++z) {
-        for (int y = 0; y < side; ++y) {
-            for (int x = 0; x < side; ++x) {
-                const std::size_t v = grid.index(x, y, z);
-                if (((grid.occupied[v >> 6] >> (v & 63)) & 1) != 0) {
-                    const std::size_t m = (static_cast<std::size_t>(z / kSeadsMacro) *
-                                               grid.macro_side +
-                                           y / kSeadsMacro) *
-                                              grid.macro_side +
-                                          x / kSeadsMacro;
-                    grid.macro_occupied[m >> 6] |= std::uint64_t{1} << (m & 63);
-                }
-            }
-        }
-    }
     return grid;
 }
 

@@ -14,9 +14,6 @@ namespace rt {
 /// The largest grid built: 2^25 voxels (322 a side), whose offset table alone is 128 MiB.
 inline constexpr std::uint64_t kMaxSeadsVoxels = std::uint64_t{1} << 25;
 
-/// Voxels along each side of a macro cell (see SeadsGrid::macro_occupied).
-inline constexpr int kSeadsMacro = 4;
-
 struct SeadsGrid {
     Box world;
     int side = 1;                         ///< voxels along each axis
@@ -26,11 +23,6 @@ struct SeadsGrid {
     /// One bit per voxel, set if it holds any polygon: 1/32 of the offset table, so the walk
     /// through empty space (most of it, around a surface) stays in cache.
     std::vector<std::uint64_t> occupied;
-    /// One bit per macro cell of kSeadsMacro^3 voxels (the last ones along an axis may be cut
-    /// short by the grid's face), set if any of its voxels is occupied: the walk crosses an
-    /// empty macro cell in one move.
-    int macro_side = 1;  ///< macro cells along each axis: ceil(side / kSeadsMacro)
-    std::vector<std::uint64_t> macro_occupied;
 
     std::size_t index(int x, int y, int z) const {
         return (static_cast<std::size_t>(z) * side + y) * side + x;
@@ -38,7 +30,6 @@ struct SeadsGrid {
     std::span<const std::uint32_t> voxel(std::size_t v) const {
         return {polygons.data() + offsets[v], polygons.data() + offsets[v + 1]};
     }
-    bool is_occupied(std::size_t v) const { return ((occupied[v >> 6] >> (v & 63)) & 1) != 0; }
     /// The voxel's polygons, reading the offset table only for an occupied voxel.
     std::span<const std::uint32_t> voxel_if_occupied(std::size_t v) const {
         if (((occupied[v >> 6] >> (v & 63)) & 1) == 0) {
@@ -46,21 +37,12 @@ struct SeadsGrid {
         }
         return voxel(v);
     }
-    /// Whether the macro cell holding voxel (x, y, z) holds any polygon.
-    bool macro_occupied_at(int x, int y, int z) const {
-        const std::size_t m =
-            (static_cast<std::size_t>(z / kSeadsMacro) * macro_side + y / kSeadsMacro) *
-                macro_side +
-            x / kSeadsMacro;
-        return ((macro_occupied[m >> 6] >> (m & 63)) & 1) != 0;
-    }
     /// Box of voxel (x, y, z), unpadded.
     Box voxel_box(int x, int y, int z) const;
     std::size_t memory_bytes() const {
         return offsets.capacity() * sizeof(std::uint32_t) +
                polygons.capacity() * sizeof(std::uint32_t) +
-               occupied.capacity() * sizeof(std::uint64_t) +
-               macro_occupied.capacity() * sizeof(std::uint64_t);
+               occupied.capacity() * sizeof(std::uint64_t);
     }
 };
 

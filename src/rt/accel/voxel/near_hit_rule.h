@@ -60,13 +60,6 @@ public:
         return rules_.accept_near_hits;
     }
 
-    /// Whether empty voxels may go unvisited (their count added to voxels_stepped instead): only
-    /// while no hit is held and -tv sets no limit, when ends_walk on an empty voxel cannot end the
-    /// walk.
-    bool may_skip_empty(const std::optional<Hit>& nearest) const {
-        return !nearest && rules_.fruitless_voxel_limit == std::numeric_limits<std::uint64_t>::max();
-    }
-
 private:
     WalkRules rules_;
     double slack_ = 0.0;
