@@ -48,10 +48,6 @@ public:
     /// The polygon a ray meets first (-1 for none), without shading it.
     std::int64_t first_polygon(const Ray& ray, TraceCounters& counters) const;
 
-    /// Distance under which a hit counts as the surface a ray leaves from.
-    double epsilon() const { return epsilon_; }
-    const std::vector<PointLight>& lights() const { return lights_; }
-
 private:
     struct Lobe;
     Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,

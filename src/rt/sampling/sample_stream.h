@@ -30,9 +30,6 @@ public:
         return spare_;
     }
 
-    /// How many blocks of four 32-bit words were drawn so far.
-    std::uint32_t blocks_drawn() const { return dimension_; }
-
 private:
     static double to_unit(std::uint32_t high, std::uint32_t low) {
         const std::uint64_t bits = (std::uint64_t{high} << 21) ^ (low >> 11);  // 53 bits
