@@ -112,8 +112,12 @@ std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, 
                                    const LabRays& rays, const LabOptions& options) {
     AccelSettings settings;
     settings.kind = kind;
-    settings.seads_resolution = suggested_seads_resolution(scene.polygons.size());
-    settings.octree_depth = suggested_octree_depth(scene.polygons.size());
+    settings.seads_resolution = options.seads_side != 0
+                                    ? options.seads_side
+                                    : suggested_seads_resolution(scene.polygons.size());
+    settings.octree_depth = options.octree_depth != 0
+                                ? options.octree_depth
+                                : suggested_octree_depth(scene.polygons.size());
     Measurement m;
     m.mesh = mesh;
     m.triangles = fan_triangles(scene);

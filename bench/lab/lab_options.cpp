@@ -48,6 +48,8 @@ std::string lab_help() {
            "skipped)\n"
            "  --threads N        threads for the all-cores runs (default: all)\n"
            "  --seconds S        least time per measurement (default 0.3)\n"
+           "  --seads-side N     SEADS voxels a side (default: the suggested size per mesh)\n"
+           "  --octree-depth N   octree depth (default: the suggested depth per mesh)\n"
            "  --csv FILE         also write the table as CSV\n"
            "  --svg FILE         also draw rays/s against triangle count (log-log)\n"
            "  --source DIR       the source tree, for scenes/twocubes.scn (default .)\n";
@@ -95,6 +97,10 @@ LabOptions parse_lab_options(const std::vector<std::string>& args) {
                 !(o.seconds_per_run > 0.0)) {
                 throw UsageError("rt_lab: bad number of seconds '" + text + "'");
             }
+        } else if (a == "--seads-side") {
+            o.seads_side = static_cast<int>(parse_size(value()));
+        } else if (a == "--octree-depth") {
+            o.octree_depth = static_cast<int>(parse_size(value()));
         } else if (a == "--csv") {
             o.csv_file = value();
         } else if (a == "--svg") {
