@@ -2,6 +2,11 @@
 // voxels a side, and the refusal of absurd grids.
 #include "rt/accel/seads/seads.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
 #include "rt/scene/load_scene.h"
@@ -61,6 +66,55 @@ TEST(Seads, MostlyEmptyGridMatchesBruteForce) {
     b.add_polygon({{0.5, 0.5, 0.5}, {0.6, 0.5, 0.5}, {0.5, 0.6, 0.5}});
     const Seads accel(b.scene(), seads(64));
     expect_same_as_brute_force(b.scene(), accel, random_rays(accel.grid().world, 5000, 9));
+}
+
+// The clearance the walk leaps by is the chessboard distance to the nearest voxel with polygons,
+// checked here against the definition, voxel by voxel.
+TEST(Seads, ClearanceIsTheChessboardDistanceToTheNearestOccupiedVoxel) {
+    const Scene scene = random_triangle_soup(12, 4);
+    const Seads accel(scene, seads(14));
+    const SeadsGrid& grid = accel.grid();
+    std::vector<std::array<int, 3>> occupied;
+    for (int z = 0; z < grid.side; ++z) {
+        for (int y = 0; y < grid.side; ++y) {
+            for (int x = 0; x < grid.side; ++x) {
+                if (!grid.voxel(grid.index(x, y, z)).empty()) {
+                    occupied.push_back({x, y, z});
+                }
+            }
+        }
+    }
+    ASSERT_FALSE(occupied.empty());
+    int leaps = 0;
+    for (int z = 0; z < grid.side; ++z) {
+        for (int y = 0; y < grid.side; ++y) {
+            for (int x = 0; x < grid.side; ++x) {
+                int nearest = 255;
+                for (const auto& o : occupied) {
+                    nearest = std::min(nearest, std::max({std::abs(o[0] - x), std::abs(o[1] - y),
+                                                          std::abs(o[2] - z)}));
+                }
+                EXPECT_EQ(grid.clearance[grid.index(x, y, z)], nearest)
+                    << x << " " << y << " " << z;
+                leaps += nearest >= 2 ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(leaps, 0);  // the scene leaves room to leap
+}
+
+// Leaping over empty space and visiting each voxel (as -tv needs) give the same answers, and
+// leaping visits fewer voxels.
+TEST(Seads, LeapingOverEmptySpaceMatchesBruteForceWithFewerVisits) {
+    const Scene scene = random_triangle_soup(40, 9);
+    const Seads leaping(scene, seads(40));
+    AccelSettings counting = seads(40);
+    counting.terminate_after_voxels = 1u << 30;
+    const Seads visiting(scene, counting);
+    const std::vector<RayCase> rays = random_rays(leaping.grid().world, 20000, 10);
+    const TraceCounters leaps = expect_same_as_brute_force(scene, leaping, rays);
+    const TraceCounters visits = expect_same_as_brute_force(scene, visiting, rays);
+    EXPECT_LT(leaps.voxels_stepped * 2, visits.voxels_stepped);
 }
 
 TEST(Seads, RefusesAbsurdGridsBeforeAllocating) {

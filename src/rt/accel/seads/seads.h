@@ -8,6 +8,7 @@
 #include "rt/accel/accelerator.h"
 #include "rt/accel/debug/describe_walk.h"
 #include "rt/accel/seads/seads_grid.h"
+#include "rt/accel/seads/seads_walk.h"
 #include "rt/accel/voxel/near_hit_rule.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 
@@ -35,6 +36,8 @@ private:
     SeadsGrid grid_;
     WalkRules rules_;
     PolygonBoxes boxes_;
+
+    EmptySpace empty_space() const;
 };
 
 std::unique_ptr<Accelerator> make_seads(const Scene& scene, const AccelSettings& settings);
