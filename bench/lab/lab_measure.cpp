@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <mutex>
 #include <thread>
@@ -82,19 +83,24 @@ TraceRate time_tracing(const Accelerator& accel, const std::vector<Ray>& rays, u
     if (rays.empty()) {
         return rate;
     }
-    std::size_t traced = 0;
-    const Clock::time_point start = Clock::now();
-    const double cpu_start = thread_cpu_seconds();
-    double elapsed = 0.0;
+    // Passes repeat until `least_seconds` have gone by; the rate is the fastest pass's. The
+    // machines we measure on are shared, and another tenant's load only ever slows a pass down,
+    // so the fastest one is the truest figure (and the one that repeats best from run to run).
+    double total = 0.0;
+    double fastest = HUGE_VAL;
     do {
+        const Clock::time_point start = Clock::now();
+        const double cpu_start = thread_cpu_seconds();
         const TraceCounters counters = trace_pass(accel, rays, threads);
+        const double elapsed =
+            threads <= 1 ? thread_cpu_seconds() - cpu_start : seconds_since(start);
         rate.hits = counters.hits;
         rate.nodes_per_ray = static_cast<double>(counters.nodes_visited) / rays.size();
         rate.tests_per_ray = static_cast<double>(counters.polygon_tests) / rays.size();
-        traced += rays.size();
-        elapsed = threads <= 1 ? thread_cpu_seconds() - cpu_start : seconds_since(start);
-    } while (elapsed < least_seconds);
-    rate.mrays_per_second = static_cast<double>(traced) / elapsed * 1e-6;
+        fastest = std::min(fastest, elapsed);
+        total += elapsed;
+    } while (total < least_seconds);
+    rate.mrays_per_second = static_cast<double>(rays.size()) / fastest * 1e-6;
     return rate;
 }
 

@@ -60,36 +60,53 @@ Binner binner_for(const CentroidBounds& cb, int axis) {
     return {cb.lo[axis], extent > 0.0f ? kBins * 0.9999f / extent : 0.0f};
 }
 
-void evaluate_axis(std::span<const PolygonReference> refs, const ReferenceRange& r, int axis,
-                   const Binner& binner, BestSplit& best) {
-    std::array<Bin, kBins> bins{};
+// Bins every reference on the three axes in one pass over them (each axis whose centroids
+// spread), then sweeps each axis's bins in turn, axis 0 first, for the cheapest split.
+void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange& r,
+                   const CentroidBounds& cb, BestSplit& best) {
+    std::array<std::array<Bin, kBins>, 3> bins{};
+    std::array<Binner, 3> binners;
+    std::array<bool, 3> spread{};
+    for (int axis = 0; axis < 3; ++axis) {
+        spread[axis] = cb.hi[axis] > cb.lo[axis];
+        binners[axis] = binner_for(cb, axis);
+    }
     for (std::uint32_t i = r.begin; i < r.end; ++i) {
-        Bin& bin = bins[binner(refs[i].centroid(axis))];
-        bin.box.grow(refs[i].box);
-        bin.triangles += refs[i].triangles;
-        ++bin.count;
+        const PolygonReference& ref = refs[i];
+        for (int axis = 0; axis < 3; ++axis) {
+            Bin& bin = bins[axis][binners[axis](ref.centroid(axis))];
+            bin.box.grow(ref.box);
+            bin.triangles += ref.triangles;
+            ++bin.count;
+        }
     }
-    std::array<double, kBins> right_cost{};
-    Box right;
-    std::uint32_t right_triangles = 0;
-    for (int b = kBins - 1; b > 0; --b) {
-        right.grow(bins[b].box);
-        right_triangles += bins[b].triangles;
-        right_cost[b] = right.half_area() * packets(right_triangles);
-    }
-    Box left;
-    std::uint32_t left_triangles = 0;
-    std::uint32_t left_count = 0;
-    for (int b = 1; b < kBins; ++b) {
-        left.grow(bins[b - 1].box);
-        left_triangles += bins[b - 1].triangles;
-        left_count += bins[b - 1].count;
-        if (left_count == 0 || left_count == r.size()) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!spread[axis]) {
             continue;
         }
-        const double cost = left.half_area() * packets(left_triangles) + right_cost[b];
-        if (cost < best.cost) {
-            best = {cost, axis, b};
+        const std::array<Bin, kBins>& axis_bins = bins[axis];
+        std::array<double, kBins> right_cost{};
+        Box right;
+        std::uint32_t right_triangles = 0;
+        for (int b = kBins - 1; b > 0; --b) {
+            right.grow(axis_bins[b].box);
+            right_triangles += axis_bins[b].triangles;
+            right_cost[b] = right.half_area() * packets(right_triangles);
+        }
+        Box left;
+        std::uint32_t left_triangles = 0;
+        std::uint32_t left_count = 0;
+        for (int b = 1; b < kBins; ++b) {
+            left.grow(axis_bins[b - 1].box);
+            left_triangles += axis_bins[b - 1].triangles;
+            left_count += axis_bins[b - 1].count;
+            if (left_count == 0 || left_count == r.size()) {
+                continue;
+            }
+            const double cost = left.half_area() * packets(left_triangles) + right_cost[b];
+            if (cost < best.cost) {
+                best = {cost, axis, b};
+            }
         }
     }
 }
@@ -139,11 +156,7 @@ SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange
         return median_split(refs, range, cb);
     }
     BestSplit best;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (cb.hi[axis] > cb.lo[axis]) {
-            evaluate_axis(refs, range, axis, binner_for(cb, axis), best);
-        }
-    }
+    evaluate_axes(refs, range, cb, best);
     const double area = range.box.half_area();
     const double leaf_cost = area * packets(range.triangles);
     if (range.triangles <= kMaxLeafTriangles && leaf_cost <= best.cost + kTraversalCost * area) {

@@ -20,7 +20,7 @@ namespace rt {
 /// The deepest octree built: 2^20 finest voxels a side keeps the lattice well inside an int.
 inline constexpr int kMaxOctreeDepth = 20;
 /// A node holding more polygons than this is split (while the depth allows).
-inline constexpr std::uint32_t kMaxLeafPolygons = 8;
+inline constexpr std::uint32_t kMaxLeafPolygons = 16;
 /// Default -ol and -ss: 2^24 nodes at most (128 MiB), 2^12 allocated at first.
 inline constexpr int kDefaultOctlistPower = 24;
 inline constexpr int kDefaultSeedSizePower = 12;
