@@ -8,6 +8,7 @@ LineProbe::LineProbe(const Ray& ray) : origin(ray.origin) {
     for (int a = 0; a < 3; ++a) {
         parallel[a] = ray.direction[a] == 0.0;
         inverse[a] = parallel[a] ? 0.0 : 1.0 / ray.direction[a];
+        any_parallel = any_parallel || parallel[a];
     }
 }
 
