@@ -1,6 +1,7 @@
 #include "rt/accel/octree/octree.h"
 
 #include "rt/accel/octree/octree_ddda.h"
+#include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/accel/voxel/voxel_hit_search.h"
 
 #include <fmt/format.h>
@@ -24,7 +25,15 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
                 ? build_octree_level_order(scene, octree_build_settings(settings))
                 : build_octree_depth_first(scene, octree_build_settings(settings))),
       rules_(WalkRules::from(settings)),
-      boxes_(scene, voxel_fudge(tree_.world, false)) {}
+      boxes_(scene, voxel_fudge(tree_.world, false)) {
+    add_leaf_bounds(scene, tree_);
+}
+
+// A leaf is skipped whole when the line misses its bounds (voxel_bounds.h).
+bool Octree::may_hold_hit(std::span<const std::uint32_t> polygons, const LineProbe& line) const {
+    return !polygons.empty() &&
+           (tree_.bounds_slots == 0 || line_may_meet_box(line, bounds_before(polygons).data()));
+}
 
 // Both queries clip the ray to the world before anything else: a ray that misses it (about
 // half of random rays starting outside) then costs no ray-space or search setup. Invalid rays
@@ -41,11 +50,14 @@ std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters
     }
     NearestHitSearch search(scene_, boxes_, space, t, counters);
     NearHitRule rule(rules_, slack);
-    walk_octree_inside(tree_, ray, inside,
-                [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
-                    search.test(polygons);
-                    return rule.ends_walk(search.nearest(), t_exit, counters);
-                });
+    walk_octree_inside(
+        tree_, ray, inside,
+        [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
+            if (may_hold_hit(polygons, search.line())) {
+                search.test(polygons);
+            }
+            return rule.ends_walk(search.nearest(), t_exit, counters);
+        });
     return search.nearest();
 }
 
@@ -62,11 +74,11 @@ bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const
     AnyHitSearch search(scene_, boxes_, space, t, counters);
     bool hit = false;
     walk_octree_inside(tree_, ray, inside,
-                [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {
-                    ++counters.voxels_stepped;
-                    hit = search.test(polygons);
-                    return hit;
-                });
+                       [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {
+                           ++counters.voxels_stepped;
+                           hit = may_hold_hit(polygons, search.line()) && search.test(polygons);
+                           return hit;
+                       });
     return hit;
 }
 

@@ -39,13 +39,15 @@ struct OctreeTree {
     Vec3 step;                            ///< world extent / 2^depth: one lattice step per axis
     std::vector<OctreeNode> nodes;        ///< nodes[0] is the root; children in x, y, z bit order
     std::vector<std::uint32_t> polygons;  ///< each leaf's ids, ascending
+    /// kVoxelBoundsSlots once add_leaf_bounds has put bounds in front of each leaf's ids, else 0.
+    std::uint32_t bounds_slots = 0;
 
     /// Where lattice plane k along `axis` lies: the one formula the build and the walk share.
     double lattice(int axis, std::int64_t k) const {
         return world.lo[axis] + static_cast<double>(k) * step[axis];
     }
     std::span<const std::uint32_t> leaf_polygons(const OctreeNode& leaf) const {
-        return {polygons.data() + leaf.first, leaf.count};
+        return {polygons.data() + leaf.first + (leaf.count != 0 ? bounds_slots : 0), leaf.count};
     }
     std::size_t memory_bytes() const {
         return nodes.capacity() * sizeof(OctreeNode) + polygons.capacity() * sizeof(std::uint32_t);
@@ -55,13 +57,17 @@ struct OctreeTree {
 /// How to build: depth, -ol, -ss, -of.
 struct OctreeBuildSettings {
     int depth = 0;
-    std::optional<int> octlist_power;                    ///< -ol: at most 2^n nodes
-    std::optional<int> seed_size_power;                  ///< -ss: 2^n nodes allocated at first
-    bool no_fudge = false;                               ///< -of
+    std::optional<int> octlist_power;    ///< -ol: at most 2^n nodes
+    std::optional<int> seed_size_power;  ///< -ss: 2^n nodes allocated at first
+    bool no_fudge = false;               ///< -of
     /// Threads for the default fill's subtrees (0: one a core); the tree is the same for any.
     unsigned threads = 0;
     std::function<void(const std::string&)> fill_trace;  ///< -dof: the -op fill, level by level
 };
+
+/// Puts bounds (voxel_bounds.h) in front of every non-empty leaf's ids, if the leaves hold enough
+/// polygons on average to be worth it; the same leaves and ids otherwise.
+void add_leaf_bounds(const Scene& scene, OctreeTree& tree);
 
 /// The default fill: each node's polygons sent to its children depth first.
 OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings);

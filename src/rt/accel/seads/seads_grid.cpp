@@ -1,12 +1,14 @@
 #include "rt/accel/seads/seads_grid.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
 
 #include "rt/accel/voxel/polygon_box_overlap.h"
+#include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/core/error.h"
 
 namespace rt {
@@ -126,6 +128,39 @@ void fill_clearance(SeadsGrid& grid) {
     }
 }
 
+// Rewrites the voxels' id lists (`ids`, indexed by grid.offsets) with each occupied voxel's bounds
+// in front of its ids (voxel_bounds.h).
+void lay_out_with_bounds(const Scene& scene, SeadsGrid& grid, const std::vector<std::uint32_t>& ids,
+                         std::size_t occupied) {
+    const double growth = voxel_fudge(grid.world, false);
+    const std::vector<float> boxes = grown_polygon_boxes(scene, growth);
+    const std::size_t voxels = grid.offsets.size() - 1;
+    std::vector<std::uint32_t> laid_out;
+    laid_out.reserve(ids.size() + kVoxelBoundsSlots * occupied);
+    std::vector<std::uint32_t> offsets(voxels + 1, 0);
+    const int n = grid.side;
+    for (int z = 0; z < n; ++z) {
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                const std::size_t v = grid.index(x, y, z);
+                offsets[v] = static_cast<std::uint32_t>(laid_out.size());
+                const std::uint32_t begin = grid.offsets[v];
+                const std::uint32_t end = grid.offsets[v + 1];
+                if (begin == end) {
+                    continue;
+                }
+                append_voxel_bounds(boxes, {ids.data() + begin, ids.data() + end},
+                                    grid.voxel_box(x, y, z), growth, laid_out);
+                laid_out.insert(laid_out.end(), ids.begin() + begin, ids.begin() + end);
+            }
+        }
+    }
+    offsets[voxels] = static_cast<std::uint32_t>(laid_out.size());
+    grid.offsets = std::move(offsets);
+    grid.polygons = std::move(laid_out);
+    grid.bounds_slots = kVoxelBoundsSlots;
+}
+
 }  // namespace
 
 Box SeadsGrid::voxel_box(int x, int y, int z) const {
@@ -154,7 +189,8 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     for (std::uint32_t id = 0; id < count; ++id) {
         file_polygon(scene, grid, fudge, id, pairs);
     }
-    if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    if (pairs.size() + kVoxelBoundsSlots * pairs.size() >=
+        std::numeric_limits<std::uint32_t>::max()) {
         throw UsageError("SEADS: more than 2^32 polygon references; use fewer voxels a side");
     }
 
@@ -167,9 +203,18 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     for (std::size_t v = 1; v <= voxels; ++v) {
         grid.offsets[v] += grid.offsets[v - 1];
     }
-    grid.polygons.resize(pairs.size());
+    std::vector<std::uint32_t> ids(pairs.size());
     for (auto it = pairs.rbegin(); it != pairs.rend(); ++it) {
-        grid.polygons[--grid.offsets[it->first]] = it->second;
+        ids[--grid.offsets[it->first]] = it->second;
+    }
+    std::size_t occupied = 0;
+    for (std::size_t v = 0; v < voxels; ++v) {
+        occupied += grid.offsets[v] != grid.offsets[v + 1] ? 1 : 0;
+    }
+    if (worth_voxel_bounds(ids.size(), occupied)) {
+        lay_out_with_bounds(scene, grid, ids, occupied);
+    } else {
+        grid.polygons = std::move(ids);
     }
     fill_clearance(grid);
     return grid;

@@ -2,11 +2,15 @@
 // box, each with the ids of the polygons that touch it, in one flat array with an offset table.
 #pragma once
 
+#include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "rt/accel/voxel/box.h"
+#include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
@@ -16,10 +20,17 @@ inline constexpr std::uint64_t kMaxSeadsVoxels = std::uint64_t{1} << 25;
 
 struct SeadsGrid {
     Box world;
-    int side = 1;                         ///< voxels along each axis
-    Vec3 voxel_size;                      ///< world extent / side, per axis
-    std::vector<std::uint32_t> offsets;   ///< side^3 + 1: voxel v holds [offsets[v], offsets[v+1])
-    std::vector<std::uint32_t> polygons;  ///< the voxels' polygon ids, voxel after voxel
+    int side = 1;     ///< voxels along each axis
+    Vec3 voxel_size;  ///< world extent / side, per axis
+    /// side^3 + 1: voxel v's entries are [offsets[v], offsets[v+1]), none for an empty voxel
+    std::vector<std::uint32_t> offsets;
+    /// Voxel after voxel, for each occupied one: its bounds (kVoxelBoundsSlots floats, as bits:
+    /// the box around its polygons' parts within it, grown by the fudge), then its polygon ids,
+    /// ascending. The bounds share the ids' first cache line, so a ray that passes through a
+    /// voxel but not near its polygons skips them all for one box test and no extra miss.
+    std::vector<std::uint32_t> polygons;
+    /// kVoxelBoundsSlots if the occupied voxels carry bounds (voxel_bounds.h), else 0.
+    std::uint32_t bounds_slots = 0;
     /// Per voxel, how far the nearest voxel holding polygons is, counted in voxels along the
     /// farthest axis (the chessboard distance), at most 255: 0 for a voxel with polygons, and
     /// for an empty one with clearance c every voxel within c - 1 steps on every axis is empty
@@ -31,7 +42,10 @@ struct SeadsGrid {
         return (static_cast<std::size_t>(z) * side + y) * side + x;
     }
     std::span<const std::uint32_t> voxel(std::size_t v) const {
-        return {polygons.data() + offsets[v], polygons.data() + offsets[v + 1]};
+        if (offsets[v] == offsets[v + 1]) {
+            return {};
+        }
+        return {polygons.data() + offsets[v] + bounds_slots, polygons.data() + offsets[v + 1]};
     }
     /// The voxel's polygons, reading the offset table only for an occupied voxel.
     std::span<const std::uint32_t> voxel_if_occupied(std::size_t v) const {

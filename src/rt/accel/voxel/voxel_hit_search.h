@@ -56,6 +56,9 @@ public:
 
     void test(std::span<const std::uint32_t> polygons);
     const std::optional<Hit>& nearest() const { return nearest_; }
+    /// Whether the ray's line may meet the float box (lo x y z, hi x y z).
+    bool line_may_meet(const float* box) const { return line_may_meet_box(line_, box); }
+    const LineProbe& line() const { return line_; }
 
 private:
     const Scene& scene_;
@@ -82,6 +85,9 @@ public:
 
     /// True as soon as one of them is hit.
     bool test(std::span<const std::uint32_t> polygons);
+    /// Whether the ray's line may meet the float box (lo x y z, hi x y z).
+    bool line_may_meet(const float* box) const { return line_may_meet_box(line_, box); }
+    const LineProbe& line() const { return line_; }
 
 private:
     const Scene& scene_;
