@@ -132,16 +132,17 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
 // Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out,
 // once per run of equal ids (a polygon's fan triangles are adjacent). Stops early when visit
 // returns true. With AVX2, two packets at a time.
-template <class Visit>
-bool for_each_candidate(const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf,
-                        const bvh::FloatRay& ray, Visit visit) {
+template <bool kAvx2, class Visit>
+[[gnu::always_inline]] inline bool for_each_candidate(
+    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const bvh::FloatRay& ray,
+    Visit visit) {
     std::uint32_t previous = ~0u;
     for (std::uint32_t index = leaf & ~kLeafBit;;) {
         const bvh::TrianglePacket* packet = &packets[index];
         const bool last = (packet->polygon[3] & kLastPacketBit) != 0;
         int bits;
 #ifdef RT_BVH_AVX2
-        const bool pair = kHasAvx2 && !last;
+        const bool pair = kAvx2 && !last;
         bits = pair ? pair_candidates_avx2(packet, ray) : bvh::packet_candidates(*packet, ray);
 #else
         const bool pair = false;
@@ -280,10 +281,12 @@ __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& n
 
 #endif
 
-void test_wide_boxes(const bvh::WideNode& node, const bvh::BoxRay& ray, float t_min, float t_max,
-                     bvh::WideHits& out) {
+template <bool kAvx2>
+[[gnu::always_inline]] inline void test_wide_boxes(const bvh::WideNode& node,
+                                                   const bvh::BoxRay& ray, float t_min, float t_max,
+                                                   bvh::WideHits& out) {
 #ifdef RT_BVH_AVX2
-    if (kHasAvx2) {
+    if constexpr (kAvx2) {
         test_wide_boxes_avx2(node, ray, t_min, t_max, out);
         return;
     }
@@ -291,6 +294,102 @@ void test_wide_boxes(const bvh::WideNode& node, const bvh::BoxRay& ray, float t_
     bvh::test_wide_boxes_sse2(node, ray, simd::Float4::broadcast(t_min),
                               simd::Float4::broadcast(t_max), out);
 }
+
+// Front to back through the tree from the root, offering each candidate to `nearest`. Compiled
+// twice: as is, and inlined into an AVX2 function, where the box and packet tests inline into
+// the loop (a call into an AVX2 function from plain code cannot be inlined).
+template <bool kAvx2>
+[[gnu::always_inline]] inline void nearest_in_tree(const bvh::Hierarchy& tree, const Scene& scene,
+                                                   const bvh::FloatRay& fray, Interval t,
+                                                   NearestHit& nearest, TraceCounters& counters) {
+    const bvh::BoxRay box_ray(fray);
+    const float t_min = fray.scaled_down(t.min);
+    float t_max = fray.scaled_up(nearest.reach());
+    bvh::WideHits hits;
+    std::array<StackEntry, kStackSize> stack;
+    int size = 0;
+    std::uint32_t child = tree.root;
+    for (;;) {
+        while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
+            ++counters.nodes_visited;
+            const bvh::WideNode& node = tree.wide[child];
+            test_wide_boxes<kAvx2>(node, box_ray, t_min, t_max, hits);
+            child = descend(tree, node, hits, stack.data(), size);
+        }
+        if (child != bvh::kNoChild) {
+            for_each_candidate<kAvx2>(
+                tree.packets, child, fray,
+                [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
+                    nearest.offer(scene, &packet, lane, id, counters);
+                    return false;
+                });
+            t_max = fray.scaled_up(nearest.reach());
+        }
+        // The next pushed child that may still hold something nearer.
+        child = bvh::kNoChild;
+        while (size > 0 && child == bvh::kNoChild) {
+            const StackEntry entry = stack[--size];
+            if (entry.nearest <= t_max) {
+                child = entry.child;
+            }
+        }
+        if (child == bvh::kNoChild) {
+            break;
+        }
+    }
+}
+
+#ifdef RT_BVH_AVX2
+__attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hierarchy& tree,
+                                                                   const Scene& scene,
+                                                                   const bvh::FloatRay& fray,
+                                                                   Interval t, NearestHit& nearest,
+                                                                   TraceCounters& counters) {
+    nearest_in_tree<true>(tree, scene, fray, t, nearest, counters);
+}
+#endif
+
+// Depth first through the tree until a candidate blocks; compiled twice, as nearest_in_tree is.
+template <bool kAvx2, class Blocks>
+[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree,
+                                                   const bvh::FloatRay& fray, Interval t,
+                                                   const Blocks& blocks_lane,
+                                                   TraceCounters& counters) {
+    const bvh::BoxRay box_ray(fray);
+    const float t_min = fray.scaled_down(t.min);
+    const float t_max = fray.scaled_up(t.max);
+    bvh::WideHits hits;
+    std::array<std::uint32_t, kStackSize> stack;
+    int size = 0;
+    stack[size++] = tree.root;
+    while (size > 0) {
+        const std::uint32_t child = stack[--size];
+        if (bvh::is_leaf(child)) {
+            if (for_each_candidate<kAvx2>(tree.packets, child, fray, blocks_lane)) {
+                return true;
+            }
+            continue;
+        }
+        ++counters.nodes_visited;
+        const bvh::WideNode& node = tree.wide[child];
+        test_wide_boxes<kAvx2>(node, box_ray, t_min, t_max, hits);
+        for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
+            stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
+        }
+    }
+    return false;
+}
+
+#ifdef RT_BVH_AVX2
+template <class Blocks>
+__attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hierarchy& tree,
+                                                                   const bvh::FloatRay& fray,
+                                                                   Interval t,
+                                                                   const Blocks& blocks_lane,
+                                                                   TraceCounters& counters) {
+    return any_hit_in_tree<true>(tree, fray, t, blocks_lane, counters);
+}
+#endif
 
 }  // namespace
 
@@ -313,40 +412,13 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
     if (tree_.root == bvh::kNoChild) {
         return nearest.best();
     }
-    const bvh::BoxRay box_ray(fray);
-    const float t_min = fray.scaled_down(t.min);
-    float t_max = fray.scaled_up(nearest.reach());
-    bvh::WideHits hits;
-    std::array<StackEntry, kStackSize> stack;
-    int size = 0;
-    std::uint32_t child = tree_.root;
-    for (;;) {
-        while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
-            ++counters.nodes_visited;
-            const bvh::WideNode& node = tree_.wide[child];
-            test_wide_boxes(node, box_ray, t_min, t_max, hits);
-            child = descend(tree_, node, hits, stack.data(), size);
-        }
-        if (child != bvh::kNoChild) {
-            for_each_candidate(tree_.packets, child, fray,
-                               [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
-                                   nearest.offer(scene_, &packet, lane, id, counters);
-                                   return false;
-                               });
-            t_max = fray.scaled_up(nearest.reach());
-        }
-        // The next pushed child that may still hold something nearer.
-        child = bvh::kNoChild;
-        while (size > 0 && child == bvh::kNoChild) {
-            const StackEntry entry = stack[--size];
-            if (entry.nearest <= t_max) {
-                child = entry.child;
-            }
-        }
-        if (child == bvh::kNoChild) {
-            break;
-        }
+#ifdef RT_BVH_AVX2
+    if (kHasAvx2) {
+        nearest_in_tree_avx2(tree_, scene_, fray, t, nearest, counters);
+        return nearest.best();
     }
+#endif
+    nearest_in_tree<false>(tree_, scene_, fray, t, nearest, counters);
     return nearest.best();
 }
 
@@ -359,13 +431,6 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
             space.emplace(ray);
         }
         return intersect_polygon(*space, scene_, id, t).has_value();
-    };
-    const auto blocks_lane = [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
-        ++counters.polygon_tests;
-        if (!space) {
-            space.emplace(ray);
-        }
-        return exact_hit(*space, scene_, packet, lane, id, t).has_value();
     };
     if (!fray.usable) {
         if (!RaySpace(ray).valid()) {
@@ -386,29 +451,19 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     if (tree_.root == bvh::kNoChild) {
         return false;
     }
-    const bvh::BoxRay box_ray(fray);
-    const float t_min = fray.scaled_down(t.min);
-    const float t_max = fray.scaled_up(t.max);
-    bvh::WideHits hits;
-    std::array<std::uint32_t, kStackSize> stack;
-    int size = 0;
-    stack[size++] = tree_.root;
-    while (size > 0) {
-        const std::uint32_t child = stack[--size];
-        if (bvh::is_leaf(child)) {
-            if (for_each_candidate(tree_.packets, child, fray, blocks_lane)) {
-                return true;
-            }
-            continue;
+    const auto blocks_lane = [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
+        ++counters.polygon_tests;
+        if (!space) {
+            space.emplace(ray);
         }
-        ++counters.nodes_visited;
-        const bvh::WideNode& node = tree_.wide[child];
-        test_wide_boxes(node, box_ray, t_min, t_max, hits);
-        for (int bits = hits.mask; bits != 0; bits &= bits - 1) {
-            stack[size++] = node.child[std::countr_zero(static_cast<unsigned>(bits))];
-        }
+        return exact_hit(*space, scene_, packet, lane, id, t).has_value();
+    };
+#ifdef RT_BVH_AVX2
+    if (kHasAvx2) {
+        return any_hit_in_tree_avx2(tree_, fray, t, blocks_lane, counters);
     }
-    return false;
+#endif
+    return any_hit_in_tree<false>(tree_, fray, t, blocks_lane, counters);
 }
 
 }  // namespace rt
