@@ -76,6 +76,29 @@ void file_polygon(const Scene& scene, const SeadsGrid& grid, double fudge, std::
     }
 }
 
+// One more than the least clearance among the 13 neighbours of (x, y, z) that come before it in
+// a raster pass (pass = +1, the usual order) or after it (pass = -1): the previous plane's 9, the
+// previous row's 3 in this plane, the previous voxel in this row.
+int clearance_from_earlier_neighbours(const SeadsGrid& grid, int x, int y, int z, int pass) {
+    const int n = grid.side;
+    int best = 255;
+    for (int dz = 0; dz <= 1; ++dz) {
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const bool before = dz == 1 || dy == 1 || (dy == 0 && dx == 1);
+                const int nx = x - pass * dx;
+                const int ny = y - pass * dy;
+                const int nz = z - pass * dz;
+                if (!before || nx < 0 || ny < 0 || nz < 0 || nx >= n || ny >= n || nz >= n) {
+                    continue;
+                }
+                best = std::min(best, grid.clearance[grid.index(nx, ny, nz)] + 1);
+            }
+        }
+    }
+    return best;
+}
+
 // The chessboard distance transform in two raster passes (Rosenfeld and Pfaltz): forward, each
 // voxel takes one more than the least of its 13 neighbours already passed; backward, of the other
 // 13. With unit steps to all 26 neighbours the result is exact for the chessboard distance.
@@ -88,42 +111,19 @@ void fill_clearance(SeadsGrid& grid) {
             grid.clearance[v] = 0;
         }
     }
-    // pass = +1: neighbours earlier in raster order; pass = -1: later ones.
+    // Raster order is index order (x fastest, then y, then z); the backward pass runs it in
+    // reverse.
     for (const int pass : {1, -1}) {
-        for (int zi = 0; zi < n; ++zi) {
-            const int z = pass > 0 ? zi : n - 1 - zi;
-            for (int yi = 0; yi < n; ++yi) {
-                const int y = pass > 0 ? yi : n - 1 - yi;
-                for (int xi = 0; xi < n; ++xi) {
-                    const int x = pass > 0 ? xi : n - 1 - xi;
-                    std::uint8_t& here = grid.clearance[grid.index(x, y, z)];
-                    if (here == 0) {
-                        continue;
-                    }
-                    int best = here;
-                    // The 13 neighbours before this voxel in the pass's order: the previous
-                    // plane's 9, the previous row's 3 in this plane, the previous voxel in this
-                    // row.
-                    for (int dz = 0; dz <= 1; ++dz) {
-                        for (int dy = -1; dy <= 1; ++dy) {
-                            for (int dx = -1; dx <= 1; ++dx) {
-                                const bool before = dz == 1 || dy == 1 || (dy == 0 && dx == 1);
-                                if (!before) {
-                                    continue;
-                                }
-                                const int nx = x - pass * dx;
-                                const int ny = y - pass * dy;
-                                const int nz = z - pass * dz;
-                                if (nx < 0 || ny < 0 || nz < 0 || nx >= n || ny >= n || nz >= n) {
-                                    continue;
-                                }
-                                best = std::min(best, grid.clearance[grid.index(nx, ny, nz)] + 1);
-                            }
-                        }
-                    }
-                    here = static_cast<std::uint8_t>(std::min(best, 255));
-                }
+        for (std::size_t i = 0; i < voxels; ++i) {
+            const std::size_t v = pass > 0 ? i : voxels - 1 - i;
+            if (grid.clearance[v] == 0) {
+                continue;
             }
+            const auto x = static_cast<int>(v % n);
+            const auto y = static_cast<int>((v / n) % n);
+            const auto z = static_cast<int>(v / (static_cast<std::size_t>(n) * n));
+            grid.clearance[v] = static_cast<std::uint8_t>(std::min<int>(
+                grid.clearance[v], clearance_from_earlier_neighbours(grid, x, y, z, pass)));
         }
     }
 }

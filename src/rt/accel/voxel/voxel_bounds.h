@@ -44,7 +44,7 @@ void append_voxel_bounds(const std::vector<float>& grown_boxes, std::span<const 
 
 /// The bounds in front of `ids` (a voxel's ids, from a structure that has bounds).
 inline std::array<float, 6> bounds_before(std::span<const std::uint32_t> ids) {
-    std::array<float, 6> box;
+    std::array<float, 6> box{};
     const std::uint32_t* slots = ids.data() - kVoxelBoundsSlots;
     for (std::size_t k = 0; k < 6; ++k) {
         box[k] = std::bit_cast<float>(slots[k]);
