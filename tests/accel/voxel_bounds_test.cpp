@@ -17,12 +17,17 @@ Scene dense_sphere() {
     return make_sphere({0.1, -0.2, 0.3}, 1.5, 40, 60, true);
 }
 
-TEST(VoxelBounds, SeadsBoundsHoldEveryPolygonsPartInTheVoxel) {
-    const Scene scene = dense_sphere();
+// SEADS with 5 voxels a side: some 30 polygons a voxel on the dense sphere.
+AccelSettings coarse_seads() {
     AccelSettings settings;
     settings.kind = AccelKind::Seads;
     settings.seads_resolution = 5;
-    const Seads accel(scene, settings);
+    return settings;
+}
+
+TEST(VoxelBounds, SeadsBoundsHoldEveryPolygonsPartInTheVoxel) {
+    const Scene scene = dense_sphere();
+    const Seads accel(scene, coarse_seads());
     const SeadsGrid& grid = accel.grid();
     ASSERT_EQ(grid.bounds_slots, kVoxelBoundsSlots);
     int checked = 0;
@@ -51,10 +56,7 @@ TEST(VoxelBounds, SeadsBoundsHoldEveryPolygonsPartInTheVoxel) {
 
 TEST(VoxelBounds, SkippingByThemMatchesBruteForce) {
     const Scene scene = dense_sphere();
-    AccelSettings seads;
-    seads.kind = AccelKind::Seads;
-    seads.seads_resolution = 5;
-    const Seads on_grid(scene, seads);
+    const Seads on_grid(scene, coarse_seads());
     ASSERT_EQ(on_grid.grid().bounds_slots, kVoxelBoundsSlots);
     expect_same_as_brute_force(scene, on_grid, random_rays(on_grid.grid().world, 20000, 31));
 
