@@ -1,7 +1,6 @@
 #include "rt/accel/octree/octree.h"
 
 #include "rt/accel/octree/octree_ddda.h"
-#include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/accel/voxel/voxel_hit_search.h"
 
 #include <fmt/format.h>
@@ -29,12 +28,6 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
     add_leaf_bounds(scene, tree_);
 }
 
-// A leaf is skipped whole when the line misses its bounds (voxel_bounds.h).
-bool Octree::may_hold_hit(std::span<const std::uint32_t> polygons, const LineProbe& line) const {
-    return !polygons.empty() &&
-           (tree_.bounds_slots == 0 || line_may_meet_box(line, bounds_before(polygons).data()));
-}
-
 // Both queries clip the ray to the world before anything else: a ray that misses it (about
 // half of random rays starting outside) then costs no ray-space or search setup. Invalid rays
 // answer "no hit" either way.
@@ -53,7 +46,7 @@ std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters
     walk_octree_inside(
         tree_, ray, inside,
         [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
-            if (may_hold_hit(polygons, search.line())) {
+            if (voxel_may_hold_hit(polygons, tree_.bounds_slots, search.line())) {
                 search.test(polygons);
             }
             return rule.ends_walk(search.nearest(), t_exit, counters);
@@ -76,7 +69,8 @@ bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const
     walk_octree_inside(tree_, ray, inside,
                        [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {
                            ++counters.voxels_stepped;
-                           hit = may_hold_hit(polygons, search.line()) && search.test(polygons);
+                           hit = voxel_may_hold_hit(polygons, tree_.bounds_slots, search.line()) &&
+                                 search.test(polygons);
                            return hit;
                        });
     return hit;

@@ -35,8 +35,6 @@ private:
     OctreeTree tree_;
     WalkRules rules_;
     PolygonBoxes boxes_;
-
-    bool may_hold_hit(std::span<const std::uint32_t> polygons, const LineProbe& line) const;
 };
 
 OctreeBuildSettings octree_build_settings(const AccelSettings& settings);

@@ -40,9 +40,7 @@ std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters&
     walk_seads_inside(
         grid_, ray, inside,
         [&](std::span<const std::uint32_t> polygons, double t_exit, const int*) {
-            // Skipped whole when the line misses the voxel's bounds (voxel_bounds.h).
-            if (!polygons.empty() &&
-                (grid_.bounds_slots == 0 || search.line_may_meet(bounds_before(polygons).data()))) {
+            if (voxel_may_hold_hit(polygons, grid_.bounds_slots, search.line())) {
                 search.test(polygons);
             }
             return rule.ends_walk(search.nearest(), t_exit, counters);
@@ -67,10 +65,8 @@ bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const 
         grid_, ray, inside,
         [&](std::span<const std::uint32_t> polygons, double, const int*) {
             ++counters.voxels_stepped;
-            hit =
-                !polygons.empty() &&
-                (grid_.bounds_slots == 0 || search.line_may_meet(bounds_before(polygons).data())) &&
-                search.test(polygons);
+            hit = voxel_may_hold_hit(polygons, grid_.bounds_slots, search.line()) &&
+                  search.test(polygons);
             return hit;
         },
         empty_space());

@@ -189,8 +189,7 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     for (std::uint32_t id = 0; id < count; ++id) {
         file_polygon(scene, grid, fudge, id, pairs);
     }
-    if (pairs.size() + kVoxelBoundsSlots * pairs.size() >=
-        std::numeric_limits<std::uint32_t>::max()) {
+    if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {
         throw UsageError("SEADS: more than 2^32 polygon references; use fewer voxels a side");
     }
 
@@ -211,7 +210,10 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     for (std::size_t v = 0; v < voxels; ++v) {
         occupied += grid.offsets[v] != grid.offsets[v + 1] ? 1 : 0;
     }
-    if (worth_voxel_bounds(ids.size(), occupied)) {
+    // (Bounds only where the ids and bounds together stay below 2^32 slots.)
+    const std::uint64_t slots = ids.size() + std::uint64_t{kVoxelBoundsSlots} * occupied;
+    if (worth_voxel_bounds(ids.size(), occupied) &&
+        slots < std::numeric_limits<std::uint32_t>::max()) {
         lay_out_with_bounds(scene, grid, ids, occupied);
     } else {
         grid.polygons = std::move(ids);

@@ -2,8 +2,6 @@
 // box, each with the ids of the polygons that touch it, in one flat array with an offset table.
 #pragma once
 
-#include <array>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -46,13 +44,6 @@ struct SeadsGrid {
             return {};
         }
         return {polygons.data() + offsets[v] + bounds_slots, polygons.data() + offsets[v + 1]};
-    }
-    /// The voxel's polygons, reading the offset table only for an occupied voxel.
-    std::span<const std::uint32_t> voxel_if_occupied(std::size_t v) const {
-        if (clearance[v] != 0) {
-            return {};
-        }
-        return voxel(v);
     }
     /// Box of voxel (x, y, z), unpadded.
     Box voxel_box(int x, int y, int z) const;

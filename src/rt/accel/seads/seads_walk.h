@@ -25,6 +25,9 @@ public:
     SeadsCursor(const SeadsGrid& grid, const Ray& ray, double t_start)
         : grid_(grid),
           ray_(ray),
+          side_(grid.side),
+          offsets_(grid.offsets.data()),
+          voxels_(grid.offsets.size() - 1),
           inverse_{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z},
           per_voxel_{1.0 / grid.voxel_size.x, 1.0 / grid.voxel_size.y, 1.0 / grid.voxel_size.z} {
         const std::ptrdiff_t side = grid.side;
@@ -54,15 +57,15 @@ public:
     /// Asks for the offsets of the voxel across `axis`, to arrive while this one is tested.
     void prefetch_next(int axis) const {
         if (const std::size_t next = voxel_ + static_cast<std::size_t>(stride_[axis]);
-            next < grid_.offsets.size()) {
-            __builtin_prefetch(grid_.offsets.data() + next);
+            next < voxels_) {
+            __builtin_prefetch(offsets_ + next);
         }
     }
 
     /// Into the next voxel across `axis`; false if that leaves the grid.
     bool step(int axis) {
         cell_[axis] += step_[axis];
-        if (cell_[axis] < 0 || cell_[axis] >= grid_.side) {
+        if (cell_[axis] < 0 || cell_[axis] >= side_) {
             return false;
         }
         voxel_ += static_cast<std::size_t>(stride_[axis]);
@@ -96,11 +99,11 @@ public:
                 continue;
             }
             const int low = step_[a] > 0 ? cell_[a] : std::max(cell_[a] - reach, 0);
-            const int high = step_[a] > 0 ? std::min(cell_[a] + reach, grid_.side - 1) : cell_[a];
+            const int high = step_[a] > 0 ? std::min(cell_[a] + reach, side_ - 1) : cell_[a];
             cell_[a] = cell_at(a, t_leave, low, high);
         }
         cell_[axis] += step_[axis] * (reach + 1);
-        if (cell_[axis] < 0 || cell_[axis] >= grid_.side) {
+        if (cell_[axis] < 0 || cell_[axis] >= side_) {
             return false;
         }
         aim();
@@ -129,6 +132,10 @@ private:
 
     const SeadsGrid& grid_;
     const Ray& ray_;
+    // Copies, not reads through grid_: the compiler cannot tell stores to cell_ from them.
+    int side_;
+    const std::uint32_t* offsets_;
+    std::size_t voxels_;
     Vec3 inverse_;
     Vec3 per_voxel_;
     int cell_[3] = {0, 0, 0};

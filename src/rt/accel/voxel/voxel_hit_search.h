@@ -11,6 +11,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/voxel/polygon_boxes.h"
+#include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/geometry/ray_polygon.h"
 
 namespace rt {
@@ -41,6 +42,14 @@ private:
     std::array<std::uint32_t, kSlots> slots_ = kAllEmpty;
 };
 
+/// Whether a voxel's polygons need testing against this line: there are some, and the line meets
+/// the voxel's bounds where the structure has them (bounds_slots != 0; voxel_bounds.h).
+inline bool voxel_may_hold_hit(std::span<const std::uint32_t> polygons, std::uint32_t bounds_slots,
+                               const LineProbe& line) {
+    return !polygons.empty() &&
+           (bounds_slots == 0 || line_may_meet_box(line, bounds_before(polygons).data()));
+}
+
 /// The nearest hit over every polygon tested so far along one ray: nearest t strictly inside the
 /// interval, equal t to the lowest id (the same rule as brute force, so the same answer).
 class NearestHitSearch {
@@ -56,8 +65,6 @@ public:
 
     void test(std::span<const std::uint32_t> polygons);
     const std::optional<Hit>& nearest() const { return nearest_; }
-    /// Whether the ray's line may meet the float box (lo x y z, hi x y z).
-    bool line_may_meet(const float* box) const { return line_may_meet_box(line_, box); }
     const LineProbe& line() const { return line_; }
 
 private:
@@ -85,8 +92,6 @@ public:
 
     /// True as soon as one of them is hit.
     bool test(std::span<const std::uint32_t> polygons);
-    /// Whether the ray's line may meet the float box (lo x y z, hi x y z).
-    bool line_may_meet(const float* box) const { return line_may_meet_box(line_, box); }
     const LineProbe& line() const { return line_; }
 
 private:
