@@ -4,6 +4,7 @@
 // degenerate polygons, coordinates beyond the float tests' range, and empty scenes.
 #include <cmath>
 #include <limits>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -162,6 +163,36 @@ TEST(BvhEdgeCases, NonPlanarAndDegeneratePolygons) {
     }
     const Scene& scene = b.scene();
     test::compare_with_brute_force(scene, Bvh(scene), 6000, 22);
+}
+
+TEST(BvhEdgeCases, PolygonsWithoutANormalTakeTheGrazingDepth) {
+    // A zero normal makes every hit a grazing one, whose depth comes from the corners and the
+    // line's span in the corner box, not from a plane: the BVH culls boxes by where the line
+    // enters and leaves them, and must still find each such hit, at the same t.
+    Scene scene = make_triangle_soup(300, 31);
+    for (Polygon& p : scene.polygons) {
+        p.normal = Vec3{0, 0, 0};
+    }
+    const Bvh bvh(scene);
+    std::vector<RayQuery> queries;
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 3000; ++i) {
+        // Aimed at a corner's neighbourhood, so that many rays hit something.
+        const Vec3 target = scene.positions[random() % scene.positions.size()] +
+                            Vec3{unit(random), unit(random), unit(random)} * 0.01;
+        const Vec3 origin{unit(random) * 3, unit(random) * 3, unit(random) * 3};
+        queries.push_back({{origin, target - origin}, Interval{}});
+        queries.push_back({{origin, target - origin}, Interval{0.5, 0.999}});
+    }
+    int hits = 0;
+    const BruteForce brute(scene);
+    TraceCounters counters;
+    for (const RayQuery& q : queries) {
+        hits += brute.closest_hit(q.ray, q.t, counters).has_value();
+    }
+    EXPECT_GT(hits, 500) << "the test would prove little";
+    expect_same_answers(scene, bvh, queries);
 }
 
 TEST(BvhEdgeCases, CoordinatesBeyondTheFloatTests) {

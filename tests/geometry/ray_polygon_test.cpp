@@ -216,6 +216,24 @@ TEST(IntersectPolygon, NearlyParallelRayHitsWhereItCrossesThePlane) {
     EXPECT_FALSE(hit_flat(square_corners, short_of_it));
 }
 
+TEST(IntersectPolygon, GrazingDepthStaysWhereTheLineIsInTheCornerBox) {
+    // A zero normal sends every ray down the grazing branch, whose depth starts at the nearest
+    // corner's (t = 2.5 here, at x = 2.5 and z = 2.5, above the flat triangle's box). The line
+    // is inside that box only at z = 0, t = 5, so that is the depth reported.
+    const std::vector<Vec3> thin{{0, 0, 0}, {10, 1, 0}, {10, -1, 0}};
+    const Ray oblique{{0, 0, 5}, {1, 0, -1}};
+    const std::optional<double> t = intersect_polygon(oblique, thin, Vec3{0, 0, 0}, kWholeLine);
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(*t, 5.0, 1e-9);
+    // Where that span and the corners' depths overlap widely, the depth is still clamped into
+    // both: a ray along the triangle's length meets its box over t in [0, 10].
+    const Ray along{{-1, 0, 1e-12}, {1, 0, -1e-13}};
+    const std::optional<double> u = intersect_polygon(along, thin, Vec3{0, 0, 0}, kWholeLine);
+    ASSERT_TRUE(u);
+    EXPECT_GE(*u, 1.0 - 1e-9);
+    EXPECT_LE(*u, 11.0 + 1e-9);
+}
+
 TEST(IntersectPolygon, InvalidRaysMiss) {
     const Vec3 origin{1, 1, 5};
     for (const Vec3& direction : {Vec3{0, 0, 0}, Vec3{0, 0, kNaN}, Vec3{kNaN, kNaN, kNaN},

@@ -28,9 +28,16 @@
 //      outside it. But its corners' rounded projections may enclose a sliver of area around P;
 //      then the displaced ray really does pass through it (and not through the neighbours on that
 //      side), so it must count as a hit or there would be a crack. The plane gives no usable depth
-//      for such a grazing hit, so it is taken from the corners: the plane's t clamped to the
-//      range of the corners' depths along the ray, or the nearest corner's depth for a ray
-//      exactly parallel to the plane.
+//      for such a grazing hit, so it is taken from the corners: the plane's t (the nearest
+//      corner's depth for a ray exactly parallel to the plane) clamped first to the span of t
+//      where the line is inside the corners' box (grown by 2^-40 of the coordinates' size), then
+//      to the range of the corners' depths along the ray. Where the line really meets the
+//      polygon, at X, X's t is in both ranges; the winding test may accept a line that passes
+//      within the projection's rounding (about 2^-49 of the size) of the polygon instead, and
+//      then both ranges still hold a t of the line within that distance of the polygon. So the
+//      two overlap, up to that distance, and the hit lies where the line is in the corner box
+//      (an accelerator can cull a box by where the line enters and leaves it) and within the
+//      corners' depths (the reach bounds in accel/reach rely on that).
 //
 // 5. So every polygon is asked the same question, exactly: does it contain the one displaced point
 //    P? P lies on no edge and no corner, so of the polygons whose projections meet around a shared
@@ -95,6 +102,9 @@ bool inside(double t, Interval interval) {
 
 // Below this |cos| between the normal and the ray the plane's t is ill-conditioned.
 constexpr double kGrazing = 1e-6;
+// A grazing hit's corner box is grown by this times the largest |coordinate| of corners and
+// origin: far above the 2^-49 of the projection's rounding, far below the BVH's 2^-20 margins.
+constexpr double kGrazingBoxMargin = 0x1p-40;
 
 // The range of the corners' depths (t of their projections onto the ray). Through the unit
 // direction, not dot(d, d), which overflows or underflows for directions far from unit length.
@@ -110,6 +120,42 @@ void corner_depths(const RaySpace& space, std::uint32_t count, CornerAt corner_a
         nearest = std::min(nearest, depth);
         farthest = std::max(farthest, depth);
     }
+}
+
+// Where the ray's line is inside the polygon's corner box grown by a rounding margin: [lo, hi] in
+// t. Axes the direction does not move along do not constrain it. Returns false when no t is
+// (possible only with non-finite input: the winding test accepted a line that passes within the
+// projection's rounding, far below the margin, of the polygon).
+template <class CornerAt>
+bool span_in_corner_box(const Ray& ray, std::uint32_t count, CornerAt corner_at, double& lo,
+                        double& hi) {
+    Vec3 box_lo = corner_at(0);
+    Vec3 box_hi = box_lo;
+    double size = 0.0;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const Vec3 c = corner_at(k);
+        for (int axis = 0; axis < 3; ++axis) {
+            box_lo[axis] = std::min(box_lo[axis], c[axis]);
+            box_hi[axis] = std::max(box_hi[axis], c[axis]);
+            size = std::max(size, std::fabs(c[axis]));
+        }
+    }
+    const Vec3& o = ray.origin;
+    const double margin =
+        kGrazingBoxMargin * (size + std::max({std::fabs(o.x), std::fabs(o.y), std::fabs(o.z)}));
+    lo = -HUGE_VAL;
+    hi = HUGE_VAL;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double d = ray.direction[axis];
+        if (d == 0.0) {
+            continue;
+        }
+        const double a = (box_lo[axis] - margin - o[axis]) / d;
+        const double b = (box_hi[axis] + margin - o[axis]) / d;
+        lo = std::max(lo, std::min(a, b));
+        hi = std::min(hi, std::max(a, b));
+    }
+    return lo <= hi;  // false for a NaN too
 }
 
 // The one hit test behind every public form: the decision is the winding number alone; the depth
@@ -136,7 +182,16 @@ std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uin
     double nearest = 0.0;
     double farthest = 0.0;
     corner_depths(space, count, corner_at, nearest, farthest);
-    const double depth = std::isfinite(along) ? std::clamp(along, nearest, farthest) : nearest;
+    // Into the span where the line is inside the corner box, then into the corners' depths: the
+    // span keeps the hit where a box-culling accelerator looks for it, the depths keep it where
+    // the reach bounds (accel/reach) expect it. The two overlap up to the margin (see 4 above).
+    double depth = std::isfinite(along) ? along : nearest;
+    double span_lo = 0.0;
+    double span_hi = 0.0;
+    if (span_in_corner_box(ray, count, corner_at, span_lo, span_hi)) {
+        depth = std::clamp(depth, span_lo, span_hi);
+    }
+    depth = std::clamp(depth, nearest, farthest);
     if (!inside(depth, t)) {
         return std::nullopt;
     }
@@ -247,8 +302,7 @@ std::optional<double> intersect_polygon(const RaySpace& space, std::span<const V
                                         const std::uint32_t* ids, std::uint32_t count,
                                         const Vec3& normal, Interval t) {
     return hit_of(
-        space, normal, count, [&](std::uint32_t k) -> const Vec3& { return positions[ids[k]]; },
-        t);
+        space, normal, count, [&](std::uint32_t k) -> const Vec3& { return positions[ids[k]]; }, t);
 }
 
 std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,

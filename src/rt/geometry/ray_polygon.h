@@ -69,7 +69,8 @@ std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& n
 
 /// The t of the ray's hit on the polygon with these corners and this unit normal, strictly inside
 /// the interval. Hit or miss is decided by winding_number() alone; t is the plane's, except for a
-/// polygon seen (nearly) edge-on, whose t is kept within its corners' depths along the ray.
+/// polygon seen (nearly) edge-on, whose t is kept within its corners' depths along the ray and
+/// (up to a rounding margin) where the line is inside the corners' box.
 std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> corners,
                                         const Vec3& normal, Interval t);
 

@@ -1,5 +1,6 @@
-// Traversal: closest_hit goes front to back, nearest child first, and culls by the depth ranges
-// of box_test.h; occluded stops at the first hit. Both decide every hit with intersect_polygon.
+// Traversal: closest_hit goes front to back, nearest child first, and skips a child whose box the
+// line enters beyond the nearest hit so far (box_test.h); occluded stops at the first hit. Both
+// decide every hit with intersect_polygon.
 #include <array>
 #include <bit>
 #include <cmath>
@@ -24,7 +25,7 @@ constexpr int kStackSize = 512;
 
 struct StackEntry {
     std::uint32_t child;
-    float nearest;  ///< the smallest depth in the child's box, scaled
+    float entry;  ///< where the ray's line enters the child's box, scaled t
 };
 
 // The exact test of the polygon of a packet's lane: a triangle's corners come from the packet's
@@ -188,16 +189,11 @@ void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
 #endif
 }
 
-struct Candidate {
-    float entry;
-    StackEntry entry_on_stack;
-};
-
 // Orders a pair by entry, nearest first, without a branch to mispredict.
-void order_pair(Candidate& a, Candidate& b) {
+void order_pair(StackEntry& a, StackEntry& b) {
     const bool swap = b.entry < a.entry;
-    const Candidate first = swap ? b : a;
-    const Candidate second = swap ? a : b;
+    const StackEntry first = swap ? b : a;
+    const StackEntry second = swap ? a : b;
     a = first;
     b = second;
 }
@@ -213,18 +209,18 @@ std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::WideNode& node,
     if ((bits & (bits - 1)) == 0) {  // one child: nothing to order or push
         return node.child[std::countr_zero(static_cast<unsigned>(bits))];
     }
-    std::array<Candidate, 8> c;
+    std::array<StackEntry, 8> c;
     int count = 0;
     for (; bits != 0; bits &= bits - 1) {
         const int k = std::countr_zero(static_cast<unsigned>(bits));
-        c[count++] = {hits.entry[k], {node.child[k], hits.nearest[k]}};
+        c[count++] = {node.child[k], hits.entry[k]};
     }
     if (count == 2) {
         order_pair(c[0], c[1]);
     } else {
         // Insertion sort: at most eight, usually two to four.
         for (int i = 1; i < count; ++i) {
-            const Candidate x = c[i];
+            const StackEntry x = c[i];
             int j = i;
             for (; j > 0 && x.entry < c[j - 1].entry; --j) {
                 c[j] = c[j - 1];
@@ -233,10 +229,10 @@ std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::WideNode& node,
         }
     }
     for (int i = count - 1; i > 0; --i) {
-        prefetch_child(tree, c[i].entry_on_stack.child);
-        stack[size++] = c[i].entry_on_stack;
+        prefetch_child(tree, c[i].child);
+        stack[size++] = c[i];
     }
-    return c[0].entry_on_stack.child;
+    return c[0].child;
 }
 
 #ifdef RT_BVH_AVX2
@@ -247,36 +243,27 @@ __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& n
                                                           float t_max, bvh::WideHits& out) {
     __m256 entry = _mm256_set1_ps(-HUGE_VALF);
     __m256 exit = _mm256_set1_ps(HUGE_VALF);
-    __m256 nearest = _mm256_setzero_ps();
-    __m256 farthest = _mm256_setzero_ps();
     const float* base = node.lo[0];
     for (int k = 0; k < 3; ++k) {
         const __m256 origin = _mm256_set1_ps(_mm_cvtss_f32(ray.origin[k].v));
         const __m256 inverse = _mm256_set1_ps(_mm_cvtss_f32(ray.inverse[k].v));
         const __m256 margin = _mm256_set1_ps(_mm_cvtss_f32(ray.margin[k].v));
-        const __m256 weight = _mm256_set1_ps(_mm_cvtss_f32(ray.weight[k].v));
         const __m256 near_side =
             _mm256_sub_ps(_mm256_load_ps(base + 2 * ray.near_plane[k]), origin);
         const __m256 far_side = _mm256_sub_ps(_mm256_load_ps(base + 2 * ray.far_plane[k]), origin);
         entry = _mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(near_side, inverse), margin), entry);
         exit = _mm256_min_ps(_mm256_add_ps(_mm256_mul_ps(far_side, inverse), margin), exit);
-        nearest = _mm256_add_ps(nearest, _mm256_mul_ps(near_side, weight));
-        farthest = _mm256_add_ps(farthest, _mm256_mul_ps(far_side, weight));
     }
     const __m256 slack = _mm256_set1_ps(bvh::kRelativeSlack);
     const __m256 sign = _mm256_set1_ps(-0.0f);
     entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
     exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
-    const __m256 depth_margin = _mm256_set1_ps(_mm_cvtss_f32(ray.depth_margin.v));
-    nearest = _mm256_sub_ps(nearest, depth_margin);
-    farthest = _mm256_add_ps(farthest, depth_margin);
     const __m256 hit =
         _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(entry, exit, _CMP_LE_OQ),
-                                    _mm256_cmp_ps(nearest, _mm256_set1_ps(t_max), _CMP_LE_OQ)),
-                      _mm256_cmp_ps(farthest, _mm256_set1_ps(t_min), _CMP_GE_OQ));
+                                    _mm256_cmp_ps(entry, _mm256_set1_ps(t_max), _CMP_LE_OQ)),
+                      _mm256_cmp_ps(exit, _mm256_set1_ps(t_min), _CMP_GE_OQ));
     out.mask = _mm256_movemask_ps(hit);
     _mm256_store_ps(out.entry, entry);
-    _mm256_store_ps(out.nearest, nearest);
 }
 
 #endif
@@ -329,7 +316,7 @@ template <bool kAvx2>
         child = bvh::kNoChild;
         while (size > 0 && child == bvh::kNoChild) {
             const StackEntry entry = stack[--size];
-            if (entry.nearest <= t_max) {
+            if (entry.entry <= t_max) {
                 child = entry.child;
             }
         }

@@ -10,30 +10,26 @@
 //    ray passes through one of the polygon's fan triangles as projected, so within 2^-49 m of
 //    that real triangle: the ray's line passes within 2^-49 m of the polygon's box.
 //    The t it returns is either the plane's (polygon normal, |cos| above RaySpace's grazing
-//    limit of 1e-6) or a grazing depth clamped to the range of the corners' depths along the
-//    ray. The plane's t lies within the polygon's box as long as the plane is the polygon's
-//    (non-planar corners are covered by inflating the box, polygon_references.cpp); the grazing
-//    depth lies within the box's range of depths, but NOT necessarily where the line crosses the
-//    box (a line in the plane of a triangle "hit" by rounding gets the depth of a corner). So:
-//      - a box is culled spatially only when the line misses it (slab test, all t), and
-//      - culled by t only when its whole range of depths, dot(p - O, D) / |D|^2 over the box,
-//        lies outside the interval (the "depth range" test).
-//    Both with margins that swallow the rounding of the double and float computations.
+//    limit of 1e-6) or a grazing depth. The plane's point lies within 2^-49 m / 1e-6 < 2^-28 m
+//    of the polygon, so of its box, as long as the plane is the polygon's (non-planar corners
+//    are covered by inflating the box, polygon_references.cpp); its t's own rounding, at most
+//    2^-52 * 1e6 * m / |D'| < 2^-31 m / |D'|, moves it less than 2^-31 m. The grazing depth is
+//    kept where the line is within 2^-39 m of the corners' box (ray_polygon.cpp, part 4). So
+//    the hit's point is within 2^-27 m of the box on every axis, and a box is culled only when
+//    its line misses it or meets it only outside [t_min, t_max] (slab test, below), with margins
+//    that swallow that distance and the rounding of the double and float computations.
 //
 // 2. Slab test. With o = float(O) (error <= u|O|), inverse = float(1/D') (relative error <= u),
 //    plane p a float, the computed (p - o) * inverse differs from the real (p - O) / D' by at
 //    most 3u |t| + u |O| |1/D'| (relative roundings, and the origin's rounding divided by D').
-//    slab_margin[k] = 2^-20 m |inverse[k]| covers the origin and the 2^-49 m of part 1; the
+//    slab_margin[k] = 2^-20 m |inverse[k]| covers the origin and the 2^-27 m of part 1; the
 //    3u |t| is covered by widening the final interval by kRelativeSlack |t|. A zero direction
 //    component is clamped to 2^-60 times the largest: the pretend ray drifts by 2^-60 t, below
-//    2^-57 m for any t at which it is still within the scene, far inside the margin.
+//    2^-57 m for any t at which it is still within the scene, far inside the margin. The
+//    interval, so widened, holds the scaled t of every hit the exact test can find in the box,
+//    and t_min and t_max are rounded outward (scaled_down, scaled_up) before they are compared.
 //
-// 3. Depth range. sum_k (p_k - o_k) * depth_weight[k] with |p_k - o_k| <= m: each term within
-//    about 3u m |w_k| plus the origin's u |O| |w_k|; depth_margin = 2^-19 m sum |w_k| covers it.
-//    The double t of a plane hit is ill-conditioned by at most 1e6 (the grazing limit); its
-//    error, 2^-52 * 1e6 * m / |D'| < 2^-31 m, is also far inside depth_margin >= 2^-21 m.
-//
-// 4. Triangle pre-filter. The float projection of a corner (stored rounded to nearest) differs
+// 3. Triangle pre-filter. The float projection of a corner (stored rounded to nearest) differs
 //    from the double one by at most eps = 2^-20 m (about 8u m: the corner's and origin's
 //    rounding, the shear's, three operations). The edge function E = x_a y_b - y_a x_b computed
 //    in float then differs from the double one by at most 4 eps L + 4 eps^2 + 4u L^2, L the
@@ -112,8 +108,6 @@ FloatRay::FloatRay(const Ray& ray, double scene_scale) {
     }
     const double shrink = power_of_two_below(largest, scale_t);  // D = scale_t D'; t' = t scale_t
     const Vec3 scaled = d * shrink;                              // exact
-    const double inverse_length_squared = 1.0 / dot(scaled, scaled);
-    double weight_sum = 0.0;
     double inv[3];
     for (int k = 0; k < 3; ++k) {
         origin[k] = static_cast<float>(ray.origin[k]);
@@ -127,11 +121,7 @@ FloatRay::FloatRay(const Ray& ray, double scene_scale) {
         near_plane[k] = positive ? 4 * k : 12 + 4 * k;
         far_plane[k] = positive ? 12 + 4 * k : 4 * k;
         slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
-        const double weight = scaled[k] * inverse_length_squared;
-        depth_weight[k] = static_cast<float>(weight);
-        weight_sum += std::fabs(weight);
     }
-    depth_margin = bound_up(0x1p-19 * m * weight_sum);
 
     kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     kx = (kz + 1) % 3;

@@ -23,8 +23,6 @@ struct FloatRay {
     /// lo[k] for a positive direction component, hi[k] for a negative one.
     int near_plane[3] = {};
     int far_plane[3] = {};
-    float depth_weight[3] = {};  ///< scaled direction / |scaled direction|^2
-    float depth_margin = 0.0f;   ///< bound on the error of a box's depth range
 
     // Triangle pre-filter, in the ray's sheared 2D space (as RaySpace, in float).
     int kx = 0;

@@ -1,5 +1,5 @@
 // The float pre-filter of a packet of four fan triangles: it rejects a triangle only when the
-// ray certainly misses it (float_ray.cpp, part 4); the exact test decides every other one.
+// ray certainly misses it (float_ray.cpp, part 3); the exact test decides every other one.
 #pragma once
 
 #include "rt/accel/bvh/bvh_layout.h"
