@@ -1,11 +1,17 @@
-// The bounding-box look before the exact test: its SSE2 form gives the plain form's answers, and
-// neither ever skips a box the line passes through.
+// The looks before the exact test: the bounding box's SSE2 form gives the plain form's answers,
+// and neither ever skips a box the line passes through; the float triangle look gives the BVH
+// packet test's answers and never skips a triangle the exact test hits.
 #include "rt/accel/voxel/polygon_boxes.h"
 
 #include <array>
 #include <random>
 
+#include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/geometry/ray_polygon.h"
+
 #include <gtest/gtest.h>
+
+#include "support/scene_builder.h"
 
 namespace rt {
 namespace {
@@ -63,6 +69,90 @@ TEST(PolygonBoxes, NeverSkipsABoxAroundAPointOfTheLine) {
         const std::array<float, 6> box = random_box(rng, ray, true);
         ASSERT_TRUE(line_may_meet_box(line, box.data())) << "case " << i;
     }
+}
+
+// Triangles of every size from 1e-6 to 10, near the origin or far off, some long and thin.
+Scene random_triangles(std::mt19937& rng, int count) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    test::SceneBuilder b;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 centre =
+            Vec3{normal(rng), normal(rng), normal(rng)} * (i % 5 == 0 ? 100.0 : 1.0);
+        const double size = std::pow(10.0, 1.0 - 7.0 * unit(rng));
+        std::vector<Vec3> corners;
+        for (int v = 0; v < 3; ++v) {
+            const double stretch = (i % 7 == 0 && v == 1) ? 50.0 : 1.0;
+            corners.push_back(centre +
+                              Vec3{normal(rng), normal(rng), normal(rng)} * (size * stretch));
+        }
+        b.add_polygon(corners);
+    }
+    b.add_polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // a quad: never skipped
+    return std::move(b.scene());
+}
+
+TEST(TriangleLook, GivesThePacketTestsAnswer) {
+    std::mt19937 rng(23);
+    const Scene scene = random_triangles(rng, 4000);
+    const PolygonBoxes boxes(scene, 0.0);
+    int candidates = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray = random_ray(rng);
+        const bvh::FloatRay float_ray(ray, boxes.scale());
+        ASSERT_TRUE(float_ray.usable);
+        bvh::TrianglePacket packet{};
+        float corners[4][9];
+        for (int lane = 0; lane < 4; ++lane) {
+            const Polygon& p = scene.polygons[rng() % (scene.polygons.size() - 1)];
+            for (int v = 0; v < 3; ++v) {
+                const Vec3 c = scene.corner_position(p, v);
+                for (int a = 0; a < 3; ++a) {
+                    packet.corner[v][a][lane] = static_cast<float>(c[a]);
+                    corners[lane][3 * v + a] = static_cast<float>(c[a]);
+                }
+            }
+        }
+        const int bits = bvh::packet_candidates(packet, float_ray);
+        for (int lane = 0; lane < 4; ++lane) {
+            const bool one = bvh::triangle_candidate(corners[lane], float_ray);
+            ASSERT_EQ(one, ((bits >> lane) & 1) != 0) << "case " << i << " lane " << lane;
+            candidates += one ? 1 : 0;
+        }
+    }
+    EXPECT_GT(candidates, 0);
+}
+
+TEST(TriangleLook, NeverSkipsATriangleTheExactTestHits) {
+    std::mt19937 rng(24);
+    const Scene scene = random_triangles(rng, 2000);
+    const PolygonBoxes boxes(scene, 0.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int hits = 0;
+    int skipped = 0;
+    for (int i = 0; i < 100000; ++i) {
+        // Aimed at a point of a triangle (or just beside it), so that many rays hit.
+        const std::uint32_t id = rng() % scene.polygons.size();
+        const Polygon& p = scene.polygons[id];
+        const double a = unit(rng) * 1.1;
+        const double b = unit(rng) * (1.1 - a);
+        const Vec3 c0 = scene.corner_position(p, 0);
+        const Vec3 target =
+            c0 + (scene.corner_position(p, 1) - c0) * a + (scene.corner_position(p, 2) - c0) * b;
+        Ray ray = random_ray(rng);
+        ray.direction = target - ray.origin;
+        TriangleProbe probe(ray, boxes.scale());
+        const bool hit = intersect_polygon(ray, scene, id, Interval{-1e300, 1e300}).has_value();
+        const bool kept = boxes.triangle_may_be_hit(probe, id);
+        if (hit) {
+            ASSERT_TRUE(kept) << "case " << i << ", polygon " << id;
+            ++hits;
+        } else if (!kept) {
+            ++skipped;
+        }
+    }
+    EXPECT_GT(hits, 50000) << "too few hits for the test to mean much";
+    EXPECT_GT(skipped, 2000) << "the look skips almost nothing";
 }
 
 }  // namespace

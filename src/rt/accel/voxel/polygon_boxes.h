@@ -4,10 +4,17 @@
 // it in the exact test (which needs the line to pass through the polygon's projection, up to
 // rounding far below the growth), so the polygon is skipped without touching the scene's records.
 // It only ever skips polygons the exact test would miss: the answers stay brute force's.
+//
+// A triangle whose box the line meets gets a second look before the exact test: the BVH's float
+// edge test (bvh/packet_prefilter.h, argued in bvh/float_ray.cpp, part 3) on its corners stored
+// as floats, which rejects it only when the ray certainly misses it. On random triangle soups a
+// line meets about five boxes for each triangle it hits; this look skips most of those exact
+// tests, each a double-precision test reading three records of the scene.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -15,6 +22,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "rt/accel/bvh/float_ray.h"
 #include "rt/accel/voxel/box.h"
 #include "rt/geometry/ray.h"
 
@@ -89,6 +97,24 @@ inline bool line_may_meet_box(const LineProbe& line, const float* b) {
     return line_may_meet_box_plain(line, b);
 }
 
+/// The ray as the float triangle test wants it, prepared on first use: most rays meet few
+/// triangle boxes, some none.
+class TriangleProbe {
+public:
+    TriangleProbe(const Ray& ray, double scene_scale) : ray_(ray), scene_scale_(scene_scale) {}
+    const bvh::FloatRay& get() {
+        if (!float_ray_) {
+            float_ray_.emplace(ray_, scene_scale_);
+        }
+        return *float_ray_;
+    }
+
+private:
+    const Ray& ray_;
+    double scene_scale_;
+    std::optional<bvh::FloatRay> float_ray_;
+};
+
 class PolygonBoxes {
 public:
     /// `growth`: how far each box is grown on every side (the world's 2^-24 serves well).
@@ -99,15 +125,30 @@ public:
         return line_may_meet_box(line, boxes_.data() + 6 * static_cast<std::size_t>(polygon));
     }
 
-    /// Asks for the polygon's box to be brought into cache (no effect on any answer).
+    /// False only if the ray certainly misses the polygon: the float edge test for a triangle
+    /// with finite float corners, true for any other polygon (and for a ray the float test
+    /// cannot serve).
+    bool triangle_may_be_hit(TriangleProbe& probe, std::uint32_t polygon) const;
+
+    /// Asks for the polygon's box and corners to be brought into cache (no effect on answers).
     void prefetch(std::uint32_t polygon) const {
         __builtin_prefetch(boxes_.data() + 6 * static_cast<std::size_t>(polygon));
+        __builtin_prefetch(corners_.data() + 9 * static_cast<std::size_t>(polygon));
     }
 
-    std::size_t memory_bytes() const { return boxes_.capacity() * sizeof(float); }
+    /// The largest |coordinate| of any corner kept: the FloatRay's scene scale.
+    double scale() const { return scale_; }
+
+    std::size_t memory_bytes() const {
+        return (boxes_.capacity() + corners_.capacity()) * sizeof(float);
+    }
 
 private:
-    std::vector<float> boxes_;  ///< per polygon: lo x y z, hi x y z
+    void keep_triangle(const Scene& scene, std::uint32_t id);
+
+    std::vector<float> boxes_;    ///< per polygon: lo x y z, hi x y z
+    std::vector<float> corners_;  ///< per polygon: a triangle's corners [vertex][axis], or NaN
+    double scale_ = 0.0;
 };
 
 }  // namespace rt

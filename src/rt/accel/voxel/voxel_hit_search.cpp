@@ -12,7 +12,8 @@ void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
         __builtin_prefetch(scene_.polygons.data() + id);
     }
     for (const std::uint32_t id : polygons) {
-        if (tested_.seen(id) || !boxes_.line_may_meet(line_, id)) {
+        if (tested_.seen(id) || !boxes_.line_may_meet(line_, id) ||
+            !boxes_.triangle_may_be_hit(triangle_, id)) {
             continue;
         }
         ++counters_.polygon_tests;
@@ -36,7 +37,8 @@ bool AnyHitSearch::test(std::span<const std::uint32_t> polygons) {
         __builtin_prefetch(scene_.polygons.data() + id);
     }
     for (const std::uint32_t id : polygons) {
-        if (tested_.seen(id) || !boxes_.line_may_meet(line_, id)) {
+        if (tested_.seen(id) || !boxes_.line_may_meet(line_, id) ||
+            !boxes_.triangle_may_be_hit(triangle_, id)) {
             continue;
         }
         ++counters_.polygon_tests;

@@ -59,6 +59,7 @@ public:
         : scene_(scene),
           boxes_(boxes),
           line_(space.ray()),
+          triangle_(space.ray(), boxes.scale()),
           space_(space),
           t_(t),
           counters_(counters) {}
@@ -71,6 +72,7 @@ private:
     const Scene& scene_;
     const PolygonBoxes& boxes_;
     LineProbe line_;
+    TriangleProbe triangle_;
     const RaySpace& space_;
     Interval t_;
     TraceCounters& counters_;
@@ -86,6 +88,7 @@ public:
         : scene_(scene),
           boxes_(boxes),
           line_(space.ray()),
+          triangle_(space.ray(), boxes.scale()),
           space_(space),
           t_(t),
           counters_(counters) {}
@@ -98,6 +101,7 @@ private:
     const Scene& scene_;
     const PolygonBoxes& boxes_;
     LineProbe line_;
+    TriangleProbe triangle_;
     const RaySpace& space_;
     Interval t_;
     TraceCounters& counters_;
