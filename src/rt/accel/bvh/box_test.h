@@ -2,6 +2,8 @@
 // line enters each, with the conservative margins of float_ray.cpp.
 #pragma once
 
+#include <cstddef>
+
 #include "rt/accel/bvh/bvh_layout.h"
 #include "rt/accel/bvh/float4.h"
 #include "rt/accel/bvh/float_ray.h"
@@ -10,11 +12,11 @@ namespace rt::bvh {
 
 /// A FloatRay's box-test values, each repeated in four lanes once per ray rather than per node.
 struct BoxRay {
-    simd::Float4 origin[3];
-    simd::Float4 inverse[3];
-    simd::Float4 margin[3];
-    int near_plane[3];
-    int far_plane[3];
+    simd::Float4 origin[3]{};
+    simd::Float4 inverse[3]{};
+    simd::Float4 margin[3]{};
+    int near_plane[3]{};
+    int far_plane[3]{};
 
     explicit BoxRay(const FloatRay& ray) {
         using simd::Float4;
@@ -33,7 +35,7 @@ struct BoxRay {
 /// the front-to-back order, and the depth a pushed child is culled by once a nearer hit is found.
 struct WideHits {
     int mask = 0;
-    alignas(32) float entry[8];
+    alignas(32) float entry[8]{};
 };
 
 /// With SSE2 only: each half of the node in one register per plane. The AVX2 form in
@@ -43,13 +45,15 @@ inline void test_wide_boxes_sse2(const WideNode& node, const BoxRay& ray, simd::
     using simd::Float4;
     out.mask = 0;
     for (int half = 0; half < 2; ++half) {
-        const float* base = node.lo[0] + 4 * half;
+        const float* base = node.lo[0] + std::ptrdiff_t{4} * half;
         Float4 entry = Float4::broadcast(-HUGE_VALF);
         Float4 exit = Float4::broadcast(HUGE_VALF);
         for (int k = 0; k < 3; ++k) {
             // Offsets chosen once per ray: no branch on the direction's signs here.
-            const Float4 near_side = Float4::load(base + 2 * ray.near_plane[k]) - ray.origin[k];
-            const Float4 far_side = Float4::load(base + 2 * ray.far_plane[k]) - ray.origin[k];
+            const Float4 near_side =
+                Float4::load(base + std::ptrdiff_t{2} * ray.near_plane[k]) - ray.origin[k];
+            const Float4 far_side =
+                Float4::load(base + std::ptrdiff_t{2} * ray.far_plane[k]) - ray.origin[k];
             // max/min keep their second operand when the first is NaN: entry and exit never are.
             entry = max(near_side * ray.inverse[k] - ray.margin[k], entry);
             exit = min(far_side * ray.inverse[k] + ray.margin[k], exit);
@@ -59,7 +63,7 @@ inline void test_wide_boxes_sse2(const WideNode& node, const BoxRay& ray, simd::
         exit = exit + abs(exit) * slack;
         const simd::Mask4 hit = (entry <= exit) & (entry <= t_max) & (exit >= t_min);
         out.mask |= hit.bits() << (4 * half);
-        entry.store(out.entry + 4 * half);
+        entry.store(out.entry + std::ptrdiff_t{4} * half);
     }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "rt/accel/bvh/bvh_layout.h"
 #include "rt/accel/bvh/float4.h"
@@ -51,7 +52,7 @@ inline bool triangle_candidate(const float* corner, const FloatRay& ray) {
     float y[3];
     float size = 0.0f;
     for (int v = 0; v < 3; ++v) {
-        const float* c = corner + 3 * v;
+        const float* c = corner + std::ptrdiff_t{3} * v;
         const float az = c[ray.kz] - oz;
         x[v] = (c[ray.kx] - ox) - ray.shear_x * az;
         y[v] = (c[ray.ky] - oy) - ray.shear_y * az;
