@@ -63,7 +63,7 @@ private:
 // Replaces the largest splittable range by its halves until there are four (or none left).
 std::vector<Pending> SubtreeBuilder::open_up_to_four(Pending p, int depth) {
     std::vector<Pending> children;
-    children.push_back(std::move(p));
+    children.push_back(p);
     while (children.size() < 4) {
         int widest = -1;
         double widest_area = -1.0;
@@ -86,13 +86,13 @@ std::vector<Pending> SubtreeBuilder::open_up_to_four(Pending p, int depth) {
 
 std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
     // About 1.1 packets per four triangles: reserved once rather than grown by copying.
-    packets_.reserve(packets_.size() + p.range.triangles / 16 * 5 + 2);
+    packets_.reserve(packets_.size() + std::size_t{p.range.triangles} / 16 * 5 + 2);
     if (p.split.leaf) {
         return leaf(p.range);
     }
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
-    fill(index, std::move(p), depth);
+    fill(index, p, depth);
     return index;
 }
 
@@ -100,7 +100,7 @@ std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
 // nodes, and the leaves consecutive packets, so that a ray testing siblings reads neighbouring
 // cache lines.
 void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
-    const std::vector<Pending> children = open_up_to_four(std::move(p), depth + 1);
+    const std::vector<Pending> children = open_up_to_four(p, depth + 1);
     const int count = static_cast<int>(children.size());
     for (int c = 0; c < 4; ++c) {
         Node& node = nodes_[index];

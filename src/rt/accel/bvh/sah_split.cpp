@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace rt::bvh {
 
@@ -12,8 +17,10 @@ constexpr int kBins = 32;
 // Cost of testing one node relative to one packet of four triangles.
 constexpr double kTraversalCost = 2.0;
 
+// Whole packets: the integer division rounds up on purpose.
 double packets(std::uint32_t triangles) {
-    return static_cast<double>((triangles + 3) / 4);
+    const std::uint32_t whole = (triangles + 3) / 4;
+    return static_cast<double>(whole);
 }
 
 struct CentroidBounds {
@@ -60,17 +67,59 @@ Binner binner_for(const CentroidBounds& cb, int axis) {
     return {cb.lo[axis], extent > 0.0f ? kBins * 0.9999f / extent : 0.0f};
 }
 
-// Bins every reference on the three axes in one pass over them (each axis whose centroids
-// spread), then sweeps each axis's bins in turn, axis 0 first, for the cheapest split.
-void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange& r,
-                   const CentroidBounds& cb, BestSplit& best) {
-    std::array<std::array<Bin, kBins>, 3> bins{};
-    std::array<Binner, 3> binners;
-    std::array<bool, 3> spread{};
-    for (int axis = 0; axis < 3; ++axis) {
-        spread[axis] = cb.hi[axis] > cb.lo[axis];
-        binners[axis] = binner_for(cb, axis);
+using AxisBins = std::array<std::array<Bin, kBins>, 3>;
+
+#if defined(__SSE2__)
+// One pass over the references, each binned on all three axes: the three centroids and bin
+// numbers in one register (the same float operations as Binner, lane by lane, so the partition
+// that follows puts each reference on the side its bin was counted on), the boxes grown as
+// registers. Lane 3 of each register holds whatever follows the three floats loaded: unused.
+void bin_references(std::span<const PolygonReference> refs, const ReferenceRange& r,
+                    const std::array<Binner, 3>& binners, AxisBins& bins) {
+    struct Wide {
+        __m128 lo = _mm_set1_ps(HUGE_VALF);
+        __m128 hi = _mm_set1_ps(-HUGE_VALF);
+    };
+    std::array<std::array<Wide, kBins>, 3> boxes;
+    const __m128 origin = _mm_setr_ps(binners[0].lo, binners[1].lo, binners[2].lo, 0.0f);
+    const __m128 scale = _mm_setr_ps(binners[0].scale, binners[1].scale, binners[2].scale, 0.0f);
+    const __m128 half = _mm_set1_ps(0.5f);
+    for (std::uint32_t i = r.begin; i < r.end; ++i) {
+        const PolygonReference& ref = refs[i];
+        static_assert(offsetof(PolygonReference, box) == 0 && offsetof(Box, hi) == 12 &&
+                          sizeof(PolygonReference) >= 28,
+                      "four floats from lo and from hi stay inside the reference");
+        const __m128 lo = _mm_loadu_ps(ref.box.lo);
+        const __m128 hi = _mm_loadu_ps(ref.box.hi);
+        const __m128 centroid = _mm_mul_ps(half, _mm_add_ps(lo, hi));
+        alignas(16) std::int32_t bin[4];
+        _mm_store_si128(reinterpret_cast<__m128i*>(bin),
+                        _mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(centroid, origin), scale)));
+        for (int axis = 0; axis < 3; ++axis) {
+            const int b = std::clamp(bin[axis], 0, kBins - 1);
+            Wide& box = boxes[axis][b];
+            box.lo = _mm_min_ps(lo, box.lo);
+            box.hi = _mm_max_ps(hi, box.hi);
+            bins[axis][b].triangles += ref.triangles;
+            ++bins[axis][b].count;
+        }
     }
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int b = 0; b < kBins; ++b) {
+            alignas(16) float lo[4];
+            alignas(16) float hi[4];
+            _mm_store_ps(lo, boxes[axis][b].lo);
+            _mm_store_ps(hi, boxes[axis][b].hi);
+            for (int k = 0; k < 3; ++k) {
+                bins[axis][b].box.lo[k] = lo[k];
+                bins[axis][b].box.hi[k] = hi[k];
+            }
+        }
+    }
+}
+#else
+void bin_references(std::span<const PolygonReference> refs, const ReferenceRange& r,
+                    const std::array<Binner, 3>& binners, AxisBins& bins) {
     for (std::uint32_t i = r.begin; i < r.end; ++i) {
         const PolygonReference& ref = refs[i];
         for (int axis = 0; axis < 3; ++axis) {
@@ -80,6 +129,21 @@ void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange&
             ++bin.count;
         }
     }
+}
+#endif
+
+// Bins every reference on the three axes in one pass over them (each axis whose centroids
+// spread), then sweeps each axis's bins in turn, axis 0 first, for the cheapest split.
+void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange& r,
+                   const CentroidBounds& cb, BestSplit& best) {
+    AxisBins bins{};
+    std::array<Binner, 3> binners;
+    std::array<bool, 3> spread{};
+    for (int axis = 0; axis < 3; ++axis) {
+        spread[axis] = cb.hi[axis] > cb.lo[axis];
+        binners[axis] = binner_for(cb, axis);
+    }
+    bin_references(refs, r, binners, bins);
     for (int axis = 0; axis < 3; ++axis) {
         if (!spread[axis]) {
             continue;
