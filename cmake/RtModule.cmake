@@ -18,10 +18,11 @@ function(rt_add_module name)
   endif()
 endfunction()
 
-# rt_add_tests(NAME DEPS dep...): one GoogleTest binary from every *_test.cpp in tests/NAME.
+# rt_add_tests(NAME DEPS dep...): one GoogleTest binary from the *.cpp files in tests/NAME (every
+# *_test.cpp, and the helpers beside them).
 function(rt_add_tests name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
-  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${name}/*_test.cpp)
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp)
   if(NOT sources)
     return()
   endif()
