@@ -262,12 +262,14 @@ TEST_P(NoOtherSwitch, MeetsARowsExpectations) {
     EXPECT_GT(compared, 10);
 }
 
+std::string scene_name(const ::testing::TestParamInfo<std::string>& scene) {
+    std::string name = scene.param;
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+
 INSTANTIATE_TEST_SUITE_P(Table, NoOtherSwitch, ::testing::ValuesIn(cross_checked_scenes()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = info.param;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+                         scene_name);
 
 // --- every switch has its row ----------------------------------------------------------------
 
