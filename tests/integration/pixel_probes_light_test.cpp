@@ -82,13 +82,15 @@ constexpr int kLight = 1;
 constexpr int kBlocker = 2;
 
 // A 20 x 20 square facing the eye at z = 0, lit by a small emissive square (side 1) up and to the
-// right, off the screen. With `shine`, the target has a Phong highlight of that weight.
-ProbeScene lit_square(int lghtick, double shine = 0.0) {
+// right, off the screen, facing the eye (its back to the target) unless turned. With `shine`, the
+// target has a Phong highlight of that weight.
+ProbeScene lit_square(int lghtick, double shine = 0.0, double light_turn_degrees = 0.0) {
     ProbeScene s;
     s.lghtick = lghtick;
     s.attributes = {{.colour = {0.9, 0.6, 0.3}, .a = 0.1, .d = 0.7, .s = shine, .pow = 8.0},
                     {.colour = {1.0, 0.9, 0.8}, .e = 1.5}};
-    s.squares = {{kTarget, 10.0, {0.0, 0.0, 0.0}}, {kLight, 0.5, {6.0, 8.0, -10.0}}};
+    s.squares = {{kTarget, 10.0, {0.0, 0.0, 0.0}},
+                 {kLight, 0.5, {6.0, 8.0, -10.0}, light_turn_degrees}};
     return s;
 }
 
@@ -103,6 +105,7 @@ ProbeScene shadowed_square(int lghtick, const ProbeAttribute& blocker) {
 struct PointLight {
     V position;
     Colour intensity;
+    V emitter_normal;  ///< the outward normal of the emissive square
 };
 
 // The emitter's point sources (manual 2.2, docs/rendering.md): lghtick 2, its centre; lghtick 1,
@@ -112,12 +115,13 @@ std::vector<PointLight> point_lights(const ProbeScene& s) {
     const ProbeAttribute& a = s.attributes[kLight];
     const Colour total = colour_of(a) * a.e;
     if (s.lghtick == 2) {
-        return {{light.centre, total}};
+        return {{light.centre, total, light.normal}};
     }
     std::vector<PointLight> corners;
     for (const double i : {-1.0, 1.0}) {
         for (const double j : {-1.0, 1.0}) {
-            corners.push_back({light.centre + light.u * i + light.v * j, total * 0.25});
+            corners.push_back(
+                {light.centre + light.u * i + light.v * j, total * 0.25, light.normal});
         }
     }
     return corners;
@@ -182,6 +186,9 @@ Probed check_lit_target(const ProbeScene& s, const Switches& run) {
                 callable = callable && blocker != -2;
                 shadowed = shadowed || blocker >= 0;
                 const V span = light.position - point;
+                if (!run.back_emits && dot(span, light.emitter_normal) >= 0.0) {
+                    continue;  // -Db: the point is behind the emitter, which emits outward only
+                }
                 const Colour received = light.intensity * feeler_filter(s, run, blocker) *
                                         feeler_factor(run, length(span));
                 want = want + light_from(a, normal, view, unit(span), received);
@@ -214,6 +221,17 @@ TEST(PixelProbes, LghtickOneLightsFromTheCornersWithAQuarterEach) {
 
 TEST(PixelProbes, PhongHighlightOfOneEmitter) {
     EXPECT_EQ(check_lit_target(lit_square(2, 0.3), Switches()).pixels, 35);
+}
+
+// -Db: "only the 'outside' surface of emissive polygons emits light" (manual Appendix), so a
+// point behind a one-sided emitter gets none of its light, as it sees none of its emission.
+TEST(PixelProbes, OneSidedEmitterLightsOnlyWhatItFaces) {
+    for (const int lghtick : {2, 1}) {
+        SCOPED_TRACE("lghtick " + std::to_string(lghtick));
+        EXPECT_EQ(check_lit_target(lit_square(lghtick, 0.0, 0.0), Switches({"-Db"})).pixels, 35);
+        EXPECT_EQ(check_lit_target(lit_square(lghtick, 0.0, 180.0), Switches({"-Db"})).pixels, 35);
+        EXPECT_EQ(check_lit_target(lit_square(lghtick, 0.0, 180.0), Switches()).pixels, 35);
+    }
 }
 
 // ---- Shadows ----
