@@ -64,6 +64,12 @@ TEST(PixelProbes, EmissionAndAmbientLightThroughTheCamera) {
                                 Switches({"-Db"}), Switches({"-Da"})}) {
         EXPECT_EQ(check_emission_and_ambient(s, run), 24) << run.name();
     }
+    // With lghtick 2 the emitters are lights too, but no weight d or s reflects them; nor with -Ds.
+    ProbeScene lit = quadrants();
+    lit.lghtick = 2;
+    for (const Switches& run : {Switches(), Switches({"-Ds"})}) {
+        EXPECT_EQ(check_emission_and_ambient(lit, run), 24) << "lghtick 2, " << run.name();
+    }
 }
 
 TEST(PixelProbes, EmissionAndAmbientLightSeenObliquely) {
