@@ -242,27 +242,27 @@ TEST(PixelProbes, OneSidedEmitterLightsOnlyWhatItFaces) {
 
 // ---- Shadows ----
 
-const ProbeAttribute kOpaqueGrey{.colour = {0.5, 0.5, 0.5}, .a = 0.3};
-const ProbeAttribute kBlueGlass{.colour = {0.5, 0.8, 1.0}, .a = 0.1, .t = 0.6};
+const ProbeAttribute opaque_grey{.colour = {0.5, 0.5, 0.5}, .a = 0.3};
+const ProbeAttribute blue_glass{.colour = {0.5, 0.8, 1.0}, .a = 0.1, .t = 0.6};
 
 TEST(PixelProbes, ShadowBehindAnOpaqueBlockerIsAmbientOnly) {
     for (const int lghtick : {2, 1}) {
         SCOPED_TRACE("lghtick " + std::to_string(lghtick));
-        const Probed p = check_lit_target(shadowed_square(lghtick, kOpaqueGrey), Switches());
+        const Probed p = check_lit_target(shadowed_square(lghtick, opaque_grey), Switches());
         EXPECT_GE(p.shadowed, 1);
         EXPECT_GE(p.pixels, 30);
     }
 }
 
 TEST(PixelProbes, ShadowBehindATransparentBlockerIsFilteredByItsColour) {
-    const ProbeScene s = shadowed_square(2, kBlueGlass);
+    const ProbeScene s = shadowed_square(2, blue_glass);
     for (const Switches& run : {Switches(), Switches({"-A20,0.5"}), Switches({"-Dt"})}) {
         const Probed p = check_lit_target(s, run);
         EXPECT_GE(p.shadowed, 1) << run.name();
         EXPECT_GE(p.pixels, 30) << run.name();
     }
     SCOPED_TRACE("lghtick 1");
-    const Probed corners = check_lit_target(shadowed_square(1, kBlueGlass), Switches());
+    const Probed corners = check_lit_target(shadowed_square(1, blue_glass), Switches());
     EXPECT_GE(corners.shadowed, 1);
 }
 

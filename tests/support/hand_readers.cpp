@@ -89,8 +89,9 @@ Image8 parse_ppm(const std::string& bytes) {
 }
 
 const std::array<double, 3>& GroPixels::at(int x, int y) const {
-    const int width = right - left + 1;
-    return pixels.at(static_cast<std::size_t>((y - top) * width + (x - left)));
+    const std::size_t width = static_cast<std::size_t>(right - left) + 1;
+    return pixels.at(static_cast<std::size_t>(y - top) * width +
+                     static_cast<std::size_t>(x - left));
 }
 
 GroPixels parse_gro(const std::filesystem::path& path) {
