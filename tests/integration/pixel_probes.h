@@ -212,9 +212,9 @@ inline FirstHit first_hit(const ProbeScene& s, const Ray& ray, int leaving = -1)
     return best;
 }
 
-/// Whether the segment from `point` to `light` (square `emitter`'s point source) passes square
-/// k: returns -1 if it passes none, the square if it passes one fully inside, and -2 if an edge is
-/// too close to call. Only the first square is returned; the probe scenes hold at most one.
+/// The square a shadow feeler passes on its way from `point` (on square `surface`) to `light`, a
+/// point source of square `emitter` (neither of which can block it): -1 if none, -2 if it passes
+/// too close to an edge to call. The probe scenes hold at most one such square.
 inline int feeler_blocker(const ProbeScene& s, V point, V light, int emitter, int surface) {
     const V span = light - point;
     const double distance = length(span);
