@@ -90,6 +90,10 @@ Image8 read_png(const std::filesystem::path& path) {
                              std::to_string(png->width) + " x " + std::to_string(png->height));
     }
     png->format = PNG_FORMAT_RGB;
+    // Without a gAMA or sRGB chunk libpng takes 16-bit samples as linear light and gamma-encodes
+    // them on the way to 8 bits (a sample of 25 * 257 read as 88); the PNG specification's plain
+    // scaling (v / 257) is what a picture file without colour information means to us.
+    png->flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
     Image8 image;
     image.width = static_cast<int>(png->width);
     image.height = static_cast<int>(png->height);

@@ -51,11 +51,17 @@ Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight&
     if (!(distance > context.epsilon)) {
         return {};
     }
+    // -Db: "only the 'outside' surface of emissive polygons emits light" (manual Appendix). A
+    // point behind a one-sided emitter gets none of its light, as a diffuse ray (-Ds) from there
+    // would see no emission.
+    const Polygon& emitter_polygon = context.scene.polygons[light.polygon];
+    if (!settings.both_sides_emit && dot(from - light.position, emitter_polygon.normal) <= 0.0) {
+        return {};
+    }
     // Warn lights aim the feeler (at a displaced source for -Wt) and weigh what it brings.
     double warn = 1.0;
     Vec3 target = light.position;
     if (settings.warn.mode != WarnMode::None) {
-        const Polygon& emitter_polygon = context.scene.polygons[light.polygon];
         const WarnEmitter emitter{emitter_polygon.normal,
                                   context.scene.attribute_of(emitter_polygon).specular_exponent,
                                   settings.both_sides_emit};
