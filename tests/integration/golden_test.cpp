@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 // Each tests/data/golden/NAME.png is this renderer's own output: the shipped scene rendered with
 // the case's switches, by the command below, then looked at by a person and checked in. They
 // guard against change, not against a wrong model (the pixel probes, computed from the manual's
-// formulas in pixel_probe_test.cpp, and the switch table in switch_effect_test.cpp do that).
+// formulas in pixel_probes_*_test.cpp, and the switch table in switch_effect_test.cpp do that).
 // Remake a reference only in the commit that changes the picture on purpose (a new rule, a fixed
 // bug), saying why in its message, after looking at the new picture:
 //   build/bin/rt scenes/SCENE -n --quiet SWITCHES --output tests/data/golden/NAME.png

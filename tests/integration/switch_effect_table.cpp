@@ -97,8 +97,10 @@ const std::vector<PictureRow>& picture_rows() {
         {"-Db",
          {"-Db"},
          "gallery",
-         {{"blue", Darker, 40.0}, {"white_light", Same}, {"wall", Same}},
-         "-Db: the blue light, seen from behind, no longer emits toward the eye"},
+         {{"blue", Darker, 40.0}, {"wall", Darker, 100.0}, {"yellow", Same}},
+         "-Db: only the outside of an emitter emits: the blue light, seen from behind, goes dark, "
+         "and the wall behind the yellow light loses its light; the yellow light itself, seen "
+         "from the front, does not change"},
         {"-Wr",
          {"-Wr"},
          "gallery",
