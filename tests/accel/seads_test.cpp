@@ -124,6 +124,7 @@ TEST(Seads, RefusesAbsurdGridsBeforeAllocating) {
     EXPECT_THROW(Seads(scene, seads(2000000000)), UsageError);
     try {
         Seads(scene, seads(1000));
+        ADD_FAILURE() << "no error for 1000 voxels a side";
     } catch (const UsageError& e) {
         EXPECT_NE(std::string(e.what()).find("1000 voxels a side"), std::string::npos) << e.what();
     }
