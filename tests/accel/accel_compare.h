@@ -3,6 +3,7 @@
 // watertightness and ties are decided), with assorted intervals.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -20,15 +21,44 @@ struct RayQuery {
     Interval t;
 };
 
+/// The box around the scene's finite positions (a NaN or infinite corner would make every ray
+/// built from it non-finite), and its largest side; a unit box at the origin when there are none.
+inline void finite_bounds(const Scene& scene, Vec3& lo, Vec3& hi, double& size) {
+    bool any = false;
+    for (const Vec3& p : scene.positions) {
+        if (!is_finite(p)) {
+            continue;
+        }
+        lo = any ? min_components(lo, p) : p;
+        hi = any ? max_components(hi, p) : p;
+        any = true;
+    }
+    if (!any) {
+        lo = Vec3{-0.5, -0.5, -0.5};
+        hi = Vec3{0.5, 0.5, 0.5};
+    }
+    size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    if (!(size > 0.0)) {
+        // A scene of one point: a box around it at its own scale.
+        size = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(lo.z), 1e-300});
+    }
+}
+
+/// Rays whose origins fill the scene's box doubled on every side (padded by a twentieth of its
+/// largest side, so that flat scenes get room and a scene of size 1e-30 is not lost in a fixed
+/// pad), half in random directions and half aimed at polygons. Directions are scaled by the
+/// scene's size, so the finite intervals below mean the same at every scale.
 inline std::vector<RayQuery> random_queries(const Scene& scene, int count, std::uint64_t seed) {
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::normal_distribution<double> normal(0.0, 1.0);
     Vec3 lo;
     Vec3 hi;
-    scene.bounds(lo, hi);
-    const Vec3 middle = (lo + hi) * 0.5;
-    const Vec3 half = (hi - lo) * 1.0 + Vec3{0.1, 0.1, 0.1};
+    double size = 0.0;
+    finite_bounds(scene, lo, hi, size);
+    const Vec3 middle = lo * 0.5 + hi * 0.5;  // not (lo + hi) / 2, which overflows near DBL_MAX
+    const Vec3 pad{size / 20, size / 20, size / 20};
+    const Vec3 half = (hi - lo) + pad;
     const auto anywhere = [&] {
         return middle + Vec3{half.x * (2 * unit(random) - 1), half.y * (2 * unit(random) - 1),
                              half.z * (2 * unit(random) - 1)};
@@ -61,7 +91,7 @@ inline std::vector<RayQuery> random_queries(const Scene& scene, int count, std::
         RayQuery q;
         q.ray.origin = anywhere();
         if (i % 2 == 0) {
-            q.ray.direction = Vec3{normal(random), normal(random), normal(random)};
+            q.ray.direction = Vec3{normal(random), normal(random), normal(random)} * size;
         } else {
             q.ray.direction = (target() - q.ray.origin) * (0.5 + unit(random));
         }
@@ -86,15 +116,20 @@ inline std::vector<RayQuery> random_queries(const Scene& scene, int count, std::
     return queries;
 }
 
-/// Every query answered identically (t bits, polygon, occlusion) by both.
-inline void expect_same_answers(const Scene& scene, const Accelerator& accel,
-                                const std::vector<RayQuery>& queries) {
+/// Every query answered identically (t bits, polygon, occlusion) by both, and at least
+/// `minimum_hit_share` of them hitting something: agreement on misses alone proves nothing.
+/// Returns how many hit.
+inline int expect_same_answers(const Scene& scene, const Accelerator& accel,
+                               const std::vector<RayQuery>& queries,
+                               double minimum_hit_share = 0.1) {
     const BruteForce brute(scene);
     TraceCounters counters;
     int mismatches = 0;
+    int hits = 0;
     for (const RayQuery& q : queries) {
         const std::optional<Hit> want = brute.closest_hit(q.ray, q.t, counters);
         const std::optional<Hit> got = accel.closest_hit(q.ray, q.t, counters);
+        hits += want.has_value() ? 1 : 0;
         const bool same = want.has_value() == got.has_value() &&
                           (!want || (want->t == got->t && want->polygon == got->polygon));
         const bool same_occlusion =
@@ -111,11 +146,15 @@ inline void expect_same_answers(const Scene& scene, const Accelerator& accel,
         }
     }
     EXPECT_EQ(mismatches, 0) << "of " << queries.size() << " rays";
+    EXPECT_GE(hits, minimum_hit_share * static_cast<double>(queries.size()))
+        << accel.name() << ": only " << hits << " of " << queries.size()
+        << " rays hit anything, too few for the comparison to mean much";
+    return hits;
 }
 
-inline void compare_with_brute_force(const Scene& scene, const Accelerator& accel, int rays,
-                                     std::uint64_t seed) {
-    expect_same_answers(scene, accel, random_queries(scene, rays, seed));
+inline int compare_with_brute_force(const Scene& scene, const Accelerator& accel, int rays,
+                                    std::uint64_t seed, double minimum_hit_share = 0.1) {
+    return expect_same_answers(scene, accel, random_queries(scene, rays, seed), minimum_hit_share);
 }
 
 }  // namespace rt::test

@@ -65,7 +65,18 @@ TEST(Seads, MostlyEmptyGridMatchesBruteForce) {
     b.add_polygon({{1, 1, 1}, {0.99, 1, 1}, {1, 0.99, 1}});
     b.add_polygon({{0.5, 0.5, 0.5}, {0.6, 0.5, 0.5}, {0.5, 0.6, 0.5}});
     const Seads accel(b.scene(), seads(64));
-    expect_same_as_brute_force(b.scene(), accel, random_rays(accel.grid().world, 5000, 9));
+    // Random rays almost never meet the three specks; half are turned towards one of them, to
+    // somewhere within the speck's size of its middle.
+    std::vector<RayCase> rays = random_rays(accel.grid().world, 5000, 9);
+    const Vec3 middles[] = {{0.003, 0.003, 0}, {0.997, 0.997, 1}, {0.53, 0.53, 0.5}};
+    const double sizes[] = {0.01, 0.01, 0.1};
+    for (std::size_t i = 0; i < rays.size(); i += 2) {
+        const Vec3 wobble{std::sin(1.0 * i), std::cos(1.3 * i), std::sin(1.7 * i)};
+        const Vec3 target = middles[i % 3] + wobble * (0.3 * sizes[i % 3]);
+        rays[i].ray.direction = target - rays[i].ray.origin;
+        rays[i].t = Interval{};
+    }
+    expect_same_as_brute_force(b.scene(), accel, rays);
 }
 
 // The clearance the walk leaps by is the chessboard distance to the nearest voxel with polygons,
@@ -124,6 +135,7 @@ TEST(Seads, RefusesAbsurdGridsBeforeAllocating) {
     EXPECT_THROW(Seads(scene, seads(2000000000)), UsageError);
     try {
         Seads(scene, seads(1000));
+        ADD_FAILURE() << "no error for 1000 voxels a side";
     } catch (const UsageError& e) {
         EXPECT_NE(std::string(e.what()).find("1000 voxels a side"), std::string::npos) << e.what();
     }

@@ -1,10 +1,9 @@
-// Counter-based random numbers, cone and hemisphere directions, strata, and the chi-square rule.
+// Counter-based random numbers, strata, and the chi-square rule (directions_test.cpp has the
+// cone and hemisphere directions).
 #include <cmath>
-#include <numbers>
 #include <set>
 
 #include "rt/sampling/chi_square.h"
-#include "rt/sampling/directions.h"
 #include "rt/sampling/philox.h"
 #include "rt/sampling/sample_stream.h"
 #include "rt/sampling/strata.h"
@@ -53,59 +52,6 @@ TEST(SampleStream, IsUniformOnTheUnitInterval) {
     }
     EXPECT_NEAR(sum / kCount, 0.5, 0.005);
     EXPECT_NEAR(squares / kCount, 1.0 / 3.0, 0.005);
-}
-
-TEST(Directions, OrthonormalBasisIsOrthonormal) {
-    for (const Vec3& n : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, normalize(Vec3{1, 2, 3}),
-                          normalize(Vec3{-1, 0.001, -0.2})}) {
-        Vec3 t;
-        Vec3 b;
-        orthonormal_basis(n, t, b);
-        EXPECT_NEAR(length(t), 1.0, 1e-12);
-        EXPECT_NEAR(length(b), 1.0, 1e-12);
-        EXPECT_NEAR(dot(t, n), 0.0, 1e-12);
-        EXPECT_NEAR(dot(b, n), 0.0, 1e-12);
-        EXPECT_NEAR(dot(t, b), 0.0, 1e-12);
-    }
-}
-
-// The cos^n law's mean cosine, sampled and analytic, for cones of several widths.
-TEST(Directions, ConeSamplesFollowTheCosPowerLaw) {
-    const Vec3 axis = normalize(Vec3{0.3, -0.5, 0.8});
-    for (const CosPowerCone cone :
-         {CosPowerCone{std::numbers::pi / 3, 4.0}, CosPowerCone{4.0 * std::numbers::pi / 180, 1.0},
-          CosPowerCone{std::numbers::pi / 2, 0.0}, CosPowerCone{std::numbers::pi / 2, 1.0}}) {
-        SampleStream s(2, 0, 0, 0);
-        constexpr int kCount = 200000;
-        double sum = 0.0;
-        const double edge = std::cos(cone.half_angle);
-        for (int i = 0; i < kCount; ++i) {
-            const Vec3 d = sample_cone(cone, axis, s.uniform(), s.uniform());
-            ASSERT_NEAR(length(d), 1.0, 1e-12);
-            const double c = dot(d, axis);
-            ASSERT_GE(c, edge - 1e-12);
-            sum += c;
-        }
-        EXPECT_NEAR(sum / kCount, mean_cosine(cone), 2e-3)
-            << cone.half_angle << " " << cone.exponent;
-    }
-    // Closed forms: uniform over the hemisphere 1/2, cosine-weighted 2/3.
-    EXPECT_NEAR(mean_cosine({std::numbers::pi / 2, 0.0}), 0.5, 1e-12);
-    EXPECT_NEAR(mean_cosine({std::numbers::pi / 2, 1.0}), 2.0 / 3.0, 1e-12);
-    EXPECT_NEAR(mean_cosine({0.0, 4.0}), 1.0, 1e-12);
-}
-
-TEST(Directions, CosineHemisphereHasMeanCosineTwoThirds) {
-    const Vec3 normal = normalize(Vec3{-1, 1, 0});
-    SampleStream s(3, 0, 0, 0);
-    constexpr int kCount = 200000;
-    double sum = 0.0;
-    for (int i = 0; i < kCount; ++i) {
-        const double c = dot(sample_cosine_hemisphere(normal, s.uniform(), s.uniform()), normal);
-        ASSERT_GE(c, 0.0);
-        sum += c;
-    }
-    EXPECT_NEAR(sum / kCount, 2.0 / 3.0, 2e-3);
 }
 
 TEST(ProgressiveStrata, VisitsEveryStratumOnceAndSpreadsEveryPrefix) {

@@ -1,0 +1,238 @@
+// Rays that start on polygons, the rays a renderer traces most: reflected and refracted rays
+// leaving a hit point, and shadow feelers from it towards a light. They start within rounding of
+// a polygon's plane, so every method must skip the polygon they leave (t below the renderer's
+// self-intersection epsilon) and still find a neighbour a hair away.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rt/accel/brute_force.h"
+#include "rt/geometry/ray.h"
+#include "rt/geometry/ray_polygon.h"
+#include "rt/scene/scene.h"
+
+#include <gtest/gtest.h>
+
+#include "accel_test_scenes.h"
+
+namespace rt::test {
+
+/// The renderer's self-intersection epsilon (scene_epsilon in src/rt/render/ray_tracer.cpp):
+/// hits nearer than 1e-9 of the scene's diagonal (at least 1e-9) belong to the surface left.
+inline double renderer_epsilon(const Scene& scene) {
+    Vec3 lo;
+    Vec3 hi;
+    scene.bounds(lo, hi);
+    return 1e-9 * std::max(1.0, length(hi - lo));
+}
+
+/// A point of polygon `id` in its plane: uniform over a triangle of the fan from its first corner,
+/// the triangle picked by area (inside the polygon when it is convex).
+inline Vec3 point_in_fan(const Scene& scene, std::uint32_t id, std::mt19937_64& rng) {
+    const Polygon& p = scene.polygons[id];
+    const Vec3 a = scene.corner_position(p, 0);
+    std::vector<double> areas;
+    for (std::uint32_t k = 1; k + 1 < p.corner_count; ++k) {
+        areas.push_back(
+            length(cross(scene.corner_position(p, k) - a, scene.corner_position(p, k + 1) - a)));
+    }
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::uint32_t k = 1 + static_cast<std::uint32_t>(std::discrete_distribution<int>(
+                                    areas.begin(), areas.end())(rng));
+    const Vec3 b = scene.corner_position(p, k);
+    const Vec3 c = scene.corner_position(p, k + 1);
+    // Uniform on the triangle: fold the unit square's upper half back onto the lower one.
+    double u = unit(rng);
+    double v = unit(rng);
+    if (u + v > 1.0) {
+        u = 1.0 - u;
+        v = 1.0 - v;
+    }
+    return a + (b - a) * u + (c - a) * v;
+}
+
+enum class SurfaceRayKind {
+    Leaving,   ///< a unit direction into the half-space the polygon's normal points to
+    Entering,  ///< a unit direction into the other half-space (a refracted ray)
+    Feeler,    ///< towards a point of the scene's box, over (eps/d, 1 - eps/d) as feelers are
+};
+
+struct SurfaceRay {
+    Ray ray;
+    Interval t;
+    std::uint32_t from = 0;  ///< the polygon it starts on (hand-made rays may leave it 0)
+    SurfaceRayKind kind = SurfaceRayKind::Leaving;
+    bool on_edge = false;  ///< starts on an edge or a corner, shared with a neighbour
+};
+
+/// A point of a random edge of polygon `id`, a corner one time in four.
+inline Vec3 point_on_edge(const Scene& scene, std::uint32_t id, std::mt19937_64& rng) {
+    const Polygon& p = scene.polygons[id];
+    std::uniform_int_distribution<std::uint32_t> corner(0, p.corner_count - 1);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::uint32_t k = corner(rng);
+    const Vec3 a = scene.corner_position(p, k);
+    const Vec3 b = scene.corner_position(p, (k + 1) % p.corner_count);
+    return unit(rng) < 0.25 ? a : a + (b - a) * unit(rng);
+}
+
+/// `count` rays from random points of random polygons. A quarter start at a point of a polygon's
+/// fan (point_in_fan), a quarter on its edges and corners (point_on_edge); half where an eye ray
+/// from outside the scene's box, aimed at a point of a fan, first hits (origin + t * direction,
+/// as the renderer computes a hit point; `from` is then the polygon hit). Directions: leaving or
+/// entering at random angles (a tenth of them within about a degree of the plane), the mirror of
+/// the eye ray or the eye ray going straight on, or a feeler.
+inline std::vector<SurfaceRay> surface_rays(const Scene& scene, int count, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::uniform_int_distribution<std::uint32_t> polygon(
+        0, static_cast<std::uint32_t>(scene.polygons.size() - 1));
+    Vec3 lo;
+    Vec3 hi;
+    scene.bounds(lo, hi);
+    const Vec3 centre = lo * 0.5 + hi * 0.5;
+    const double diagonal = length(hi - lo);
+    const double epsilon = renderer_epsilon(scene);
+    const BruteForce brute(scene);
+    TraceCounters counters;
+    std::vector<SurfaceRay> rays;
+    rays.reserve(count);
+    while (static_cast<int>(rays.size()) < count) {
+        SurfaceRay r;
+        r.from = polygon(rng);
+        Vec3 incoming;
+        const Vec3 target = point_in_fan(scene, r.from, rng);
+        if (rays.size() % 4 == 0) {
+            r.ray.origin = target;
+        } else if (rays.size() % 4 == 2) {
+            r.ray.origin = point_on_edge(scene, r.from, rng);
+            r.on_edge = true;
+        } else {
+            const Vec3 eye = centre + random_direction(rng) * diagonal * (0.6 + unit(rng));
+            incoming = target - eye;
+            const std::optional<Hit> hit = brute.closest_hit({eye, incoming}, {}, counters);
+            if (!hit) {
+                continue;  // aimed at a corner it slipped past; draw again
+            }
+            r.ray.origin = eye + incoming * hit->t;
+            r.from = hit->polygon;
+            incoming = normalize(incoming);
+        }
+        const Vec3 n = scene.polygons[r.from].normal;
+        r.t = Interval{epsilon, 1e300};
+        const int choice = static_cast<int>(unit(rng) * 10);
+        if (choice < 6 || length(incoming) == 0.0) {
+            Vec3 d = random_direction(rng);
+            if (choice == 0) {  // nearly in the plane
+                d = normalize(d - n * (dot(d, n) * (1.0 - 0.02 * unit(rng))));
+            }
+            const bool leaving = unit(rng) < 0.5;
+            if ((dot(d, n) > 0.0) != leaving) {
+                d = d - n * (2.0 * dot(d, n));
+            }
+            r.ray.direction = d;
+            r.kind = leaving ? SurfaceRayKind::Leaving : SurfaceRayKind::Entering;
+        } else if (choice < 8) {
+            r.ray.direction = choice == 6 ? incoming - n * (2.0 * dot(incoming, n)) : incoming;
+            r.kind =
+                dot(r.ray.direction, n) > 0.0 ? SurfaceRayKind::Leaving : SurfaceRayKind::Entering;
+        } else {
+            const Vec3 light = random_point(rng, lo, hi);
+            const double distance = length(light - r.ray.origin);
+            if (!(distance > 2 * epsilon)) {
+                continue;
+            }
+            r.ray.direction = light - r.ray.origin;
+            r.t = Interval{epsilon / distance, 1.0 - epsilon / distance};
+            r.kind = SurfaceRayKind::Feeler;
+        }
+        rays.push_back(r);
+    }
+    return rays;
+}
+
+/// What brute force, or a method, answers for one ray.
+struct Answer {
+    std::optional<Hit> hit;
+    bool occluded = false;
+};
+
+/// closest_hit and occluded for the ray.
+inline Answer answer_of(const Accelerator& accel, const SurfaceRay& r, TraceCounters& counters) {
+    return {accel.closest_hit(r.ray, r.t, counters), accel.occluded(r.ray, r.t, counters)};
+}
+
+/// The answers for every ray, in order.
+inline std::vector<Answer> answers_of(const Accelerator& accel,
+                                      const std::vector<SurfaceRay>& rays) {
+    TraceCounters counters;
+    std::vector<Answer> answers;
+    answers.reserve(rays.size());
+    for (const SurfaceRay& r : rays) {
+        answers.push_back(answer_of(accel, r, counters));
+    }
+    return answers;
+}
+
+/// The ray and both answers, to reproduce a difference.
+inline std::string describe(const SurfaceRay& r, const Answer& want, const Answer& got) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "from polygon " << r.from << " origin (" << r.ray.origin.x << ", " << r.ray.origin.y
+      << ", " << r.ray.origin.z << ") direction (" << r.ray.direction.x << ", " << r.ray.direction.y
+      << ", " << r.ray.direction.z << ") t (" << r.t.min << ", " << r.t.max << "): brute "
+      << (want.hit ? std::to_string(want.hit->polygon) : "miss") << " t "
+      << (want.hit ? want.hit->t : 0.0) << " occluded " << want.occluded << ", got "
+      << (got.hit ? std::to_string(got.hit->polygon) : "miss") << " t "
+      << (got.hit ? got.hit->t : 0.0) << " occluded " << got.occluded;
+    return s.str();
+}
+
+/// Whether `got` is brute force's answer `want`: the same occlusion, hit or miss, t bits and
+/// polygon; or, not `exact` (-on), the same occlusion and hit or miss and a real hit no nearer.
+inline bool agrees(const Scene& scene, const SurfaceRay& r, const Answer& want, const Answer& got,
+                   bool exact) {
+    if (want.occluded != got.occluded || want.hit.has_value() != got.hit.has_value()) {
+        return false;
+    }
+    if (!want.hit) {
+        return true;
+    }
+    if (exact) {
+        return want.hit->t == got.hit->t && want.hit->polygon == got.hit->polygon;
+    }
+    // A real hit on the polygon named, never nearer than the nearest.
+    return got.hit->t >= want.hit->t &&
+           intersect_polygon(r.ray, scene, got.hit->polygon, r.t) == got.hit->t;
+}
+
+/// Expects `accel` to give the answers brute force gave (`want`, one per ray): exactly, or with
+/// `exact` false as -on may (see agrees). Reports the first few differences.
+inline void expect_answers(const Scene& scene, const Accelerator& accel,
+                           const std::vector<SurfaceRay>& rays, const std::vector<Answer>& want,
+                           bool exact = true) {
+    TraceCounters counters;
+    int differences = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Answer got = answer_of(accel, rays[i], counters);
+        if (!agrees(scene, rays[i], want[i], got, exact) && ++differences <= 3) {
+            ADD_FAILURE() << accel.name() << " differs " << describe(rays[i], want[i], got);
+        }
+    }
+    EXPECT_EQ(differences, 0) << accel.name() << ", of " << rays.size() << " rays";
+}
+
+/// How many of the answers are hits.
+inline int hits_in(const std::vector<Answer>& answers) {
+    return static_cast<int>(
+        std::count_if(answers.begin(), answers.end(), [](const Answer& a) { return a.hit; }));
+}
+
+}  // namespace rt::test
