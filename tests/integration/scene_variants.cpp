@@ -15,12 +15,12 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kAttributesLine = "$ gallery-attributes";
 // The gallery's surface files (filetype 0) and its sphere.
-const std::vector<std::string> kSurfaceFiles{"checker8", "square", "cube", "sphere"};
+const std::vector<std::string> surface_files{"checker8", "square", "cube", "sphere"};
 constexpr std::string_view kSphereFile = "sphere";
 // Surfaces (their index numbers in gallery.scn) that "smooth" shades: the sphere, the red cube
 // (whose averaged corner normals lean far off its faces, for -Ot and -E), and the glass pane in
 // front of the yellow light (transparent, so that -Po has something to make opaque).
-const std::set<std::string> kSmoothSurfaces{"14", "8", "11"};
+const std::set<std::string> smooth_surfaces{"14", "8", "11"};
 constexpr std::string_view kGlassIndex = "6";  // the clear glass attribute
 
 std::string join(const std::vector<std::string>& fields) {
@@ -198,18 +198,18 @@ std::string with_marks(const std::string& surface_file, int mark, int shape) {
 fs::path write_gallery_variant(std::string_view variant, const fs::path& folder) {
     fs::create_directories(folder);
     fs::copy(source_dir() / "scenes", folder, fs::copy_options::recursive);
-    const fs::path scn = folder / "gallery.scn";
+    fs::path scn = folder / "gallery.scn";
     const fs::path attributes = folder / "gallery-attributes";
     const std::string scn_text = read_text(scn);
     const std::string attributes_text = read_text(attributes);
     if (variant == "smooth" || variant == "flat-field") {
         write(scn, with_smooth_field(
-                       scn_text, variant == "smooth" ? kSmoothSurfaces : std::set<std::string>{}));
+                       scn_text, variant == "smooth" ? smooth_surfaces : std::set<std::string>{}));
     } else if (variant == "marked" || variant == "marked-plain") {
         write(scn, replace_line(scn_text, kAttributesLine,
                                 std::string(kAttributesLine) + "\n$@gallery-shapes\n"));
         write(folder / "gallery-shapes", "shapes\n$ 1\n$ 0 0 0 1 0 0 0 the sphere, radius 1\n");
-        for (const std::string& file : kSurfaceFiles) {
+        for (const std::string& file : surface_files) {
             const bool sphere = file == kSphereFile && variant == "marked";
             write(folder / file, with_marks(read_text(folder / file), sphere ? 2 : 0, 0));
         }

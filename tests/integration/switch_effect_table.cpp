@@ -5,7 +5,7 @@ namespace rt::test {
 namespace {
 
 // Regions of scenes/gallery.scn (160 x 120), and of its variants, which share its geometry.
-const std::vector<Region> kGalleryRegions{
+const std::vector<Region> gallery_regions{
     {"all", 0, 0, 159, 119},         {"top_rows", 0, 0, 159, 20},
     {"mirror", 16, 42, 38, 72},      {"mirror_top", 14, 37, 40, 50},
     {"mirror_low", 14, 56, 30, 76},  {"wall", 75, 5, 95, 20},
@@ -18,37 +18,17 @@ const std::vector<Region> kGalleryRegions{
 };
 
 // Regions of scenes/highlights.scn (128 x 96).
-const std::vector<Region> kHighlightRegions{
+const std::vector<Region> highlight_regions{
     {"all", 0, 0, 127, 95},         {"upright_peak", 26, 42, 32, 48},
     {"upright_edge", 2, 12, 8, 20}, {"upright_side", 40, 40, 52, 60},
     {"flat_near", 76, 70, 90, 80},  {"flat_far", 110, 66, 125, 72},
     {"light_near", 5, 48, 11, 55},
 };
 
-}  // namespace
-
-const std::vector<TestScene>& test_scenes() {
-    static const std::vector<TestScene> all{
-        {"gallery", "gallery.scn", "original", {}, kGalleryRegions},
-        {"highlights", "highlights.scn", "original", {}, kHighlightRegions},
-        {"smooth", "gallery.scn", "smooth", {}, kGalleryRegions},
-        {"flat-field", "gallery.scn", "flat-field", {}, kGalleryRegions},
-        {"marked", "gallery.scn", "marked", {"-M"}, kGalleryRegions},
-        {"marked-plain", "gallery.scn", "marked-plain", {"-M"}, kGalleryRegions},
-        {"inline", "gallery.scn", "inline", {"-Df"}, kGalleryRegions},
-        {"no-power", "gallery.scn", "no-power", {"-Dp"}, kGalleryRegions},
-        {"power-two", "gallery.scn", "power-two", {}, kGalleryRegions},
-        {"old-format", "gallery.scn", "old-format", {"-Of"}, kGalleryRegions},
-        {"rgb-equal", "gallery.scn", "rgb-equal", {"-R"}, kGalleryRegions},
-        {"rgb-spread", "gallery.scn", "rgb-spread", {"-R"}, kGalleryRegions},
-    };
-    return all;
-}
-
-const std::vector<PictureRow>& picture_rows() {
+// Display (gallery).
+std::vector<PictureRow> display_rows() {
     using enum Effect;
-    static const std::vector<PictureRow> rows{
-        // --- display (gallery) ------------------------------------------------------------
+    return {
         {"-m",
          {"-m0.5"},
          "gallery",
@@ -60,7 +40,13 @@ const std::vector<PictureRow>& picture_rows() {
          {{"yellow", DisplayChanges, 0.9}, {"wall", DisplayRatio, 0.999, 1.001}, {"all", Same}},
          "-c stops clipping: the yellow light, over 255, shows strange colours; the rest does not "
          "change"},
-        // --- lights, attenuation and shadow feelers (gallery) ---------------------------------
+    };
+}
+
+// Lights, attenuation and shadow feelers (gallery).
+std::vector<PictureRow> light_rows() {
+    using enum Effect;
+    return {
         {"-A",
          {"-A10,1"},
          "gallery",
@@ -133,7 +119,13 @@ const std::vector<PictureRow>& picture_rows() {
          {{"yellow", Darker, 60.0}, {"white_light", Within, -20.0, 0.0}},
          "-K: weights scaled so nothing need be clipped: the yellow light (e = 1.5) dims to 1, the "
          "white light (e = 1) stays"},
-        // --- the ray tree (gallery) -----------------------------------------------------------
+    };
+}
+
+// The ray tree (gallery).
+std::vector<PictureRow> ray_tree_rows() {
+    using enum Effect;
+    return {
         {"-Dr",
          {"-Dr"},
          "gallery",
@@ -162,7 +154,13 @@ const std::vector<PictureRow>& picture_rows() {
          "-O1: the early version is -Oi taking every sample (docs/rendering.md)",
          {},
          {"-Oi", "-Dx"}},
-        // --- sampling (gallery) ---------------------------------------------------------------
+    };
+}
+
+// Sampling (gallery).
+std::vector<PictureRow> sampling_rows() {
+    using enum Effect;
+    return {
         {"-Dx",
          {"-Dx"},
          "gallery",
@@ -186,7 +184,13 @@ const std::vector<PictureRow>& picture_rows() {
           {"wall", Within, -1.0, 1.0},
           {"mirror", Within, -3.0, 3.0}},
          "another seed: every jittered sample moves"},
-        // --- intersection (gallery: an octree of depth 4) ---------------------------------------
+    };
+}
+
+// Intersection (gallery: an octree of depth 4).
+std::vector<PictureRow> intersection_rows() {
+    using enum Effect;
+    return {
         {"-tv",
          {"-tv1"},
          "gallery",
@@ -198,7 +202,13 @@ const std::vector<PictureRow>& picture_rows() {
          "gallery",
          {{"right_wall", Brighter, 3.0}, {"wall", Same}},
          "-on: near hits accepted unverified: some rays miss a nearer polygon in a later voxel"},
-        // --- highlights (highlights.scn) ------------------------------------------------------
+    };
+}
+
+// Highlights (highlights.scn).
+std::vector<PictureRow> highlight_rows() {
+    using enum Effect;
+    return {
         {"-Sp", {"-Sp"}, "highlights", {{"all", Same}}, "-Sp is the default"},
         {"-Ci", {"-Ci"}, "highlights", {{"all", Same}}, "-Ci is the default"},
         {"-Sg",
@@ -230,7 +240,13 @@ const std::vector<PictureRow>& picture_rows() {
           {"flat_near", Within, -39.0, -30.0, 0},
           {"upright_peak", Within, -16.0, -11.0}},
          "-Cf: Fresnel per channel: the orange panel's grazing highlight keeps some blue"},
-        // --- smooth shading (the gallery with the smooth-shade field) -------------------------
+    };
+}
+
+// Smooth shading (the gallery with the smooth-shade field).
+std::vector<PictureRow> smooth_shading_rows() {
+    using enum Effect;
+    return {
         {"-Po",
          {"-Po"},
          "smooth",
@@ -255,7 +271,13 @@ const std::vector<PictureRow>& picture_rows() {
          "-E0.1: sharp breaks between faces more than 0.1 radians apart",
          {},
          {"-Pt"}},
-        // --- file formats that change the picture ---------------------------------------------
+    };
+}
+
+// File formats that change the picture.
+std::vector<PictureRow> format_rows() {
+    using enum Effect;
+    return {
         {"-M",
          {},
          "marked",
@@ -273,7 +295,13 @@ const std::vector<PictureRow>& picture_rows() {
          {},
          {},
          "rgb-equal"},
-        // --- switches that must leave the picture alone ----------------------------------------
+    };
+}
+
+// Switches that must leave the picture alone.
+std::vector<PictureRow> same_picture_rows() {
+    using enum Effect;
+    return {
         {"-od", {"-od6"}, "gallery", {{"all", Same}}, "-od6: another octree depth, same picture"},
         {"-ol", {"-ol20"}, "gallery", {{"all", Same}}, "-ol20: a smaller octlist, same picture"},
         {"-ss", {"-ss4"}, "gallery", {{"all", Same}}, "-ss4: a smaller seed size, same picture"},
@@ -334,7 +362,13 @@ const std::vector<PictureRow>& picture_rows() {
          "gallery",
          {{"all", Same}},
          "any number of threads, same picture"},
-        // --- debugging switches: they print, and leave the picture alone ------------------------
+    };
+}
+
+// Debugging switches: they print, and leave the picture alone.
+std::vector<PictureRow> debugging_rows() {
+    using enum Effect;
+    return {
         {"-dc",
          {"-dc"},
          "gallery",
@@ -344,43 +378,6 @@ const std::vector<PictureRow>& picture_rows() {
          {},
          {},
          "line 119 column 0"},
-        // (-ds and -dl are slow or wordy: the top rows only.)
-        {"-ds",
-         {"-ds", "-L20"},
-         "gallery",
-         {{"top_rows", Same}},
-         "-ds checks every ray by brute force",
-         {},
-         {"-L20"},
-         {},
-         "strike check (-ds): 0 of"},
-        {"-dsp",
-         {"-dsp", "-L20"},
-         "gallery",
-         {{"top_rows", Same}},
-         "-dsp implies -ds",
-         {},
-         {"-L20"},
-         {},
-         "strike check (-ds): 0 of"},
-        {"-dso",
-         {"-dso", "-L20"},
-         "gallery",
-         {{"top_rows", Same}},
-         "-dso implies -ds",
-         {},
-         {"-L20"},
-         {},
-         "strike check (-ds): 0 of"},
-        {"-dl",
-         {"-dl", "-L20"},
-         "gallery",
-         {{"top_rows", Same}},
-         "-dl prints every intersection query",
-         {},
-         {"-L20"},
-         {},
-         "intersection: origin"},
         {"-dof",
          {"-op", "-dof"},
          "gallery",
@@ -435,7 +432,56 @@ const std::vector<PictureRow>& picture_rows() {
          {},
          {},
          "profile: exit culling over octree over 224 polygons"},
-        // --- file formats that must read the same scene -----------------------------------------
+    };
+}
+
+// The strike check and -dl: slow or wordy, so drawn for the top rows only.
+std::vector<PictureRow> strike_rows() {
+    using enum Effect;
+    return {
+        {"-ds",
+         {"-ds", "-L20"},
+         "gallery",
+         {{"top_rows", Same}},
+         "-ds checks every ray by brute force",
+         {},
+         {"-L20"},
+         {},
+         "strike check (-ds): 0 of"},
+        {"-dsp",
+         {"-dsp", "-L20"},
+         "gallery",
+         {{"top_rows", Same}},
+         "-dsp implies -ds",
+         {},
+         {"-L20"},
+         {},
+         "strike check (-ds): 0 of"},
+        {"-dso",
+         {"-dso", "-L20"},
+         "gallery",
+         {{"top_rows", Same}},
+         "-dso implies -ds",
+         {},
+         {"-L20"},
+         {},
+         "strike check (-ds): 0 of"},
+        {"-dl",
+         {"-dl", "-L20"},
+         "gallery",
+         {{"top_rows", Same}},
+         "-dl prints every intersection query",
+         {},
+         {"-L20"},
+         {},
+         "intersection: origin"},
+    };
+}
+
+// File formats that must read the same scene.
+std::vector<PictureRow> same_scene_rows() {
+    using enum Effect;
+    return {
         {"-Df",
          {},
          "inline",
@@ -493,6 +539,39 @@ const std::vector<PictureRow>& picture_rows() {
          {},
          "gallery"},
     };
+}
+
+}  // namespace
+
+const std::vector<TestScene>& test_scenes() {
+    static const std::vector<TestScene> all{
+        {"gallery", "gallery.scn", "original", {}, gallery_regions},
+        {"highlights", "highlights.scn", "original", {}, highlight_regions},
+        {"smooth", "gallery.scn", "smooth", {}, gallery_regions},
+        {"flat-field", "gallery.scn", "flat-field", {}, gallery_regions},
+        {"marked", "gallery.scn", "marked", {"-M"}, gallery_regions},
+        {"marked-plain", "gallery.scn", "marked-plain", {"-M"}, gallery_regions},
+        {"inline", "gallery.scn", "inline", {"-Df"}, gallery_regions},
+        {"no-power", "gallery.scn", "no-power", {"-Dp"}, gallery_regions},
+        {"power-two", "gallery.scn", "power-two", {}, gallery_regions},
+        {"old-format", "gallery.scn", "old-format", {"-Of"}, gallery_regions},
+        {"rgb-equal", "gallery.scn", "rgb-equal", {"-R"}, gallery_regions},
+        {"rgb-spread", "gallery.scn", "rgb-spread", {"-R"}, gallery_regions},
+    };
+    return all;
+}
+
+const std::vector<PictureRow>& picture_rows() {
+    static const std::vector<PictureRow> rows = [] {
+        std::vector<PictureRow> all;
+        for (auto part : {&display_rows, &light_rows, &ray_tree_rows, &sampling_rows,
+                          &intersection_rows, &highlight_rows, &smooth_shading_rows, &format_rows,
+                          &same_picture_rows, &debugging_rows, &strike_rows, &same_scene_rows}) {
+            const std::vector<PictureRow> some = part();
+            all.insert(all.end(), some.begin(), some.end());
+        }
+        return all;
+    }();
     return rows;
 }
 

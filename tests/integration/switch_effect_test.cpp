@@ -337,7 +337,8 @@ Image8 difference(const Picture& base, const Picture& picture) {
 }
 
 TEST(SwitchEffectDump, WritesDifferencePictures) {
-    const char* folder = std::getenv("RT_SWITCH_EFFECT_DUMP");
+    // Read before any thread starts: this test runs alone, by hand.
+    const char* folder = std::getenv("RT_SWITCH_EFFECT_DUMP");  // NOLINT(concurrency-mt-unsafe)
     if (folder == nullptr) {
         GTEST_SKIP() << "set RT_SWITCH_EFFECT_DUMP=folder to draw every row's difference";
     }
