@@ -26,7 +26,7 @@ Traced trace_once(const Scene& scene, const ShadingSettings& settings, const Ray
     SampleStream stream(settings.sampling.seed, 0, 0, sample_index);
     KindCounters counters;
     Traced out;
-    SampleContext sample{stream, counters, out.tree};
+    SampleContext sample{stream, counters, out.tree, {}};
     out.light = tracer.trace(ray, RayKind::Eye, 1, false, sample);
     return out;
 }

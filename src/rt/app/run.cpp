@@ -66,7 +66,7 @@ public:
                        std::to_string(report.tree.distributed_intersections) +
                        " intersections distributing " +
                        std::to_string(report.tree.distributed_rays) + " rays, " +
-                       std::to_string(report.probes) + " probes");
+                       std::to_string(report.probes + report.tree.probes) + " probes");
     }
     bool should_stop() override { return console_.should_stop && console_.should_stop(); }
 

@@ -70,7 +70,7 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
     ++counters.rays;
     const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
     if (!hit) {
-        sample.last_polygon = -1;
+        sample.last_seen = {};
         return {};  // the background is black
     }
     ++counters.hits;
@@ -80,22 +80,34 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
     // illumination model treatment").
     const bool full = !distributed || settings_.sampling.illuminate_distributed;
     const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_, &sample.stream};
-    Rgb result = local_illumination(context, s, -ray.direction, full,
-                                    sample.counters[RayKind::ShadowFeeler]);
+    TraceCounters& feelers = sample.counters[RayKind::ShadowFeeler];
+    const std::uint64_t stops_before = feelers.hits;  // a feeler's hit is a polygon on its way
+    Rgb result = local_illumination(context, s, -ray.direction, full, feelers);
+    const SurfaceSeen seen{hit->polygon, feelers.hits - stops_before};
     if (depth < max_depth_) {
         result += secondary_rays(ray, s, depth, full, sample);
     }
     if (settings_.attenuate_rays) {
         result *= settings_.attenuation(hit->t);
     }
-    sample.last_polygon = hit->polygon;  // after the subtree, which overwrote it
+    sample.last_seen = seen;  // after the subtree, which overwrote it
     return result;
 }
 
-std::int64_t RayTracer::first_polygon(const Ray& ray, TraceCounters& counters) const {
+SurfaceSeen RayTracer::first_surface(const Ray& ray, bool full, SampleContext& sample) const {
+    TraceCounters& counters = sample.counters[RayKind::Probe];
     ++counters.rays;
     const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
-    return hit ? static_cast<std::int64_t>(hit->polygon) : -1;
+    if (!hit) {
+        return {};
+    }
+    ++counters.hits;
+    const SurfacePoint s = describe_hit(scene_, settings_, ray, *hit);
+    const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_, &sample.stream};
+    TraceCounters& feelers = sample.counters[RayKind::ShadowFeeler];
+    const std::uint64_t stops_before = feelers.hits;
+    local_illumination(context, s, -ray.direction, full, feelers);  // for its feelers only
+    return {hit->polygon, feelers.hits - stops_before};
 }
 
 Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
@@ -168,6 +180,11 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
     return result;
 }
 
+// The mean over the lobe's strata, taken in progressive order until the -Xr rule is met, or
+// all of them with -Dx. The rule may stop early only where every ray so far saw one surface
+// (SurfaceSeen) and, for a cone, four probes along its rim see it too: an edge can slip between a
+// lobe's first rays, as between a pixel's first samples, most often where a glossy reflection
+// runs off a polygon into the background. A diffuse lobe's hemisphere has no rim worth probing.
 Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool distribute,
                       bool simple, SampleContext& sample) const {
     const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
@@ -178,8 +195,9 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
     const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
     RunningStatistics statistics;
-    std::int64_t polygon = -2;  // none yet
-    bool one_polygon = true;    // the rule may stop early only while every ray meets one polygon
+    SurfaceSeen seen;
+    bool one_surface = true;
+    bool rim_checked = false;
     for (std::uint32_t k = 0; k < total; ++k) {
         double u1 = 0.0;
         double u2 = 0.0;
@@ -191,14 +209,35 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
         statistics.add(trace({s.position, direction}, lobe.kind, depth + 1, true, sample));
         ++sample.tree.distributed_rays;
-        one_polygon = one_polygon && (polygon == -2 || polygon == sample.last_polygon);
-        polygon = sample.last_polygon;
-        if (sampling.adaptive && k + 1 >= minimum && one_polygon &&
-            sampling.ray_stop.satisfied(statistics.count(), statistics.display_variance())) {
+        one_surface = one_surface && (k == 0 || sample.last_seen == seen);
+        seen = sample.last_seen;
+        if (!sampling.adaptive || k + 1 < minimum || !one_surface ||
+            !sampling.ray_stop.satisfied(statistics.count(), statistics.display_variance())) {
+            continue;
+        }
+        if (!rim_checked) {
+            rim_checked = true;
+            one_surface = lobe.diffuse || rim_sees(lobe, s, seen, sample);
+        }
+        if (one_surface) {
             break;
         }
     }
     return statistics.mean();
+}
+
+bool RayTracer::rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
+                         SampleContext& sample) const {
+    const bool full = settings_.sampling.illuminate_distributed;  // as for the lobe's own rays
+    for (int quarter = 0; quarter < 4; ++quarter) {
+        Vec3 direction = sample_cone(lobe.cone, lobe.axis, 1.0, quarter / 4.0);  // u1 = 1: rim
+        direction = keep_on_side(direction, s.facing_normal, lobe.outside);
+        ++sample.tree.probes;
+        if (!(first_surface({s.position, direction}, full, sample) == seen)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 }  // namespace rt

@@ -24,6 +24,16 @@ namespace rt {
 struct RayTreeCounts {
     std::uint32_t distributed_intersections = 0;  ///< hits that distributed rays
     std::uint32_t distributed_rays = 0;           ///< rays they sent
+    std::uint32_t probes = 0;                     ///< rays along lobes' rims (adaptive rule)
+};
+
+/// What a ray met, as the adaptive rule compares rays: the polygon (-1 for none) and how many
+/// polygons the shadow feelers from its hit met on their way to the lights. Rays that agree on
+/// both see one surface in one light: no polygon's edge and no shadow's edge between them.
+struct SurfaceSeen {
+    std::int64_t polygon = -1;
+    std::uint64_t feeler_stops = 0;
+    friend bool operator==(const SurfaceSeen&, const SurfaceSeen&) = default;
 };
 
 /// The state of one sample being traced: its random numbers and counters.
@@ -31,7 +41,7 @@ struct SampleContext {
     SampleStream& stream;
     KindCounters& counters;
     RayTreeCounts& tree;
-    std::int64_t last_polygon = -1;  ///< the polygon the last traced ray met, -1 for none
+    SurfaceSeen last_seen;  ///< what the last traced ray met
 };
 
 class RayTracer {
@@ -45,11 +55,16 @@ public:
     Rgb trace(const Ray& ray, RayKind kind, int depth, bool distributed,
               SampleContext& sample) const;
 
-    /// The polygon a ray meets first (-1 for none), without shading it.
-    std::int64_t first_polygon(const Ray& ray, TraceCounters& counters) const;
+    /// What a ray meets first: its polygon, and its hit's shadow feelers, without shading it or
+    /// tracing further (the adaptive rule's probes). `full` as for a ray that is not distributed
+    /// (the full model's feelers, -T).
+    SurfaceSeen first_surface(const Ray& ray, bool full, SampleContext& sample) const;
 
 private:
     struct Lobe;
+    /// Whether rays along the cone's rim see `seen` too (see gather).
+    bool rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
+                  SampleContext& sample) const;
     Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
                        SampleContext& sample) const;
     Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, bool distribute,

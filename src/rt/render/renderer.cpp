@@ -43,15 +43,16 @@ struct RenderJob {
           finished(static_cast<std::size_t>(rs.window.height()), 0) {}
 };
 
-// Whether the centre rays of the four neighbouring pixels meet the same polygon (or all miss):
-// an edge can pass between a pixel's first samples unseen, but rarely past its neighbours too.
-bool neighbours_see(RenderJob& job, int x, int y, std::int64_t polygon, KindCounters& counters) {
+// Whether the centre rays of the four neighbouring pixels see the same surface (SurfaceSeen: one
+// polygon in the same light, or all miss): a polygon's edge or a shadow's edge can pass between
+// a pixel's first samples unseen, but rarely past its neighbours too.
+bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, SampleContext& probe) {
     const int offsets[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     for (const auto& offset : offsets) {
         const int nx = std::clamp(x + offset[0], 0, job.scene.view.width - 1);
         const int ny = std::clamp(y + offset[1], 0, job.scene.view.height - 1);
         const Ray ray = job.camera.primary_ray(nx + 0.5, ny + 0.5);
-        if (job.tracer.first_polygon(ray, counters[RayKind::Probe]) != polygon) {
+        if (!(job.tracer.first_surface(ray, true, probe) == seen)) {
             return false;
         }
     }
@@ -61,15 +62,15 @@ bool neighbours_see(RenderJob& job, int x, int y, std::int64_t polygon, KindCoun
 // The pixel's value: the mean of up to n x n samples (manual 2.2), jittered in their strata
 // and taken in progressive order until the chi-square rule (-Xp) is satisfied, or all of them
 // with -Dx. The rule may stop early only where every sample so far, and the centres of the four
-// neighbouring pixels, see the same polygon. One sample per pixel looks through the pixel's
+// neighbouring pixels, see the same surface. One sample per pixel looks through the pixel's
 // centre, as the original did.
 Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelReport& report) {
     const SamplingSettings& sampling = job.settings.shading.sampling;
     const std::uint32_t total = job.pixel_strata.size();
     const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
     RunningStatistics statistics;
-    std::int64_t polygon = -2;  // none yet
-    bool one_polygon = true;
+    SurfaceSeen seen;
+    bool one_surface = true;
     bool neighbours_checked = false;
     for (std::uint32_t k = 0; k < total; ++k) {
         SampleStream stream(sampling.seed, x, y, k);
@@ -80,21 +81,23 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
             const double j2 = stream.uniform();
             job.pixel_strata.point(k, j1, j2, px, py);
         }
-        SampleContext sample{stream, counters, report.tree};
+        SampleContext sample{stream, counters, report.tree, {}};
         statistics.add(job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1,
                                         false, sample));
-        one_polygon = one_polygon && (polygon == -2 || polygon == sample.last_polygon);
-        polygon = sample.last_polygon;
-        if (!sampling.adaptive || k + 1 < minimum || !one_polygon ||
+        one_surface = one_surface && (k == 0 || sample.last_seen == seen);
+        seen = sample.last_seen;
+        if (!sampling.adaptive || k + 1 < minimum || !one_surface ||
             !sampling.pixel_stop.satisfied(statistics.count(), statistics.display_variance())) {
             continue;
         }
         if (!neighbours_checked) {
             neighbours_checked = true;
-            one_polygon = neighbours_see(job, x, y, polygon, counters);
+            SampleStream probe_stream(sampling.seed, x, y, total);  // after the pixel's samples
+            SampleContext probe{probe_stream, counters, report.tree, {}};
+            one_surface = neighbours_see(job, x, y, seen, probe);
             report.probes += 4;
         }
-        if (one_polygon) {
+        if (one_surface) {
             break;
         }
     }

@@ -22,7 +22,7 @@ struct RenderSettings {
 /// How a pixel was sampled (-dx).
 struct PixelReport {
     std::uint32_t samples = 0;  ///< eye rays taken (at most n x n)
-    std::uint32_t probes = 0;   ///< rays through neighbouring pixels' centres, unshaded
+    std::uint32_t probes = 0;   ///< rays through neighbouring pixels' centres (feelers only)
     RayTreeCounts tree;         ///< summed over its samples
 };
 

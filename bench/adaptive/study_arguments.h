@@ -1,0 +1,30 @@
+// The adaptive-sampling study's command line: its own switches, and rt's for the rest.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rt/image/film.h"
+
+#include "study_scene.h"
+
+namespace rt::bench {
+
+struct StudyArguments {
+    int seeds = 6;                        ///< --seeds N: seeds 1..N for every plan
+    SamplingPlan reference{8, 8, false};  ///< --reference NxN: -Dx at a high resolution
+    int reference_renders = 4;            ///< --reference-renders M: seeds 1001..1000+M
+    std::optional<FilmWindow> window;     ///< --window l,t,r,b
+    std::vector<SamplingPlan> uniform;    ///< --uniform NxM,...: -Dx plans
+    std::vector<SamplingPlan> adaptive;   ///< --adaptive NxM@var,...: -Xp and -Xr var
+    std::optional<std::string> csv;       ///< --csv FILE: one row per plan and seed
+    std::vector<std::string> rt_args;     ///< SCENE and rt's switches
+};
+
+/// Throws rt::UsageError for a missing or malformed value.
+StudyArguments parse_study_arguments(const std::vector<std::string>& args);
+
+std::string study_usage();
+
+}  // namespace rt::bench
