@@ -1,5 +1,5 @@
-// The debugging switches print what docs/switches.md says they print (-dsp -dso -dl -dc -de, and
-// -p with the z-buffer), checked through the rt program on a small window of twocubes.
+// The debugging switches print what docs/switches.md says they print (-dsp -dso -dl -dc -dx -de,
+// and -p with the z-buffer), checked through the rt program on a small window of twocubes.
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -172,6 +172,42 @@ TEST_F(DebugSwitches, DashDcNamesEveryPixelBottomRowFirst) {
         EXPECT_GE(count, 1);
     }
     EXPECT_EQ(first_row, 187);
+}
+
+// -dx: per pixel, the samples taken and the rays distributed. With a sample resolution of 2, -Dx
+// takes all 2 x 2 samples of every pixel; adaptive sampling takes at most that many.
+TEST_F(DebugSwitches, DashDxReportsTheSamplesOfEveryPixel) {
+    std::string scene = read_text(dir_.path() / "small.scn");
+    scene.replace(scene.find("$ 1\n"), 4, "$ 2\n");
+    dir_.write("small.scn", scene);
+    const std::regex form(
+        R"(^pixel (\d+) (\d+): (\d+) samples, (\d+) intersections distributing (\d+) rays, (\d+) probes$)");
+    for (const bool every_sample : {true, false}) {
+        std::vector<std::string> args{"-dx"};
+        if (every_sample) {
+            args.push_back("-Dx");
+        }
+        std::map<std::pair<int, int>, int> samples;
+        for (const std::string& line : lines_of(rt(args).err)) {
+            std::smatch m;
+            if (std::regex_match(line, m, form)) {
+                samples[{std::stoi(m[1]), std::stoi(m[2])}] = std::stoi(m[3]);
+            }
+        }
+        EXPECT_EQ(samples.size(), 64U);
+        int fewer = 0;
+        for (const auto& [pixel, n] : samples) {
+            EXPECT_GE(n, 1);
+            EXPECT_LE(n, 4);
+            if (every_sample) {
+                EXPECT_EQ(n, 4) << pixel.first << " " << pixel.second;
+            }
+            fewer += n < 4 ? 1 : 0;
+        }
+        if (!every_sample) {
+            EXPECT_GT(fewer, 0);  // the cube's flat faces need fewer than all four
+        }
+    }
 }
 
 // -de: the culled rays are traced again and none hits; the figures come at the end, as -p's do.
