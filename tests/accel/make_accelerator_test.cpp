@@ -95,6 +95,53 @@ TEST(MakeAccelerator, EveryExactMethodAnswersAsBruteForce) {
     }
 }
 
+// Polygons of more corners than the voxel methods' overlap test keeps on its stack (16): discs
+// of 40 corners in random planes, crossed by rays through their centres and beside them.
+TEST(MakeAccelerator, ManyCorneredPolygonsAnswerAsBruteForce) {
+    std::mt19937_64 rng(5);
+    test::SceneBuilder b;
+    std::vector<Vec3> centres;
+    for (int i = 0; i < 30; ++i) {
+        const Vec3 centre = test::random_point(rng, {-8, -8, -8}, {8, 8, 8});
+        const Vec3 e1 = normalize(cross(test::random_direction(rng), {0.3, 0.5, 0.8}));
+        const Vec3 e2 = normalize(cross(e1, test::random_direction(rng)));
+        const Vec3 e3 = normalize(cross(e2, e1));
+        std::vector<Vec3> disc;
+        for (int k = 0; k < 40; ++k) {
+            const double a = 2.0 * 3.141592653589793 * k / 40.0;
+            disc.push_back(centre + e1 * (1.5 * std::cos(a)) + e3 * (1.5 * std::sin(a)));
+        }
+        b.add_polygon(disc);
+        centres.push_back(centre);
+    }
+    const Scene& scene = b.scene();
+    const auto reference = make_brute_force(scene);
+    for (const AccelKind kind : {AccelKind::Octree, AccelKind::Seads, AccelKind::Bvh}) {
+        AccelSettings settings;
+        settings.kind = kind;
+        settings.octree_depth = 4;
+        settings.seads_resolution = 8;
+        const std::unique_ptr<Accelerator> accel = make_accelerator(scene, settings);
+        int hits = 0;
+        for (std::size_t i = 0; i < 200; ++i) {
+            const Vec3 origin = test::random_point(rng, {-12, -12, -12}, {12, 12, 12});
+            const Vec3 target = centres[i % centres.size()] +
+                                (i % 4 == 0 ? test::random_direction(rng) * 1.4 : Vec3{});
+            const Ray ray{origin, normalize(target - origin)};
+            TraceCounters counters;
+            const std::optional<Hit> want = reference->closest_hit(ray, {1e-9, 1e30}, counters);
+            const std::optional<Hit> got = accel->closest_hit(ray, {1e-9, 1e30}, counters);
+            ASSERT_EQ(got.has_value(), want.has_value()) << accel->name() << " ray " << i;
+            if (want) {
+                ++hits;
+                EXPECT_EQ(got->polygon, want->polygon) << accel->name() << " ray " << i;
+                EXPECT_NEAR(got->t, want->t, 1e-9 * want->t) << accel->name() << " ray " << i;
+            }
+        }
+        EXPECT_GT(hits, 150) << accel->name();
+    }
+}
+
 // Embree (comparison only, single precision) may be absent from the build: then asking for it
 // says so instead of building something else.
 TEST(MakeAccelerator, EmbreeIsBuiltOrSaysWhatItNeeds) {
