@@ -46,7 +46,7 @@ protected:
     }
     ProgramResult rt(std::vector<std::string> args) {
         args.insert(args.begin(), {"small", "-n"});  // not --quiet: -ds reports in a note
-        const ProgramResult r = run_program("rt", args, dir_.path());
+        ProgramResult r = run_program("rt", args, dir_.path());
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return r;
     }

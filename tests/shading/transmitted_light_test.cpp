@@ -17,8 +17,8 @@ namespace {
 constexpr double kIndex = 1.5;
 constexpr double kTransmission = 0.6;
 constexpr double kTpow = 4.0;
-const Rgb kGlassColour{0.5, 0.6, 0.7};
-const Rgb kLightColour{1.0, 0.9, 0.8};
+constexpr Rgb kGlassColour{0.5, 0.6, 0.7};
+constexpr Rgb kLightColour{1.0, 0.9, 0.8};
 constexpr double kEmission = 2.0;
 
 // A glass square (attribute 0) in y = 0 with its normal up, neither diffuse nor ambient so that

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kPow = 4.0;
 constexpr double kHeight = 10.0;
-const Rgb kIntensity{1.0, 0.5, 0.25};
+constexpr Rgb kIntensity{1.0, 0.5, 0.25};
 
 // A small triangle facing down (pow 4, emission 1) centred at (x, kHeight, 0), and nothing else.
 struct CeilingLight {
