@@ -1,14 +1,11 @@
 #include "rt/app/accelerator_stack.h"
 
-#include "rt/accel/brute_force.h"
 #include "rt/accel/make_accelerator.h"
 #include "rt/app/accel_debugging.h"
 #include "rt/core/error.h"
 #include "rt/core/text.h"
 
 namespace rt {
-
-namespace {}  // namespace
 
 AccelSettings accel_settings(const Scene& scene, const Options& o) {
     const SceneHeader& h = scene.header;
@@ -42,8 +39,8 @@ AccelSettings accel_settings(const Scene& scene, const Options& o) {
 
 namespace {
 
-// A method the scene header asks for but this build lacks falls back to brute force, which gives
-// the same picture; one asked for by --accel is refused.
+// The header names only methods every build has (brute force, the octree, SEADS); a method this
+// build lacks can only come from --accel, and is refused (NotImplementedError).
 std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options& o,
                                                const RunConsole& console) {
     AccelSettings settings = accel_settings(scene, o);
@@ -53,17 +50,7 @@ std::unique_ptr<Accelerator> build_accelerator(const Scene& scene, const Options
             console.note("-dof traces the -op octree fill only; nothing to trace here");
         }
     }
-    try {
-        return make_accelerator(scene, settings);
-    } catch (const NotImplementedError& e) {
-        if (o.accel) {
-            throw;
-        }
-        console.note(std::string(e.what()) +
-                     "; every ray is tested against every polygon instead (the picture is the "
-                     "same)");
-        return make_brute_force(scene);
-    }
+    return make_accelerator(scene, settings);
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ struct RunConsole {
 enum class RunOutcome { Finished, Interrupted };
 
 /// The scene file a SCENE argument names: SCENE itself if it ends in ".scn", else SCENE.scn if
-/// that exists, else SCENE as given.
+/// that exists, else SCENE if it is a file, else SCENE.scn (so that "cannot open" names it).
 std::filesystem::path resolve_scene_path(const std::string& scene_argument);
 
 /// The default output: the scene's name with ".gro", in the current folder.

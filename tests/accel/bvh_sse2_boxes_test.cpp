@@ -1,0 +1,117 @@
+// The BVH's SSE2 eight-box test, which the traversal uses on processors without AVX2 (so this
+// machine's renders may never run it), against the slab test in double: it never rejects a box the
+// ray's line meets within the t interval, rejects boxes clearly missed, never enters an empty
+// slot, and reports entries no later than the exact ones.
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "rt/accel/bvh/box_test.h"
+
+#include <gtest/gtest.h>
+
+namespace rt::bvh {
+namespace {
+
+constexpr double kSceneScale = 16.0;
+
+struct Slab {
+    double enter = -std::numeric_limits<double>::infinity();
+    double exit = std::numeric_limits<double>::infinity();
+};
+
+// Where the line origin + t * direction is inside the box, in double.
+Slab exact_slab(const WideNode& node, int child, const Ray& ray) {
+    Slab s;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = node.lo[k][child];
+        const double hi = node.hi[k][child];
+        const double o = ray.origin[k];
+        const double d = ray.direction[k];
+        const double a = (lo - o) / d;
+        const double b = (hi - o) / d;
+        s.enter = std::max(s.enter, std::min(a, b));
+        s.exit = std::min(s.exit, std::max(a, b));
+    }
+    return s;
+}
+
+float uniform(std::mt19937& rng, float lo, float hi) {
+    return std::uniform_real_distribution<float>(lo, hi)(rng);
+}
+
+// Eight boxes in [-10, 10]^3 of sides from 0.01 to 8, the last slot empty as the builder leaves it.
+WideNode random_node(std::mt19937& rng) {
+    WideNode node{};
+    for (int c = 0; c < 8; ++c) {
+        for (int k = 0; k < 3; ++k) {
+            const float size = std::pow(10.0f, uniform(rng, -2.0f, 0.9f));
+            const float lo = uniform(rng, -10.0f, 10.0f - size);
+            node.lo[k][c] = lo;
+            node.hi[k][c] = lo + size;
+        }
+        node.child[c] = static_cast<std::uint32_t>(c);
+    }
+    for (int k = 0; k < 3; ++k) {
+        node.lo[k][7] = std::numeric_limits<float>::infinity();
+        node.hi[k][7] = -std::numeric_limits<float>::infinity();
+    }
+    node.child[7] = kNoChild;
+    return node;
+}
+
+TEST(BvhSse2Boxes, ConservativeAgainstTheExactSlabTest) {
+    std::mt19937 rng(2024);
+    int hits = 0;
+    int clear_misses = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const WideNode node = random_node(rng);
+        const Vec3 origin{uniform(rng, -14, 14), uniform(rng, -14, 14), uniform(rng, -14, 14)};
+        // Most rays aim at a point of one of the boxes, so that many boxes are met.
+        const int aimed = static_cast<int>(rng() % 9);
+        Vec3 direction{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+        if (aimed < 7) {
+            for (int k = 0; k < 3; ++k) {
+                direction[k] = uniform(rng, node.lo[k][aimed], node.hi[k][aimed]) - origin[k];
+            }
+        }
+        if (length(direction) < 0.05) {
+            continue;
+        }
+        direction = normalize(direction);
+        const Ray ray{origin, direction};
+        // Half the rays start their interval at the origin, half a little further on.
+        const double t_min = trial % 2 == 0 ? 0.0 : uniform(rng, 0.0f, 10.0f);
+        const double t_max = trial % 3 == 0 ? 1e30 : t_min + uniform(rng, 0.1f, 20.0f);
+        const FloatRay fray(ray, kSceneScale);
+        ASSERT_TRUE(fray.usable);
+        const BoxRay box_ray(fray);
+        WideHits out;
+        test_wide_boxes_sse2(node, box_ray, simd::Float4::broadcast(fray.scaled_down(t_min)),
+                             simd::Float4::broadcast(fray.scaled_up(t_max)), out);
+        EXPECT_EQ(out.mask & 0x80, 0) << "the empty slot was entered";
+        for (int c = 0; c < 7; ++c) {
+            const Slab s = exact_slab(node, c, ray);
+            const bool meets = s.enter <= s.exit && s.exit >= t_min && s.enter <= t_max;
+            const bool set = (out.mask >> c & 1) != 0;
+            if (meets) {
+                ++hits;
+                EXPECT_TRUE(set) << "trial " << trial << " child " << c;
+                EXPECT_LE(out.entry[c], s.enter * fray.scale_t) << "trial " << trial;
+            }
+            // Clearly missed: by more than a thousandth of the scene in t.
+            const double slack = 1e-3 * kSceneScale;
+            const bool clearly_missed =
+                s.enter > s.exit + slack || s.exit < t_min - slack || s.enter > t_max + slack;
+            if (clearly_missed) {
+                ++clear_misses;
+                EXPECT_FALSE(set) << "trial " << trial << " child " << c;
+            }
+        }
+    }
+    EXPECT_GT(hits, 1000);
+    EXPECT_GT(clear_misses, 2000);
+}
+
+}  // namespace
+}  // namespace rt::bvh

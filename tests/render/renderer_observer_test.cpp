@@ -1,0 +1,138 @@
+// What render() tells its observer and how it stops: rows bottom up, every pixel announced once
+// (-dc), and a stop request (Ctrl-C) keeping a contiguous run of finished rows from the bottom.
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "rt/accel/brute_force.h"
+#include "rt/render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include "support/scene_builder.h"
+
+namespace rt {
+namespace {
+
+constexpr FilmWindow kWindow{2, 3, 9, 12};  // 8 columns, 10 rows
+
+// A lit box seen from the builder's eye, with an emissive lid so that pixels differ.
+Scene lit_box() {
+    Scene scene = test::make_box({-1, -1, -1}, {1, 1, 1}, false);
+    scene.view.look = {0, 0, 0};
+    scene.attributes[0].color = {0.8, 0.6, 0.4};
+    scene.attributes[0].emission = 0.5;
+    scene.attributes[0].diffuse = 0.5;
+    return scene;
+}
+
+Film render_with(RenderObserver& observer, int threads, RenderStatistics& statistics) {
+    const Scene scene = lit_box();
+    const BruteForce accel(scene);
+    RenderSettings settings;
+    settings.window = kWindow;
+    settings.threads = threads;
+    return render(scene, accel, settings, observer, statistics);
+}
+
+// Remembers every call; asks to stop once `stop_after` rows are done (never if 0).
+class RecordingObserver : public RenderObserver {
+public:
+    explicit RecordingObserver(int stop_after = 0, bool pixel_events = false)
+        : stop_after_(stop_after), pixel_events_(pixel_events) {}
+    void row_done(int y, int rows_done, int rows_total) override {
+        rows.push_back(y);
+        EXPECT_EQ(rows_done, static_cast<int>(rows.size()));
+        EXPECT_EQ(rows_total, kWindow.height());
+    }
+    bool wants_pixel_events() const override { return pixel_events_; }
+    void pixel_started(int x, int y) override { pixels.emplace_back(x, y); }
+    bool should_stop() override {
+        return stop_after_ > 0 && static_cast<int>(rows.size()) >= stop_after_;
+    }
+
+    std::vector<int> rows;
+    std::vector<std::pair<int, int>> pixels;
+
+private:
+    int stop_after_;
+    bool pixel_events_;
+};
+
+TEST(RendererObserver, OneThreadFinishesRowsFromTheBottomUp) {
+    RecordingObserver observer;
+    RenderStatistics statistics;
+    const Film film = render_with(observer, 1, statistics);
+    std::vector<int> expected;
+    for (int y = kWindow.bottom; y >= kWindow.top; --y) {
+        expected.push_back(y);
+    }
+    EXPECT_EQ(observer.rows, expected);
+    EXPECT_TRUE(film.complete());
+    EXPECT_FALSE(statistics.interrupted);
+    EXPECT_TRUE(observer.pixels.empty());  // nobody asked for pixel events
+}
+
+TEST(RendererObserver, EveryPixelIsAnnouncedOnceInDrawingOrder) {
+    RecordingObserver observer(0, true);
+    RenderStatistics statistics;
+    render_with(observer, 1, statistics);
+    std::vector<std::pair<int, int>> expected;
+    for (int y = kWindow.bottom; y >= kWindow.top; --y) {
+        for (int x = kWindow.left; x <= kWindow.right; ++x) {
+            expected.emplace_back(x, y);
+        }
+    }
+    EXPECT_EQ(observer.pixels, expected);
+}
+
+TEST(RendererObserver, AStopKeepsTheBottomRowsAsAFullRenderDrawsThem) {
+    RecordingObserver full_observer;
+    RenderStatistics full_statistics;
+    const Film full = render_with(full_observer, 1, full_statistics);
+
+    RecordingObserver observer(3);
+    RenderStatistics statistics;
+    const Film part = render_with(observer, 1, statistics);
+    EXPECT_TRUE(statistics.interrupted);
+    EXPECT_EQ(statistics.rows_done, 3);
+    EXPECT_FALSE(part.complete());
+    ASSERT_EQ(part.first_finished_row(), kWindow.bottom - 2);
+    bool any_lit = false;
+    for (int y = kWindow.top; y <= kWindow.bottom; ++y) {
+        for (int x = kWindow.left; x <= kWindow.right; ++x) {
+            if (y >= part.first_finished_row()) {
+                EXPECT_EQ(part.pixel(x, y), full.pixel(x, y)) << x << " " << y;
+                any_lit |= max_component(part.pixel(x, y)) > 0.0;
+            } else {
+                EXPECT_EQ(part.pixel(x, y), Rgb{}) << "never drawn: " << x << " " << y;
+            }
+        }
+    }
+    EXPECT_TRUE(any_lit);
+}
+
+TEST(RendererObserver, AStopWithSeveralThreadsKeepsAContiguousRun) {
+    // Threads may have finished rows above a gap; only the run from the bottom counts.
+    RecordingObserver observer(4);
+    RenderStatistics statistics;
+    const Film part = render_with(observer, 3, statistics);
+    EXPECT_TRUE(statistics.interrupted);
+    EXPECT_GE(statistics.rows_done, 4);
+    EXPECT_LT(statistics.rows_done, kWindow.height());
+    const int first = part.first_finished_row();
+    EXPECT_LE(first, kWindow.bottom + 1);
+    EXPECT_GT(first, kWindow.top);
+    for (int y = first; y <= kWindow.bottom; ++y) {
+        EXPECT_NE(std::find(observer.rows.begin(), observer.rows.end(), y), observer.rows.end())
+            << "row " << y << " counted as finished but never reported";
+    }
+    if (first > kWindow.top) {
+        // The row just above the run was not finished, or the run would include it.
+        EXPECT_EQ(std::find(observer.rows.begin(), observer.rows.end(), first - 1),
+                  observer.rows.end());
+    }
+}
+
+}  // namespace
+}  // namespace rt
