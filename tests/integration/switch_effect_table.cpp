@@ -37,7 +37,7 @@ std::vector<PictureRow> display_rows() {
         {"-c",
          {"-c"},
          "gallery",
-         {{"yellow", DisplayChanges, 0.9}, {"wall", DisplayRatio, 0.999, 1.001}, {"all", Same}},
+         {{"yellow", DisplayChanges, 0.5}, {"wall", DisplayRatio, 0.999, 1.001}, {"all", Same}},
          "-c stops clipping: the yellow light, over 255, shows strange colours; the rest does not "
          "change"},
     };
@@ -83,10 +83,10 @@ std::vector<PictureRow> light_rows() {
         {"-Db",
          {"-Db"},
          "gallery",
-         {{"blue", Darker, 40.0}, {"wall", Darker, 100.0}, {"yellow", Same}},
+         {{"blue", Darker, 40.0}, {"wall", Darker, 100.0}, {"yellow", Within, -6.0, 0.0}},
          "-Db: only the outside of an emitter emits: the blue light, seen from behind, goes dark, "
          "and the wall behind the yellow light loses its light; the yellow light itself, seen "
-         "from the front, does not change"},
+         "from the front, hardly changes"},
         {"-Wr",
          {"-Wr"},
          "gallery",
@@ -172,10 +172,14 @@ std::vector<PictureRow> sampling_rows() {
          {{"right_wall", Changes, 0.3}, {"blue", Same, 0.2}, {"wall_shadow", Within, -1.0, 1.0}},
          "-Xp0.9,50: pixels stop sampling sooner where their samples differ (lit edges)"},
         {"-Xr",
-         {"-Xr0.9,50"},
+         {"-Xr0.05,0.001"},
          "gallery",
-         {{"mirror_top", Brighter, 2.5}, {"mirror_low", Within, -1.0, 1.0}, {"wall_edge", Same}},
-         "-Xr0.9,50: the mirror's distributed rays stop sooner"},
+         {{"yellow", Touches, 0.3},
+          {"yellow", Within, -0.5, 0.5},
+          {"mirror", Same},
+          {"wall_shadow", Same}},
+         "-Xr0.05,0.001: a stricter rule for distributed rays: the frosted pane's refracted rays, "
+         "which stop early where they all meet the yellow light, are all taken"},
         {"--seed",
          {"--seed", "7"},
          "gallery",
@@ -195,8 +199,8 @@ std::vector<PictureRow> intersection_rows() {
          {"-tv1"},
          "gallery",
          {{"yellow", Darker, 170.0}, {"glass_shadow", Brighter, 4.0}},
-         "-tv1: rays end after one fruitless voxel: most of the scene goes dark, and so do the "
-         "shadows"},
+         "-tv1: rays end after one fruitless voxel: most of the scene goes dark, and feelers cut "
+         "short let their light through, so the glass pane's shadow goes"},
         {"-on",
          {"-on"},
          "gallery",

@@ -25,7 +25,7 @@ Rgb trace_once(const Scene& scene, const ShadingSettings& settings, const Ray& r
     SampleStream stream(settings.sampling.seed, 0, 0, 0);
     KindCounters counters;
     RayTreeCounts tree;
-    SampleContext sample{stream, counters, tree};
+    SampleContext sample{stream, counters, tree, {}};
     return tracer.trace(ray, RayKind::Eye, 1, false, sample);
 }
 

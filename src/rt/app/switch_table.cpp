@@ -56,7 +56,8 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A a) { o.terminate_after_voxels = static_cast<int>(a.integer); },
      .summary = "Terminate rays after N fruitless voxel hits",
      .details = "Ends a ray as a miss after N voxels without any hit (a near hit waiting for its "
-                "voxel keeps it going): faster, and a different picture by design.",
+                "voxel keeps it going): faster, and a different picture by design. Shadow "
+                "feelers too: one cut short lets its light through.",
      .section = "3.1", .example = "-tv8"},
     {.spelling = "-c", .apply = [](Options& o, A) { o.clip_intensity = false; },
      .summary = "Toggle intensity clipping. Currently on by default.",
