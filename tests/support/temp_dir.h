@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace rt::test {
 
@@ -27,5 +28,7 @@ std::filesystem::path source_dir();
 std::filesystem::path bin_dir();
 /// Reads a whole file.
 std::string read_text(const std::filesystem::path& path);
+/// The lines of a text, without their line ends.
+std::vector<std::string> lines_of(const std::string& text);
 
 }  // namespace rt::test
