@@ -17,7 +17,7 @@ StudyScene::StudyScene(const Options& options, const std::optional<FilmWindow>& 
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
     scene_ = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
-    settings_.shading = shading_settings(options);
+    settings_.shading = run_shading(options);
     prepare_scene(scene_, options, settings_.shading);
     settings_.window = window ? *window : render_window(scene_, options);
     settings_.threads = options.threads;

@@ -43,7 +43,7 @@ int bench(const std::vector<std::string>& args) {
     run.load_seconds = seconds_since(start);
 
     rt::RenderSettings settings;
-    settings.shading = rt::shading_settings(options);
+    settings.shading = rt::run_shading(options);
     rt::prepare_scene(scene, options, settings.shading);  // -E, -K
     settings.window = rt::render_window(scene, options);
     settings.threads = options.threads;

@@ -120,7 +120,7 @@ Fields changes(const Fields& base, const Fields& got) {
 
 ShadingSettings shading_for(std::vector<std::string> switches) {
     switches.insert(switches.begin(), "scene");
-    return shading_settings(parse_command_line(switches));
+    return run_shading(parse_command_line(switches));
 }
 
 struct ShadingRow {
@@ -267,7 +267,7 @@ Attribute glossy_attribute() {
 Attribute prepared_floor(Scene scene, std::vector<std::string> switches) {
     switches.insert(switches.begin(), "scene");
     const Options options = parse_command_line(switches);
-    prepare_scene(scene, options, shading_settings(options));
+    prepare_scene(scene, options, run_shading(options));
     return scene.attributes[0];
 }
 
@@ -304,7 +304,7 @@ TEST(PrepareSceneFromSwitches, ECreasesSmoothNormals) {
     const auto corner_normals = [](Scene scene, std::vector<std::string> switches) {
         switches.insert(switches.begin(), "scene");
         const Options options = parse_command_line(switches);
-        prepare_scene(scene, options, shading_settings(options));
+        prepare_scene(scene, options, run_shading(options));
         return scene;
     };
     EXPECT_TRUE(corner_normals(cube, {}).corner_normals.empty());

@@ -57,8 +57,8 @@ TEST(SwitchParser, SwitchesInAnyOrderAreRecordedVerbatim) {
 }
 
 TEST(SwitchParser, ManualMisprintDIIsDl) {
-    EXPECT_TRUE(parse_command_line({"s", "-DI"}).disable_light_attenuation);
-    EXPECT_TRUE(parse_command_line({"s", "-Dl"}).disable_light_attenuation);
+    EXPECT_TRUE(!parse_command_line({"s", "-DI"}).shading.attenuate_feelers);
+    EXPECT_TRUE(!parse_command_line({"s", "-Dl"}).shading.attenuate_feelers);
     EXPECT_EQ(usage_error({"s", "-Dl", "-DI"}), "-Dl is given twice: give each switch once");
 }
 
@@ -81,7 +81,7 @@ TEST(SwitchParser, ManyOutputsAreReadInOnePass) {
 
 TEST(SwitchParser, LongOptionValues) {
     const Options options = parse_command_line({"s", "--seed=12", "--threads", "3"});
-    EXPECT_EQ(options.seed, 12u);
+    EXPECT_EQ(options.shading.sampling.seed, 12u);
     EXPECT_EQ(options.threads, 3);
     EXPECT_EQ(usage_error({"s", "--output"}),
               "--output: expected a file name after --output, found nothing");
@@ -97,9 +97,9 @@ TEST(SwitchParser, LongOptionValues) {
 
 TEST(SwitchParser, GluedNumbers) {
     const Options options = parse_command_line({"s", "-m1.5", "-A40.0,1.0"});
-    EXPECT_EQ(options.display_multiplier, 1.5);
-    EXPECT_EQ(options.attenuation_distance, 40.0);
-    EXPECT_EQ(options.attenuation_constant, 1.0);
+    EXPECT_EQ(options.display.multiplier, 1.5);
+    EXPECT_EQ(options.shading.attenuation_distance, 40.0);
+    EXPECT_EQ(options.shading.attenuation_constant, 1.0);
     EXPECT_EQ(usage_error({"s", "-Stbx"}), "-Stb: expected a number after -Stb, found 'x'");
     EXPECT_EQ(usage_error({"s", "-m2.0x"}), "-m: expected a number after -m, found '2.0x'");
     EXPECT_EQ(usage_error({"s", "-mnan"}), "-m: expected a number after -m, found 'nan'");
@@ -116,12 +116,12 @@ TEST(SwitchParser, GluedNumbers) {
 TEST(SwitchParser, AttachedOrSeparateArguments) {
     EXPECT_EQ(parse_command_line({"s", "-L250"}).start_line, 250);
     EXPECT_EQ(parse_command_line({"s", "-L", "250"}).start_line, 250);
-    EXPECT_EQ(parse_command_line({"s", "-m", "2.5"}).display_multiplier, 2.5);
-    EXPECT_EQ(parse_command_line({"s", "-A", "40,2"}).attenuation_constant, 2.0);
+    EXPECT_EQ(parse_command_line({"s", "-m", "2.5"}).display.multiplier, 2.5);
+    EXPECT_EQ(parse_command_line({"s", "-A", "40,2"}).shading.attenuation_constant, 2.0);
     EXPECT_EQ(parse_command_line({"s", "-m", "2.5", "-n"}).given_switches,
               (std::vector<std::string>{"-m 2.5", "-n"}));
-    EXPECT_EQ(parse_command_line({"s", "-Wc", "0.7"}).warn_parameter, 0.7);
-    EXPECT_EQ(parse_command_line({"s", "-Wc0.7"}).warn_parameter, 0.7);
+    EXPECT_EQ(parse_command_line({"s", "-Wc", "0.7"}).shading.warn.cone_angle, 0.7);
+    EXPECT_EQ(parse_command_line({"s", "-Wc0.7"}).shading.warn.cone_angle, 0.7);
     EXPECT_EQ(usage_error({"s", "-Wc", "x"}), "-Wc: expected a number after -Wc, found 'x'");
     EXPECT_EQ(usage_error({"s", "-Wc"}), "-Wc: expected a number after -Wc, found nothing");
     EXPECT_EQ(usage_error({"s", "-L"}), "-L: expected a whole number after -L, found nothing");
@@ -134,8 +134,8 @@ TEST(SwitchParser, LongestSpellingWins) {
     EXPECT_TRUE(parse_command_line({"s", "-doo"}).debug_octree_output);
     EXPECT_EQ(usage_error({"s", "-doi"}),
               "not implemented: -doi: octree debugging is not implemented yet");
-    EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).specular,
-              SpecularModel::TorranceSparrowGaussian);
+    EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).shading.specular.law,
+              SpecularLaw::TorranceSparrowGaussian);
     EXPECT_TRUE(parse_command_line({"s", "-Dp"}).dialect.no_power_fields);
     EXPECT_EQ(usage_error({"s", "-Dpx"}), "unknown switch '-Dpx'");
 }
@@ -172,7 +172,7 @@ TEST(SwitchParser, ExclusiveGroups) {
     EXPECT_EQ(usage_error({"s", "-Sp", "-Sp"}), "-Sp is given twice: give each switch once");
     // Different groups do not exclude each other.
     const Options options = parse_command_line({"s", "-Sp", "-Po", "-Of"});
-    EXPECT_EQ(options.phong, PhongShading::Opaque);
+    EXPECT_TRUE(options.shading.smooth_shaded_opaque);
 }
 
 TEST(SwitchParser, DuplicatesAreErrors) {
@@ -221,7 +221,7 @@ TEST(SwitchParser, FileFormatSwitchesSetTheDialect) {
     EXPECT_TRUE(options.dialect.marks);
     EXPECT_TRUE(options.dialect.rgb_refraction);
     EXPECT_FALSE(options.dialect.textures);
-    EXPECT_EQ(options.phong, PhongShading::Transparent);
+    EXPECT_FALSE(options.shading.smooth_shaded_opaque);
 }
 
 }  // namespace

@@ -153,12 +153,20 @@ std::map<std::string_view, Expectation> expectations() {
     auto flag = [](bool Options::*field) {
         return Expectation{{}, [field](const Options& o) { return o.*field; }};
     };
+    auto shading_flag = [](bool ShadingSettings::*field, bool value) {
+        return Expectation{{},
+                           [field, value](const Options& o) { return o.shading.*field == value; }};
+    };
+    auto tint = [](HighlightTint wanted) {
+        return Expectation{
+            {}, [wanted](const Options& o) { return o.shading.specular.tint == wanted; }};
+    };
     std::map<std::string_view, Expectation> e = {
         {"-n", flag(&Options::no_gro)},
         {"-w", flag(&Options::wireframe_only)},
-        {"-m", {{}, [](const Options& o) { return o.display_multiplier == 2.0; }}},
+        {"-m", {{}, [](const Options& o) { return o.display.multiplier == 2.0; }}},
         {"-tv", {whole(8), [](const Options& o) { return o.terminate_after_voxels == 8; }}},
-        {"-c", {{}, [](const Options& o) { return !o.clip_intensity; }}},
+        {"-c", {{}, [](const Options& o) { return !o.display.clip; }}},
         {"-od", {whole(5), [](const Options& o) { return o.octree_depth == 5; }}},
         {"-oo", flag(&Options::draw_octree)},
         {"-ol", {whole(16), [](const Options& o) { return o.octlist_power == 16; }}},
@@ -171,51 +179,59 @@ std::map<std::string_view, Expectation> expectations() {
         {"-Sp",
          {{},
           [](const Options& o) {  // the default, so also look for the switch itself
-              return o.specular == SpecularModel::Phong && o.given_switches.size() == 1;
+              return o.shading.specular.law == SpecularLaw::Phong && o.given_switches.size() == 1;
           }}},
-        {"-Sg", {{}, [](const Options& o) { return o.specular == SpecularModel::PhongGeometric; }}},
+        {"-Sg",
+         {{},
+          [](const Options& o) { return o.shading.specular.law == SpecularLaw::PhongGeometric; }}},
         {"-Stg",
          {number(1.0),
           [](const Options& o) {
-              return o.specular == SpecularModel::TorranceSparrowGaussian &&
-                     o.microfacet_slope == 1.0;
+              return o.shading.specular.law == SpecularLaw::TorranceSparrowGaussian &&
+                     o.shading.specular.slope_m == 1.0;
           }}},
         {"-Stb",
          {number(1.0),
           [](const Options& o) {
-              return o.specular == SpecularModel::TorranceSparrowBeckmann &&
-                     o.microfacet_slope == 1.0;
+              return o.shading.specular.law == SpecularLaw::TorranceSparrowBeckmann &&
+                     o.shading.specular.slope_m == 1.0;
           }}},
         {"-R", {{}, [](const Options& o) { return o.dialect.rgb_refraction; }}},
-        {"-Wr", {{}, [](const Options& o) { return o.warn == WarnLight::Rogers; }}},
+        {"-Wr", {{}, [](const Options& o) { return o.shading.warn.mode == WarnMode::Rogers; }}},
         {"-Wc",
          {number(0.7),
           [](const Options& o) {
-              return o.warn == WarnLight::Conical && o.warn_parameter == 0.7;
+              return o.shading.warn.mode == WarnMode::Conical && o.shading.warn.cone_angle == 0.7;
           }}},
         {"-Wt",
          {number(1.0),
           [](const Options& o) {
-              return o.warn == WarnLight::Thibadeau && o.warn_parameter == 1.0;
+              return o.shading.warn.mode == WarnMode::Thibadeau &&
+                     o.shading.warn.displacement == 1.0;
           }}},
         {"-A",
          {{},
           [](const Options& o) {
-              return o.attenuation_distance == 40.0 && o.attenuation_constant == 1.0;
+              return o.shading.attenuation_distance == 40.0 &&
+                     o.shading.attenuation_constant == 1.0;
           }}},
-        {"-T", flag(&Options::specular_refraction_feelers)},
-        {"-Co",
-         {{}, [](const Options& o) { return o.highlight == HighlightColor::ObjectAttenuates; }}},
-        {"-Ci", {{}, [](const Options& o) { return o.highlight == HighlightColor::LightOnly; }}},
-        {"-Cf", {{}, [](const Options& o) { return o.highlight == HighlightColor::Fresnel; }}},
-        {"-Dx", flag(&Options::disable_adaptive)},
+        {"-T", shading_flag(&ShadingSettings::far_side_feelers, true)},
+        {"-Co", tint(HighlightTint::ObjectColor)},
+        {"-Ci",
+         {{},
+          [](const Options& o) {  // the default, so also look for the switch itself
+              return o.shading.specular.tint == HighlightTint::LightColor &&
+                     o.given_switches.size() == 1;
+          }}},
+        {"-Cf", tint(HighlightTint::Fresnel)},
+        {"-Dx", {{}, [](const Options& o) { return !o.shading.sampling.adaptive; }}},
         {"-De", flag(&Options::disable_exit_culling)},
-        {"-Dd", flag(&Options::disable_distribution)},
-        {"-Dt", flag(&Options::feelers_stop_at_transparent)},
-        {"-Da", flag(&Options::disable_attenuation)},
-        {"-Dl", flag(&Options::disable_light_attenuation)},
-        {"-Ds", flag(&Options::disable_shadow_feelers)},
-        {"-Dr", flag(&Options::disable_reflection)},
+        {"-Dd", {{}, [](const Options& o) { return !o.shading.sampling.distribute; }}},
+        {"-Dt", shading_flag(&ShadingSettings::feelers_stop_at_transparent, true)},
+        {"-Da", shading_flag(&ShadingSettings::attenuate_rays, false)},
+        {"-Dl", shading_flag(&ShadingSettings::attenuate_feelers, false)},
+        {"-Ds", shading_flag(&ShadingSettings::shadow_feelers, false)},
+        {"-Dr", shading_flag(&ShadingSettings::reflection, false)},
         {"-Df",
          {{},
           [](const Options& o) {
@@ -226,41 +242,45 @@ std::map<std::string_view, Expectation> expectations() {
           [](const Options& o) {
               return o.dialect.no_power_fields && !o.dialect.attributes_inline;
           }}},
-        {"-Db", flag(&Options::single_sided_emitters)},
+        {"-Db", shading_flag(&ShadingSettings::both_sides_emit, false)},
         {"-Po",
          {{},
           [](const Options& o) {
-              return o.phong == PhongShading::Opaque && o.dialect.smooth_shade_field;
+              return o.shading.smooth_shaded_opaque && o.dialect.smooth_shade_field;
           }}},
         {"-Pt",
          {{},
           [](const Options& o) {
-              return o.phong == PhongShading::Transparent && o.dialect.smooth_shade_field;
+              return !o.shading.smooth_shaded_opaque && o.dialect.smooth_shade_field;
           }}},
-        {"-Ot", flag(&Options::old_intersection_test)},
-        {"-Oi", flag(&Options::old_illumination)},
+        {"-Ot", shading_flag(&ShadingSettings::correct_smoothing, false)},
+        {"-Oi", {{}, [](const Options& o) { return o.early == EarlyVersion::OldIllumination; }}},
         {"-Of",
          {{},
           [](const Options& o) {
               return o.dialect.attributes_inline && o.dialect.no_power_fields;
           }}},
-        {"-O1", flag(&Options::old_version)},
+        {"-O1", {{}, [](const Options& o) { return o.early == EarlyVersion::OldVersion; }}},
         {"-K", flag(&Options::scale_weights)},
-        {"-I", flag(&Options::illuminate_distributed)},
+        {"-I", {{}, [](const Options& o) { return o.shading.sampling.illuminate_distributed; }}},
         {"-L", {{}, [](const Options& o) { return o.start_line == 250; }}},
         {"-E", {number(1.5), [](const Options& o) { return o.crease_angle == 1.5; }}},
         {"-F",
          {pair(0.3, 2.0),
-          [](const Options& o) { return o.fuzzy_distangle == 0.3 && o.fuzzy_distfac == 2.0; }}},
+          [](const Options& o) {
+              return o.shading.fuzzy.angle == 0.3 && o.shading.fuzzy.count == 2;
+          }}},
         {"-Xp",
          {pair(0.1, 0.05),
           [](const Options& o) {
-              return o.pixel_stop_probability == 0.1 && o.pixel_stop_variance == 0.05;
+              const ChiSquareStop& stop = o.shading.sampling.pixel_stop;
+              return stop.probability == 0.1 && stop.variance == 0.05;
           }}},
         {"-Xr",
          {pair(0.1, 0.05),
           [](const Options& o) {
-              return o.ray_stop_probability == 0.1 && o.ray_stop_variance == 0.05;
+              const ChiSquareStop& stop = o.shading.sampling.ray_stop;
+              return stop.probability == 0.1 && stop.variance == 0.05;
           }}},
         {"-M", {{}, [](const Options& o) { return o.dialect.marks; }}},
         {"-V", {{}, [](const Options& o) { return o.dialect.textures; }}},
@@ -279,7 +299,7 @@ std::map<std::string_view, Expectation> expectations() {
         {"--output",
          {{},
           [](const Options& o) { return o.outputs == std::vector<std::string>{"twocubes.png"}; }}},
-        {"--seed", {{}, [](const Options& o) { return o.seed == 7; }}},
+        {"--seed", {{}, [](const Options& o) { return o.shading.sampling.seed == 7; }}},
         {"--threads", {{}, [](const Options& o) { return o.threads == 2; }}},
         {"--accel", {{}, [](const Options& o) { return o.accel == "bvh"; }}},
         {"--zbuffer", flag(&Options::zbuffer_first_hits)},

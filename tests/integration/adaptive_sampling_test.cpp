@@ -61,7 +61,7 @@ public:
         : options_(parse_command_line({(source_dir() / "scenes" / "twocubes.scn").string()})) {
         Diagnostics diagnostics;
         scene_ = load_scene(options_.scene, options_.dialect, diagnostics);
-        settings_.shading = shading_settings(options_);
+        settings_.shading = run_shading(options_);
         prepare_scene(scene_, options_, settings_.shading);
         settings_.window = kWindow;
         accelerator_.emplace(scene_, options_, RunConsole{});

@@ -148,7 +148,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     times.load_seconds = seconds_since(phase);
 
     RenderSettings settings;
-    settings.shading = shading_settings(options);
+    settings.shading = run_shading(options);
     prepare_scene(scene, options, settings.shading);
     settings.window = render_window(scene, options);
     settings.threads = options.threads;
@@ -177,7 +177,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
         const auto count = static_cast<std::uint64_t>(settings.window.width()) *
                            static_cast<std::uint64_t>(settings.window.height());
         const KindCounters counters =
-            fire_random_rays(scene, *accel, count, options.seed, options.threads);
+            fire_random_rays(scene, *accel, count, options.shading.sampling.seed, options.threads);
         times.trace_seconds = seconds_since(phase);
         console.note("-r: fired " + std::to_string(count) + " random rays; no picture is written");
         print_profile(counters);
@@ -191,7 +191,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     if (stack.strike_check() != nullptr) {
         console.note(stack.strike_check()->summary());
     }
-    film.mapping = {options.display_multiplier, options.clip_intensity};
+    film.mapping = options.display;
     film.provenance = {options.scene, join(options.given_switches),
                        std::string("rt ") + std::string(kVersion), utc_now()};
     if (options.debug_color) {

@@ -247,7 +247,7 @@ void parse_switch(std::string_view word, ArgumentCursor& cursor, Options& option
 }
 
 void check_complete(const Options& options, const Seen& seen) {
-    if (options.old_version && options.given_switches.size() > 1) {
+    if (options.early == EarlyVersion::OldVersion && options.given_switches.size() > 1) {
         throw UsageError("-O1 must be used alone, without other switches");
     }
     if (seen.scenes.empty()) {

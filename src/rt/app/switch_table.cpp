@@ -5,6 +5,7 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <numbers>
 
 namespace rt {
@@ -31,6 +32,12 @@ constexpr std::string_view kWireframe = "the wireframe display";
 constexpr std::string_view kAdaptive = "adaptive supersampling";
 constexpr std::string_view kOctreeDebug = "octree debugging";
 
+// -S: the law and its slope m (1 for the Phong laws, which do not use it); the Gaussian normaliser
+// is computed here, once. The highlight colour (-C) is kept.
+void set_specular_law(Options& o, SpecularLaw law, double slope_m) {
+    o.shading.specular = make_specular_settings(law, slope_m, o.shading.specular.tint);
+}
+
 // Each row names only the fields it needs; the rest keep SwitchSpec's defaults on purpose, which
 // GCC 12 would otherwise flag row by row.
 // A table reads best one compact row per switch.
@@ -46,7 +53,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Probably used only in front-end user interfaces.", .section = "App.",
      .example = "-w", .status = NotYet, .feature = kWireframe},
     {.spelling = "-m", .form = Number, .first = {"the multiplier", kPositive},
-     .apply = [](Options& o, A a) { o.display_multiplier = a.first; },
+     .apply = [](Options& o, A a) { o.display.multiplier = a.first; },
      .summary = "Multiplies screen display values by 2.",
      .details = "Compensates a picture that is too dark or too bright; an RGB value over 255 "
                 "scales the pixel down proportionally unless -c is given.", .section = "App.",
@@ -59,7 +66,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "voxel keeps it going): faster, and a different picture by design. Shadow "
                 "feelers too: one cut short lets its light through.",
      .section = "3.1", .example = "-tv8"},
-    {.spelling = "-c", .apply = [](Options& o, A) { o.clip_intensity = false; },
+    {.spelling = "-c", .apply = [](Options& o, A) { o.display.clip = false; },
      .summary = "Toggle intensity clipping. Currently on by default.",
      .details = "Turns clipping off: an intensity over 255 is displayed anyway, which can give "
                 "very strange colors.", .section = "App.", .example = "-c"},
@@ -120,16 +127,16 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "box, uniform directions) and writes no picture. Useful with -p.", .section = "App.",
      .example = "-r"},
     {.spelling = "-Sp", .group = Exclusive::SpecularModel, .topic = Specular,
-     .apply = [](Options& o, A) { o.specular = SpecularModel::Phong; }, .summary = "Phong",
+     .apply = [](Options& o, A) { set_specular_law(o, SpecularLaw::Phong, 1.0); },
+     .summary = "Phong",
      .details = "The default specular reflection model.", .section = "App.", .example = "-Sp"},
     {.spelling = "-Sg", .group = Exclusive::SpecularModel, .topic = Specular,
-     .apply = [](Options& o, A) { o.specular = SpecularModel::PhongGeometric; },
+     .apply = [](Options& o, A) { set_specular_law(o, SpecularLaw::PhongGeometric, 1.0); },
      .summary = "Phong with geometric attenuation factor", .section = "App.", .example = "-Sg"},
     {.spelling = "-Stg", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
      .first = {"m", kPositive},
      .apply = [](Options& o, A a) {
-         o.specular = SpecularModel::TorranceSparrowGaussian;
-         o.microfacet_slope = a.first;
+         set_specular_law(o, SpecularLaw::TorranceSparrowGaussian, a.first);
      },
      .summary = "Torrance-Sparrow with Gaussian dist.; the # is m",
      .details = "m is the root mean square slope of the microfacets.", .section = "App.",
@@ -137,8 +144,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-Stb", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
      .first = {"m", kPositive},
      .apply = [](Options& o, A a) {
-         o.specular = SpecularModel::TorranceSparrowBeckmann;
-         o.microfacet_slope = a.first;
+         set_specular_law(o, SpecularLaw::TorranceSparrowBeckmann, a.first);
      },
      .summary = "Torrance-Sparrow with Beckmann dist.; the # is m",
      .details = "m is the root mean square slope of the microfacets.", .section = "App.",
@@ -149,51 +155,52 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Then ALL attributes must have three indices of refraction.", .section = "2.3",
      .example = "-R"},
     {.spelling = "-Wr", .group = Exclusive::WarnLight, .topic = Lights,
-     .apply = [](Options& o, A) { o.warn = WarnLight::Rogers; }, .summary = "Warn lights: Rogers",
+     .apply = [](Options& o, A) { o.shading.warn = {WarnMode::Rogers, 0.0, 0.0}; },
+     .summary = "Warn lights: Rogers",
      .details = "With shadow feeling, the feeler's intensity is attenuated by pow(cos(x), N), x "
                 "the angle to the emissive polygon's normal.", .section = "App.", .example = "-Wr"},
     {.spelling = "-Wc", .form = NumberGluedOrSeparate, .group = Exclusive::WarnLight,
      .topic = Lights, .first = {"the angle", kAngle},
-     .apply = [](Options& o, A a) { o.warn = WarnLight::Conical; o.warn_parameter = a.first; },
+     .apply = [](Options& o, A a) { o.shading.warn = {WarnMode::Conical, a.first, 0.0}; },
      .summary = "Warn lights: conical; # is angle in radians",
      .details = "Same as -Wr except that no light is obtained beyond the angle.", .section = "App.",
      .example = "-Wc 0.7"},
     {.spelling = "-Wt", .form = Number, .group = Exclusive::WarnLight, .topic = Lights,
      .first = {"the distance", kPositive},
-     .apply = [](Options& o, A a) { o.warn = WarnLight::Thibadeau; o.warn_parameter = a.first; },
+     .apply = [](Options& o, A a) { o.shading.warn = {WarnMode::Thibadeau, 0.0, a.first}; },
      .summary = "Warn lights: Thibadeau; # is dist. from poly",
      .details = "The point source is displaced behind the emissive polygon; light arrives only "
                 "through the polygon.", .section = "App.", .example = "-Wt1.0"},
     {.spelling = "-A", .form = Pair, .topic = Lights, .first = {"the distance", kPositive},
      .second = {"the constant", kPositive},
      .apply = [](Options& o, A a) {
-         o.attenuation_distance = a.first;
-         o.attenuation_constant = a.second;
+         o.shading.attenuation_distance = a.first;
+         o.shading.attenuation_constant = a.second;
      },
      .summary = "Attenuation effect: intensity divided by dist/40.0 + 1.0",
      .details = "NOT the inverse-square law. By default attenuation is on, with 200.0 and 1.0.",
      .section = "App.", .example = "-A40.0,1.0"},
     {.spelling = "-T", .topic = Lights,
-     .apply = [](Options& o, A) { o.specular_refraction_feelers = true; },
+     .apply = [](Options& o, A) { o.shading.far_side_feelers = true; },
      .summary = "Specular refraction",
      .details = "Also considers shadow feelers on the far side of a polygon that is not opaque.",
      .section = "App.", .example = "-T"},
     {.spelling = "-Co", .group = Exclusive::HighlightColor, .topic = Highlights,
-     .apply = [](Options& o, A) { o.highlight = HighlightColor::ObjectAttenuates; },
+     .apply = [](Options& o, A) { o.shading.specular.tint = HighlightTint::ObjectColor; },
      .summary = "Object color attenuates light color",
      .details = "Specular highlights are filtered through the color of the polygon.",
      .section = "App.", .example = "-Co"},
     {.spelling = "-Ci", .group = Exclusive::HighlightColor, .topic = Highlights,
-     .apply = [](Options& o, A) { o.highlight = HighlightColor::LightOnly; },
+     .apply = [](Options& o, A) { o.shading.specular.tint = HighlightTint::LightColor; },
      .summary = "Light color only",
      .details = "Specular highlights are the color of the incident light.", .section = "App.",
      .example = "-Ci"},
     {.spelling = "-Cf", .group = Exclusive::HighlightColor, .topic = Highlights,
-     .apply = [](Options& o, A) { o.highlight = HighlightColor::Fresnel; },
+     .apply = [](Options& o, A) { o.shading.specular.tint = HighlightTint::Fresnel; },
      .summary = "Fresnel function applied to RGB components separately",
      .details = "Specular highlights vary with the wavelength of the incident light.",
      .section = "App.", .example = "-Cf"},
-    {.spelling = "-Dx", .topic = Disable, .apply = [](Options& o, A) { o.disable_adaptive = true; },
+    {.spelling = "-Dx", .topic = Disable, .apply = [](Options& o, A) { o.shading.sampling.adaptive = false; },
      .summary = "disable adaptive supersampling",
      .details = "Takes the maximum number of samples per pixel (the sample resolution squared).",
      .section = "App.", .example = "-Dx"},
@@ -206,31 +213,31 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "off, e.g. when the table takes too long to build.", .section = "App.",
      .example = "-De"},
     {.spelling = "-Dd", .topic = Disable,
-     .apply = [](Options& o, A) { o.disable_distribution = true; },
+     .apply = [](Options& o, A) { o.shading.sampling.distribute = false; },
      .summary = "disable Distributing",
      .details = "Only one transmitted and one reflected ray per intersection: quick but "
                 "unrealistic pictures.", .section = "App.", .example = "-Dd"},
     {.spelling = "-Dt", .topic = Disable,
-     .apply = [](Options& o, A) { o.feelers_stop_at_transparent = true; },
+     .apply = [](Options& o, A) { o.shading.feelers_stop_at_transparent = true; },
      .summary = "prevent shadow feelers from penetrating Transparent polys",
      .details = "The shadow feeler stops dead at the first polygon it hits.", .section = "App.",
      .example = "-Dt"},
     {.spelling = "-Da", .topic = Disable,
-     .apply = [](Options& o, A) { o.disable_attenuation = true; },
+     .apply = [](Options& o, A) { o.shading.attenuate_rays = false; },
      .summary = "disable Attenuation with distance (excluding LightLock)",
      .details = "Light rays other than shadow feelers do not attenuate with distance.",
      .section = "App.", .example = "-Da"},
     {.spelling = "-Dl", .alias = "-DI", .topic = Disable,
-     .apply = [](Options& o, A) { o.disable_light_attenuation = true; },
+     .apply = [](Options& o, A) { o.shading.attenuate_feelers = false; },
      .summary = "disable attenuation with distance of Lights",
      .details = "Shadow feelers do not attenuate with distance. The manual prints it -DI, which "
                 "is accepted too.", .section = "App.", .example = "-Dl"},
     {.spelling = "-Ds", .topic = Disable,
-     .apply = [](Options& o, A) { o.disable_shadow_feelers = true; },
+     .apply = [](Options& o, A) { o.shading.shadow_feelers = false; },
      .summary = "disable Shadow feeler", .details = "Eliminates shadow feeling.", .section = "App.",
      .example = "-Ds"},
     {.spelling = "-Dr", .topic = Disable,
-     .apply = [](Options& o, A) { o.disable_reflection = true; }, .summary = "disable Reflection",
+     .apply = [](Options& o, A) { o.shading.reflection = false; }, .summary = "disable Reflection",
      .details = "No reflected rays, even at a reflective polygon.", .section = "App.",
      .example = "-Dr"},
     {.spelling = "-Df", .topic = FileFormat,
@@ -244,28 +251,25 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "pow and tpow are absent from EVERY attribute and taken as 2.0.", .section = "2.3",
      .example = "-Dp"},
     {.spelling = "-Db", .topic = Disable,
-     .apply = [](Options& o, A) { o.single_sided_emitters = true; },
+     .apply = [](Options& o, A) { o.shading.both_sides_emit = false; },
      .summary = "not Both sides of polygons are emissive",
      .details = "Only the outside surface of emissive polygons emits light.", .section = "App.",
      .example = "-Db"},
     {.spelling = "-Po", .group = Exclusive::PhongShading, .topic = FileFormat,
      .apply = [](Options& o, A) {
-         o.phong = PhongShading::Opaque;
          o.dialect.smooth_shade_field = true;
+         o.shading.smooth_shaded_opaque = true;
      },
      .summary = "Phong shaded objects are opaque",
      .details = "The .scn has the smooth-shading field; such objects are forced opaque (the "
                 "preferred option).", .section = "2.2", .example = "-Po"},
     {.spelling = "-Pt", .group = Exclusive::PhongShading, .topic = FileFormat,
-     .apply = [](Options& o, A) {
-         o.phong = PhongShading::Transparent;
-         o.dialect.smooth_shade_field = true;
-     },
+     .apply = [](Options& o, A) { o.dialect.smooth_shade_field = true; },
      .summary = "Phong shaded objects are transparent",
      .details = "The .scn has the smooth-shading field; opaqueness is not forced.",
      .section = "2.2", .example = "-Pt"},
     {.spelling = "-Ot", .topic = OldVersions,
-     .apply = [](Options& o, A) { o.old_intersection_test = true; },
+     .apply = [](Options& o, A) { o.shading.correct_smoothing = false; },
      .summary = "Old intersection test",
      .details = "Smooth-shaded normals can face away from the ray, and reflected or refracted rays "
                 "can then leave on the wrong side; by default both are corrected (the normal is "
@@ -273,7 +277,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "-Ot disables the correction.",
      .section = "App.", .example = "-Ot"},
     {.spelling = "-Oi", .topic = OldVersions,
-     .apply = [](Options& o, A) { o.old_illumination = true; }, .summary = "Old illumination model",
+     .apply = [](Options& o, A) { o.early = EarlyVersion::OldIllumination; }, .summary = "Old illumination model",
      .details = "Simulates the earliest version of the raytracer: no attenuation with distance, "
                 "shadow feelers that stop at any polygon, no distributed rays, and every point "
                 "source of an emitter at the emitter's full power (see docs/rendering.md).",
@@ -284,7 +288,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
          o.dialect.no_power_fields = true;
      },
      .summary = "Old format", .details = "Same as -Df -Dp.", .section = "2.3", .example = "-Of"},
-    {.spelling = "-O1", .topic = OldVersions, .apply = [](Options& o, A) { o.old_version = true; },
+    {.spelling = "-O1", .topic = OldVersions, .apply = [](Options& o, A) { o.early = EarlyVersion::OldVersion; },
      .summary = "Behave like an early version of the CMU raytracer",
      .details = "Before certain bugs had been ironed out: -Oi, taking every sample of every pixel. "
                 "It must be used alone, without other switches.", .section = "2.1", .example = "-O1"},
@@ -294,7 +298,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Looks at -Dr and -Ds. Produces correct but dark pictures.", .section = "App.",
      .example = "-K"},
     {.spelling = "-I", .topic = Illumination,
-     .apply = [](Options& o, A) { o.illuminate_distributed = true; },
+     .apply = [](Options& o, A) { o.shading.sampling.illuminate_distributed = true; },
      .summary = "apply illum. model to distrib. rays as well as shadow feelers",
      .details = "Gives the distributed rays the full illumination model treatment: highlights, and "
                 "distribution of their own reflected and refracted rays (down to maxdist).",
@@ -312,17 +316,16 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "sharp.", .section = "App.", .example = "-E1.5"},
     {.spelling = "-F", .form = Pair, .topic = Lights, .first = {"distangle", kPositive},
      .second = {"distfac", kPositive},
-     .apply = [](Options& o, A a) { o.fuzzy_distangle = a.first; o.fuzzy_distfac = a.second; },
+     .apply = [](Options& o, A a) {
+         o.shading.fuzzy = {a.first, static_cast<int>(std::ceil(a.second))};
+     },
      .summary = "Fuzzy shadow feeler: 0.3 is distangle, 2.0 is distfac",
      .details = "Distributes the shadow feeler to produce fuzzy shadows: distfac feelers per light "
                 "(rounded up), each turned at random by up to distangle radians from the light.", .section = "App.",
      .example = "-F0.3,2.0"},
     {.spelling = "-Xp", .form = Pair, .topic = AdaptiveSampling,
      .first = {"the probability", kProbability}, .second = {"the variance", kPositive},
-     .apply = [](Options& o, A a) {
-         o.pixel_stop_probability = a.first;
-         o.pixel_stop_variance = a.second;
-     },
+     .apply = [](Options& o, A a) { o.shading.sampling.pixel_stop = {a.first, a.second}; },
      .summary = "Stop sampling pixels when prob that variance 0.05 is .1",
      .details = "Chi-square adaptive sampling of the n x n samples of a pixel: sampling stops once "
                 "the chance that the variance of the pixel's mean exceeds var (in display levels "
@@ -330,10 +333,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .section = "App.", .example = "-Xp0.1,0.05"},
     {.spelling = "-Xr", .form = Pair, .topic = AdaptiveSampling,
      .first = {"the probability", kProbability}, .second = {"the variance", kPositive},
-     .apply = [](Options& o, A a) {
-         o.ray_stop_probability = a.first;
-         o.ray_stop_variance = a.second;
-     },
+     .apply = [](Options& o, A a) { o.shading.sampling.ray_stop = {a.first, a.second}; },
      .summary = "Ditto, except with distributed rays and not pixels",
      .details = "Chi-square adaptive sampling of the distributed rays at an intersection (at most "
                 "n x n of them, n the sample resolution), with the same rule as -Xp.", .section = "App.",
@@ -414,7 +414,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A) { o.show_version = true; }, .summary = "Print the version and stop",
      .section = "new", .example = "--version"},
     {.spelling = "--seed", .form = SeparateInteger, .topic = Program, .first = {"N", kNonNegative},
-     .apply = [](Options& o, A a) { o.seed = static_cast<std::uint64_t>(a.integer); },
+     .apply = [](Options& o, A a) { o.shading.sampling.seed = static_cast<std::uint64_t>(a.integer); },
      .summary = "Seed of the random numbers (the same seed, the same picture)", .section = "new",
      .example = "--seed 7"},
     {.spelling = "--threads", .form = SeparateInteger, .topic = Program,

@@ -1,5 +1,7 @@
 #include "rt/shading/weight_scaling.h"
 
+#include <vector>
+
 namespace rt {
 
 WeightScalingInputs weight_scaling_inputs(const ShadingSettings& settings,
@@ -42,6 +44,17 @@ Attribute scale_weights(Attribute attribute, double scale) {
     attribute.specular *= scale;
     attribute.transmission *= scale;
     return attribute;
+}
+
+void scale_scene_weights(Scene& scene, const ShadingSettings& settings) {
+    const std::vector<PointLight> lights =
+        settings.shadow_feelers
+            ? collect_point_lights(scene, scene.header.lghtick, settings.share_light_among_points)
+            : std::vector<PointLight>{};
+    const WeightScalingInputs inputs = weight_scaling_inputs(settings, lights);
+    for (Attribute& a : scene.attributes) {
+        a = scale_weights(a, weight_scale(a, inputs));
+    }
 }
 
 }  // namespace rt

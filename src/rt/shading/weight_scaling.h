@@ -23,6 +23,7 @@
 
 #include "rt/core/rgb.h"
 #include "rt/scene/attribute.h"
+#include "rt/scene/scene.h"
 #include "rt/shading/lights.h"
 #include "rt/shading/shading_settings.h"
 
@@ -49,5 +50,9 @@ double weight_scale(const Attribute& attribute, const WeightScalingInputs& input
 
 /// The attribute with e, a, d, s and t multiplied by `scale`.
 Attribute scale_weights(Attribute attribute, double scale);
+
+/// -K: every attribute of the scene scaled by its weight_scale, for the point lights the settings
+/// give the scene (none without shadow feelers), before anything reads the attributes.
+void scale_scene_weights(Scene& scene, const ShadingSettings& settings);
 
 }  // namespace rt
