@@ -152,43 +152,33 @@ std::string rules_list(std::size_t width) {
 
 std::string synopsis(const SwitchSpec& spec) {
     std::string text(spec.spelling);
-    switch (spec.form) {
-        case ArgForm::None:
-            break;
-        case ArgForm::Number:
-        case ArgForm::Integer:
-            text += placeholder(spec.first);
-            break;
-        case ArgForm::NumberGluedOrSeparate:
-            text += cat({" ", placeholder(spec.first)});
-            break;
-        case ArgForm::SeparateText:
-        case ArgForm::SeparateInteger:
-            text += cat({" ", spec.first.name});
-            break;
-        case ArgForm::Pair:
-            text += cat({placeholder(spec.first), ",", placeholder(spec.second)});
-            break;
+    if (spec.form == ArgForm::None) {
+        return text;
+    }
+    if (spec.is_long_option()) {
+        return cat({text, " ", spec.first.name});  // "--threads N", "--output FILE"
+    }
+    // Written as the example is: "-m<multiplier>", but "-Wc <angle>".
+    text += spec.example.find(' ') == std::string_view::npos ? "" : " ";
+    text += placeholder(spec.first);
+    if (spec.form == ArgForm::Pair) {
+        text += cat({",", placeholder(spec.second)});
     }
     return text;
 }
 
 std::string argument_text(const SwitchSpec& spec) {
-    switch (spec.form) {
-        case ArgForm::None:
-        case ArgForm::SeparateText:
-            return "";
-        case ArgForm::SeparateInteger:
-            return operand_text(spec.first);
-        case ArgForm::Number:
-        case ArgForm::NumberGluedOrSeparate:
-        case ArgForm::Integer:
-            return cat({operand_text(spec.first), ", attached or separate"});
-        case ArgForm::Pair:
-            return cat({operand_text(spec.first), ", ", operand_text(spec.second),
-                        ", attached or separate"});
+    if (spec.form == ArgForm::None || spec.form == ArgForm::Text) {
+        return "";
     }
-    return "";
+    if (spec.is_long_option()) {
+        return operand_text(spec.first);
+    }
+    std::string text = operand_text(spec.first);
+    if (spec.form == ArgForm::Pair) {
+        text += cat({", ", operand_text(spec.second)});
+    }
+    return cat({text, ", attached or separate"});
 }
 
 std::string usage_text() {

@@ -169,16 +169,14 @@ SwitchArgument read_argument(const SwitchSpec& spec, std::string_view text) {
         case ArgForm::None:
             break;
         case ArgForm::Number:
-        case ArgForm::NumberGluedOrSeparate:
             argument.first = read_number(spec, text);
             break;
         case ArgForm::Pair:
             return read_pair(spec, text);
         case ArgForm::Integer:
-        case ArgForm::SeparateInteger:
             argument.integer = read_integer(spec, text);
             break;
-        case ArgForm::SeparateText:
+        case ArgForm::Text:
             return read_text(spec, text);
     }
     return argument;

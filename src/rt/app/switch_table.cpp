@@ -27,9 +27,7 @@ constexpr Range whole(int low, int high) {
 }
 
 // Shared wording of the features this release does not have yet.
-constexpr std::string_view kSpatialEncoding = "spatial encoding (octrees and SEADS)";
 constexpr std::string_view kWireframe = "the wireframe display";
-constexpr std::string_view kAdaptive = "adaptive supersampling";
 constexpr std::string_view kOctreeDebug = "octree debugging";
 
 // -S: the law and its slope m (1 for the Phong laws, which do not use it); the Gaussian normaliser
@@ -159,7 +157,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Warn lights: Rogers",
      .details = "With shadow feeling, the feeler's intensity is attenuated by pow(cos(x), N), x "
                 "the angle to the emissive polygon's normal.", .section = "App.", .example = "-Wr"},
-    {.spelling = "-Wc", .form = NumberGluedOrSeparate, .group = Exclusive::WarnLight,
+    {.spelling = "-Wc", .form = Number, .group = Exclusive::WarnLight,
      .topic = Lights, .first = {"the angle", kAngle},
      .apply = [](Options& o, A a) { o.shading.warn = {WarnMode::Conical, a.first, 0.0}; },
      .summary = "Warn lights: conical; # is angle in radians",
@@ -403,7 +401,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "hit something (there should be none); prints the statistics at the end of the "
                 "run, as -p does.", .section = "App.",
      .example = "-de"},
-    {.spelling = "--output", .form = SeparateText, .topic = Program, .first = {"FILE", {}},
+    {.spelling = "--output", .form = Text, .topic = Program, .first = {"FILE", {}},
      .repeatable = true, .apply = [](Options& o, A a) { o.outputs.push_back(a.text); },
      .summary = "Also write the picture to FILE (.gro, .png or .ppm)",
      .details = "Repeatable; the format follows the extension.", .section = "new",
@@ -413,15 +411,15 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "--version", .topic = Program,
      .apply = [](Options& o, A) { o.show_version = true; }, .summary = "Print the version and stop",
      .section = "new", .example = "--version"},
-    {.spelling = "--seed", .form = SeparateInteger, .topic = Program, .first = {"N", kNonNegative},
+    {.spelling = "--seed", .form = Integer, .topic = Program, .first = {"N", kNonNegative},
      .apply = [](Options& o, A a) { o.shading.sampling.seed = static_cast<std::uint64_t>(a.integer); },
      .summary = "Seed of the random numbers (the same seed, the same picture)", .section = "new",
      .example = "--seed 7"},
-    {.spelling = "--threads", .form = SeparateInteger, .topic = Program,
+    {.spelling = "--threads", .form = Integer, .topic = Program,
      .first = {"N", whole(0, 1024)},
      .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
      .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2"},
-    {.spelling = "--accel", .form = SeparateText, .topic = SpatialEncoding,
+    {.spelling = "--accel", .form = Text, .topic = SpatialEncoding,
      .first = {"NAME", {}}, .apply = [](Options& o, A a) { o.accel = a.text; },
      .summary = "Intersection method: brute, octree, seads, bvh or embree",
      .details = "Overrides the third and fourth numbers of the scene header. When the header "
@@ -440,7 +438,6 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "--quiet"},
 });
 #pragma GCC diagnostic pop
-// clang-format on
 // clang-format on
 
 std::string format_bound(double value) {

@@ -11,15 +11,15 @@
 
 namespace rt {
 
-/// How a switch takes its argument.
+/// How a switch takes its argument. A short switch's argument may be attached ("-m2.0",
+/// "-A40.0,1.0") or follow after a space ("-Wc 0.7", "-L 250"); a long option's follows after a
+/// space ("--threads 2").
 enum class ArgForm {
-    None,                   ///< "-Dd"
-    Number,                 ///< glued: "-m2.0"
-    NumberGluedOrSeparate,  ///< "-Wc0.7" or "-Wc 0.7"
-    Pair,                   ///< glued, two numbers and a comma: "-A40.0,1.0"
-    Integer,                ///< glued or separate: "-L250" or "-L 250"
-    SeparateText,           ///< long option and a value: "--output FILE"
-    SeparateInteger,        ///< long option and a whole number: "--threads N"
+    None,     ///< "-Dd"
+    Number,   ///< "-m2.0"
+    Pair,     ///< two numbers and a comma: "-A40.0,1.0"
+    Integer,  ///< "-L250", "--threads 2"
+    Text,     ///< "--output FILE"
 };
 
 /// Switches of one group exclude one another (the manual's "only one -S switch").
@@ -65,10 +65,10 @@ struct Operand {
 
 /// A switch's argument once read and checked; which members are set depends on the ArgForm.
 struct SwitchArgument {
-    double first = 0.0;        ///< Number, NumberGluedOrSeparate, first of a Pair
+    double first = 0.0;        ///< Number, first of a Pair
     double second = 0.0;       ///< second of a Pair
-    std::int64_t integer = 0;  ///< Integer, SeparateInteger
-    std::string text;          ///< SeparateText
+    std::int64_t integer = 0;  ///< Integer
+    std::string text;          ///< Text
 };
 
 struct SwitchSpec {
