@@ -120,8 +120,10 @@ TEST(Octree, RunningOutOfOctlistIsTheSameErrorOnAnyThreadCount) {
         try {
             build_octree_depth_first(scene, settings);
             ADD_FAILURE() << "no error for -ol " << power - 1 << " on " << threads << " threads";
-        } catch (const UsageError& e) {
-            EXPECT_NE(std::string(e.what()).find("-ol"), std::string::npos) << e.what();
+        } catch (const SettingError& e) {
+            EXPECT_EQ(e.setting(), "octree node limit");
+            EXPECT_NE(std::string(e.what()).find("raise the octree node limit"), std::string::npos)
+                << e.what();
         }
     }
 }
@@ -150,8 +152,10 @@ TEST(Octree, RunningOutOfOctlistIsAClearError) {
         try {
             Octree accel(scene, settings);
             ADD_FAILURE() << "no error for -ol " << power - 1;
-        } catch (const UsageError& e) {
-            EXPECT_NE(std::string(e.what()).find("-ol"), std::string::npos) << e.what();
+        } catch (const SettingError& e) {
+            EXPECT_EQ(e.setting(), "octree node limit");
+            EXPECT_NE(std::string(e.what()).find("raise the octree node limit"), std::string::npos)
+                << e.what();
         }
     }
 }

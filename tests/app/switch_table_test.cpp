@@ -329,3 +329,21 @@ TEST(SwitchTable, EachRowSetsItsField) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+// The library names its settings; the program says which switch sets each.
+TEST(SwitchTable, NamesTheSwitchesOfASettingError) {
+    EXPECT_EQ(name_the_switches("raise the octree node limit, now 2^3, or lower the octree depth"),
+              "raise the octree node limit (-ol), now 2^3, or lower the octree depth (-od)");
+    EXPECT_EQ(name_the_switches("the microfacet slope m of Torrance-Sparrow must be positive"),
+              "the microfacet slope m (-Stg or -Stb) of Torrance-Sparrow must be positive");
+    EXPECT_EQ(name_the_switches("use fewer SEADS voxels a side"),
+              "use fewer SEADS voxels a side (the scene header's third number, or --accel "
+              "seads)");
+    EXPECT_EQ(name_the_switches("nothing to name"), "nothing to name");
+}
+
+}  // namespace
+}  // namespace rt

@@ -87,6 +87,11 @@ int main(int argc, char** argv) {
     } catch (const rt::InputError& e) {
         print_line(e.what());
         return kBadInput;
+    } catch (const rt::SettingError& e) {
+        // The library names settings; say which switch sets each.
+        print_line("rt: " + rt::name_the_switches(e.what()));
+        print_line("rt: run 'rt --help' for the list of switches");
+        return kUsage;
     } catch (const rt::UsageError& e) {
         print_line(std::string("rt: ") + e.what());
         print_line("rt: run 'rt --help' for the list of switches");

@@ -20,12 +20,12 @@ enum class EarlyVersion { None, OldIllumination, OldVersion };
 
 struct Options {
     // --- what to read (manual 2.2 to 2.5) ---------------------------------------------------
-    std::string scene;             ///< the SCENE argument, with or without .scn
-    ReaderDialect dialect;         ///< -Df -Dp -Of -Po -Pt -M -R -V
-    bool trace_parsing = false;    ///< -df
+    std::string scene;           ///< the SCENE argument, with or without .scn
+    ReaderDialect dialect;       ///< -Df -Dp -Of -Po -Pt -M -R -V
+    bool trace_parsing = false;  ///< -df
 
     // --- shading and sampling ---------------------------------------------------------------
-    ShadingSettings shading;  ///< -A -T -D. -Po -S -C -W -F -X -I -Ot, --seed
+    ShadingSettings shading;                  ///< -A -T -D. -Po -S -C -W -F -X -I -Ot, --seed
     EarlyVersion early = EarlyVersion::None;  ///< -Oi -O1
     std::optional<double> crease_angle;       ///< -E (radians): sharp breaks in smooth shading
     bool scale_weights = false;               ///< -K

@@ -3,10 +3,14 @@
 // later release is one word: Status::NotYet becomes Status::Implemented.
 #include "rt/app/switch_table.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace rt {
 
@@ -73,7 +77,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A a) { o.octree_depth = static_cast<int>(a.integer); },
      .summary = "Specify octree depth (overrides scene file)",
      .details = "For studying the effects of different octree depths.", .section = "App.",
-     .example = "-od5"},
+     .example = "-od5", .setting = "octree depth"},
     {.spelling = "-oo", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.draw_octree = true; },
      .summary = "Draw (output) octree boxes on the wireframe",
@@ -85,7 +89,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Specify the length of the octlist, as a power of 2",
      .details = "The octree may use at most 2^n nodes (default 2^24, 8 bytes each); a tree that "
                 "needs more stops with an error naming -ol.",
-     .section = "App.", .example = "-ol16"},
+     .section = "App.", .example = "-ol16", .setting = "octree node limit"},
     {.spelling = "-on", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.accept_near_hits = true; },
      .summary = "Don't verify near hits (just accept them)",
@@ -111,7 +115,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Specify the seeds size as a power of 2",
      .details = "The octree's node pool starts at 2^n nodes (default 2^12) and doubles as "
                 "needed up to the -ol limit; the tree is the same.", .section = "App.",
-     .example = "-ss10"},
+     .example = "-ss10", .setting = "octree seed size"},
     {.spelling = "-p", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.profile = true; },
      .summary = "Profile ddda operation.",
      .details = "Prints, at the end of the run on standard output, per kind of ray (eye, reflected, "
@@ -138,7 +142,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      },
      .summary = "Torrance-Sparrow with Gaussian dist.; the # is m",
      .details = "m is the root mean square slope of the microfacets.", .section = "App.",
-     .example = "-Stg1.0"},
+     .example = "-Stg1.0", .setting = "microfacet slope m"},
     {.spelling = "-Stb", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
      .first = {"m", kPositive},
      .apply = [](Options& o, A a) {
@@ -146,7 +150,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      },
      .summary = "Torrance-Sparrow with Beckmann dist.; the # is m",
      .details = "m is the root mean square slope of the microfacets.", .section = "App.",
-     .example = "-Stb1.0"},
+     .example = "-Stb1.0", .setting = "microfacet slope m"},
     {.spelling = "-R", .topic = FileFormat,
      .apply = [](Options& o, A) { o.dialect.rgb_refraction = true; },
      .summary = "Each attribute in .scn file has 3 (RGB) indices of refraction",
@@ -470,6 +474,38 @@ std::string Range::describe() const {
 
 std::span<const SwitchSpec> switch_table() {
     return kSwitches;
+}
+
+std::string name_the_switches(const std::string& message) {
+    // Settings a program can only set in the scene file.
+    constexpr std::array<std::pair<std::string_view, std::string_view>, 1> kInScene{
+        {{"SEADS voxels a side", "the scene header's third number, or --accel seads"}}};
+    std::string text = message;
+    const auto name = [&](std::string_view setting, const std::string& by) {
+        const std::size_t at = text.find(setting);
+        if (at != std::string::npos) {
+            text.insert(at + setting.size(), " (" + by + ")");
+        }
+    };
+    std::vector<std::string_view> done;
+    for (const SwitchSpec& spec : kSwitches) {
+        if (spec.setting.empty() ||
+            std::find(done.begin(), done.end(), spec.setting) != done.end()) {
+            continue;
+        }
+        done.push_back(spec.setting);
+        std::string by;
+        for (const SwitchSpec& other : kSwitches) {
+            if (other.setting == spec.setting) {
+                by += (by.empty() ? "" : " or ") + std::string(other.spelling);
+            }
+        }
+        name(spec.setting, by);
+    }
+    for (const auto& [setting, by] : kInScene) {
+        name(setting, std::string(by));
+    }
+    return text;
 }
 
 std::string_view topic_title(Topic topic) {

@@ -88,12 +88,19 @@ struct SwitchSpec {
     std::string_view example;  ///< an argument as a user types it: "-Stg1.0", "-Wc 0.7"
     Status status = Status::Implemented;
     std::string_view feature;  ///< what is missing when NotYet: "texture mapping"
+    /// The library's name for the setting the switch sets, as its SettingErrors say it
+    /// ("octree node limit"), or empty.
+    std::string_view setting;
 
     bool is_long_option() const { return spelling.starts_with("--"); }
 };
 
 /// Every switch, in the Appendix's order, then the long options.
 std::span<const SwitchSpec> switch_table();
+
+/// A SettingError's message with the switches that set each named setting put after its name:
+/// "raise the octree node limit (-ol) or lower the octree depth (-od)".
+std::string name_the_switches(const std::string& message);
 
 /// The heading of a topic: "Specular reflection models (-S, one only)".
 std::string_view topic_title(Topic topic);

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rt {
 
@@ -42,6 +43,19 @@ InputError expected_found(const SourceLocation& where, const std::string& expect
 class UsageError : public Error {
 public:
     using Error::Error;
+};
+
+/// A setting the library cannot honour: outside its range, or too big to build. The message names
+/// the setting in the library's words ("the octree node limit"), and setting() gives that name,
+/// so that a program can say which of its switches set it (the library knows no switches).
+class SettingError : public UsageError {
+public:
+    SettingError(std::string setting, const std::string& message)
+        : UsageError(message), setting_(std::move(setting)) {}
+    const std::string& setting() const { return setting_; }
+
+private:
+    std::string setting_;
 };
 
 /// A switch or feature that is recognised but not implemented yet; never silently ignored.

@@ -41,9 +41,9 @@ struct ShadingSettings {
     bool smooth_shaded_opaque = false;         ///< -Po: smooth-shaded polygons are opaque
     double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
     SamplingSettings sampling;
-    FuzzyFeelers fuzzy;                    ///< -F
-    SpecularSettings specular;             ///< -S and -C: the highlight's law and colour
-    WarnSettings warn;                     ///< -Wr -Wc -Wt
+    FuzzyFeelers fuzzy;             ///< -F
+    SpecularSettings specular;      ///< -S and -C: the highlight's law and colour
+    WarnSettings warn;              ///< -Wr -Wc -Wt
     bool correct_smoothing = true;  ///< off with -Ot: smoothed normals may face away from the ray
     bool share_light_among_points = true;  ///< off with -Oi: every point source at full power
 

@@ -57,8 +57,10 @@ SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, Highlig
     SpecularSettings settings{law, slope_m, tint, 0.0};
     if (is_torrance_sparrow(law)) {
         if (!(slope_m > 0.0) || !std::isfinite(slope_m)) {
-            throw UsageError("Torrance-Sparrow rms slope m must be positive, not " +
-                             std::to_string(slope_m));
+            throw SettingError("microfacet slope m",
+                               "the microfacet slope m of Torrance-Sparrow must be positive and "
+                               "finite, not " +
+                                   std::to_string(slope_m));
         }
         settings.gaussian_normaliser = gaussian_normaliser(slope_m);
     }

@@ -165,7 +165,9 @@ OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSetting
         }
         fill_state.check_node_count(nodes);
         if (references >= OctreeNode::kInterior) {
-            throw UsageError("the octree holds more than 2^32 polygon references: lower the depth");
+            throw SettingError("octree depth",
+                               "the octree holds more than 2^32 polygon references: lower the "
+                               "octree depth");
         }
         tree.nodes.clear();
         tree.nodes.shrink_to_fit();

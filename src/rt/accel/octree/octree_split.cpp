@@ -32,12 +32,15 @@ OctreeCell OctreeCell::child(int c) const {
 
 OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) : scene_(scene) {
     if (settings.depth < 0 || settings.depth > kMaxOctreeDepth) {
-        throw UsageError("octree depth " + std::to_string(settings.depth) + ": expected 0 to " +
-                         std::to_string(kMaxOctreeDepth));
+        throw SettingError("octree depth", "the octree depth " + std::to_string(settings.depth) +
+                                               ": expected 0 to " +
+                                               std::to_string(kMaxOctreeDepth));
     }
     octlist_power_ = settings.octlist_power.value_or(kDefaultOctlistPower);
     if (octlist_power_ < 0 || octlist_power_ > 31) {
-        throw UsageError("-ol " + std::to_string(octlist_power_) + ": expected 0 to 31");
+        throw SettingError("octree node limit", "the octree node limit 2^" +
+                                                    std::to_string(octlist_power_) +
+                                                    ": expected a power from 0 to 31");
     }
     max_nodes_ = pool_limit(octlist_power_);
     const int seed =
@@ -49,8 +52,9 @@ OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) 
     try {
         tree_.nodes.reserve(pool_limit(seed));
     } catch (const std::bad_alloc&) {
-        throw UsageError("-ss " + std::to_string(seed) + ": cannot allocate 2^" +
-                         std::to_string(seed) + " octree nodes at once; lower -ss");
+        throw SettingError("octree seed size", "cannot allocate 2^" + std::to_string(seed) +
+                                                   " octree nodes at once: lower the octree "
+                                                   "seed size");
     }
     tree_.nodes.emplace_back();
     fudge_ = voxel_fudge(tree_.world, settings.no_fudge);
@@ -68,10 +72,12 @@ std::vector<std::uint32_t> OctreeFill::all_polygons() const {
 
 void OctreeFill::check_node_count(std::size_t nodes) const {
     if (nodes > max_nodes_) {
-        throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
-                         " needs more than 2^" + std::to_string(octlist_power_) + " = " +
-                         std::to_string(max_nodes_) + " nodes: raise -ol (now " +
-                         std::to_string(octlist_power_) + ") or lower the depth (-od)");
+        throw SettingError("octree node limit",
+                           "the octree of depth " + std::to_string(tree_.depth) +
+                               " needs more than 2^" + std::to_string(octlist_power_) + " = " +
+                               std::to_string(max_nodes_) +
+                               " nodes: raise the octree node limit, now 2^" +
+                               std::to_string(octlist_power_) + ", or lower the octree depth");
     }
 }
 
@@ -81,10 +87,11 @@ std::uint32_t OctreeFill::allocate_children(OctreeTree& tree) const {
     try {
         tree.nodes.resize(tree.nodes.size() + 8);
     } catch (const std::bad_alloc&) {
-        throw UsageError("the octree of depth " + std::to_string(tree_.depth) +
-                         " ran out of memory at " + std::to_string(tree.nodes.size()) +
-                         " nodes: lower -ol (now " + std::to_string(octlist_power_) +
-                         ") or the depth (-od)");
+        throw SettingError("octree node limit",
+                           "the octree of depth " + std::to_string(tree_.depth) +
+                               " ran out of memory at " + std::to_string(tree.nodes.size()) +
+                               " nodes: lower the octree node limit, now 2^" +
+                               std::to_string(octlist_power_) + ", or the octree depth");
     }
     return first;
 }
@@ -92,7 +99,9 @@ std::uint32_t OctreeFill::allocate_children(OctreeTree& tree) const {
 void OctreeFill::make_leaf(OctreeTree& tree, std::uint32_t index,
                            const std::vector<std::uint32_t>& polygons) const {
     if (tree.polygons.size() + polygons.size() >= OctreeNode::kInterior) {
-        throw UsageError("the octree holds more than 2^32 polygon references: lower the depth");
+        throw SettingError("octree depth",
+                           "the octree holds more than 2^32 polygon references: lower the "
+                           "octree depth");
     }
     tree.nodes[index] = {static_cast<std::uint32_t>(tree.polygons.size()),
                          static_cast<std::uint32_t>(polygons.size())};

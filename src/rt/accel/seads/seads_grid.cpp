@@ -17,14 +17,16 @@ namespace {
 
 void check_side(int side) {
     if (side < 1) {
-        throw UsageError("SEADS needs at least 1 voxel a side, not " + std::to_string(side));
+        throw SettingError("SEADS voxels a side",
+                           "SEADS needs at least 1 voxel a side, not " + std::to_string(side));
     }
     const auto n = static_cast<std::uint64_t>(side);
     if (n > 1024 || n * n * n > kMaxSeadsVoxels) {
-        throw UsageError("SEADS with " + std::to_string(side) + " voxels a side would need " +
-                         std::to_string(n * n * n) + " voxels; at most " +
-                         std::to_string(kMaxSeadsVoxels) +
-                         " are built (322 a side): lower the scene header's first number");
+        throw SettingError("SEADS voxels a side",
+                           "SEADS with " + std::to_string(side) + " voxels a side would need " +
+                               std::to_string(n * n * n) + " voxels; at most " +
+                               std::to_string(kMaxSeadsVoxels) +
+                               " are built (322 a side): use fewer SEADS voxels a side");
     }
 }
 
@@ -190,7 +192,9 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
         file_polygon(scene, grid, fudge, id, pairs);
     }
     if (pairs.size() >= std::numeric_limits<std::uint32_t>::max()) {
-        throw UsageError("SEADS: more than 2^32 polygon references; use fewer voxels a side");
+        throw SettingError("SEADS voxels a side",
+                           "SEADS: more than 2^32 polygon references: use fewer SEADS voxels a "
+                           "side");
     }
 
     // Counts, then running ends; filling backwards moves each end down to its voxel's start.
