@@ -4,15 +4,11 @@
 #include <chrono>
 #include <ctime>
 
-#include "rt/accel/brute_force.h"
-#include "rt/accel/make_accelerator.h"
 #include "rt/app/accelerator_stack.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
-#include "rt/core/error.h"
-#include "rt/core/text.h"
 #include "rt/image/display_mapping.h"
 #include "rt/image/image_writer.h"
 #include "rt/render/random_rays.h"
