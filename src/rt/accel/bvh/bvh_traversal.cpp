@@ -42,11 +42,11 @@ std::optional<double> exact_hit(const RaySpace& space, const Scene& scene,
     return intersect_polygon(space, scene, id, t);
 }
 
-// The nearest hit so far, with brute force's rule: smaller t wins, equal t the lower id. The ray's
-// exact RaySpace is prepared on the first exact test: most rays never need one.
+// The nearest hit so far, in brute force's order (hit.h). The ray's exact RaySpace is prepared on
+// the first exact test: most rays never need one.
 class NearestHit {
 public:
-    NearestHit(const Ray& ray, Interval t) : ray_(ray), t_(t) {}
+    NearestHit(const Ray& ray, Interval t) : ray_(ray), best_(t) {}
     void offer(const Scene& scene, std::uint32_t id, TraceCounters& counters) {
         offer(scene, nullptr, 0, id, counters);
     }
@@ -57,26 +57,22 @@ public:
         if (!space_) {
             space_.emplace(ray_);
         }
-        // t <= the best t still comes back, so an equal-t polygon of lower id can win.
-        const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
+        const Interval search = best_.search_interval();
         const std::optional<double> hit = packet != nullptr
                                               ? exact_hit(*space_, scene, *packet, lane, id, search)
                                               : intersect_polygon(*space_, scene, id, search);
         if (hit) {
-            if (!best_ || *hit < best_->t || id < best_->polygon) {
-                best_ = Hit{*hit, id};
-            }
+            best_.offer(*hit, id);
         }
     }
-    const std::optional<Hit>& best() const { return best_; }
+    const std::optional<Hit>& best() const { return best_.best(); }
     /// The largest t a box must reach to matter, inclusive.
-    double reach() const { return best_ ? best_->t : t_.max; }
+    double reach() const { return best_.reach(); }
 
 private:
     const Ray& ray_;
-    Interval t_;
     std::optional<RaySpace> space_;
-    std::optional<Hit> best_;
+    ClosestHitSoFar best_;
 };
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
