@@ -88,7 +88,7 @@ __attribute__((target("avx2"))) inline __m256 load_pair(const bvh::TrianglePacke
 // packet_candidates of two consecutive packets at once, lane for lane the same operations in the
 // same order (no FMA: target "avx2" alone does not allow contraction). Bits 4-7: the second.
 __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePacket* packet,
-                                                         const bvh::FloatRay& ray) {
+                                                         const FloatRay& ray) {
     const __m256 ox = _mm256_set1_ps(ray.origin[ray.kx]);
     const __m256 oy = _mm256_set1_ps(ray.origin[ray.ky]);
     const __m256 oz = _mm256_set1_ps(ray.origin[ray.kz]);
@@ -111,9 +111,8 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
     const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
     const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
     const __m256 margin = _mm256_add_ps(
-        _mm256_mul_ps(size,
-                      _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
-                                    _mm256_mul_ps(size, _mm256_set1_ps(bvh::kRelativeSlack)))),
+        _mm256_mul_ps(size, _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
+                                          _mm256_mul_ps(size, _mm256_set1_ps(kRelativeSlack)))),
         _mm256_set1_ps(ray.edge_margin_constant));
     const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
     const __m256 all_positive =
@@ -132,7 +131,7 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
 // returns true. With AVX2, two packets at a time.
 template <bool kAvx2, class Visit>
 [[gnu::always_inline]] inline bool for_each_candidate(
-    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const bvh::FloatRay& ray,
+    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const FloatRay& ray,
     Visit visit) {
     std::uint32_t previous = ~0u;
     for (std::uint32_t index = leaf & ~kLeafBit;;) {
@@ -252,7 +251,7 @@ __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& n
         entry = _mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(near_side, inverse), margin), entry);
         exit = _mm256_min_ps(_mm256_add_ps(_mm256_mul_ps(far_side, inverse), margin), exit);
     }
-    const __m256 slack = _mm256_set1_ps(bvh::kRelativeSlack);
+    const __m256 slack = _mm256_set1_ps(kRelativeSlack);
     const __m256 sign = _mm256_set1_ps(-0.0f);
     entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
     exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
@@ -285,7 +284,7 @@ template <bool kAvx2>
 // the loop (a call into an AVX2 function from plain code cannot be inlined).
 template <bool kAvx2>
 [[gnu::always_inline]] inline void nearest_in_tree(const bvh::Hierarchy& tree, const Scene& scene,
-                                                   const bvh::FloatRay& fray, Interval t,
+                                                   const FloatRay& fray, Interval t,
                                                    NearestHit& nearest, TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
     const float t_min = fray.scaled_down(t.min);
@@ -328,8 +327,8 @@ template <bool kAvx2>
 #ifdef RT_BVH_AVX2
 __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hierarchy& tree,
                                                                    const Scene& scene,
-                                                                   const bvh::FloatRay& fray,
-                                                                   Interval t, NearestHit& nearest,
+                                                                   const FloatRay& fray, Interval t,
+                                                                   NearestHit& nearest,
                                                                    TraceCounters& counters) {
     nearest_in_tree<true>(tree, scene, fray, t, nearest, counters);
 }
@@ -337,9 +336,8 @@ __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hi
 
 // Depth first through the tree until a candidate blocks; compiled twice, as nearest_in_tree is.
 template <bool kAvx2, class Blocks>
-[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree,
-                                                   const bvh::FloatRay& fray, Interval t,
-                                                   const Blocks& blocks_lane,
+[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree, const FloatRay& fray,
+                                                   Interval t, const Blocks& blocks_lane,
                                                    TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
     const float t_min = fray.scaled_down(t.min);
@@ -369,8 +367,7 @@ template <bool kAvx2, class Blocks>
 #ifdef RT_BVH_AVX2
 template <class Blocks>
 __attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hierarchy& tree,
-                                                                   const bvh::FloatRay& fray,
-                                                                   Interval t,
+                                                                   const FloatRay& fray, Interval t,
                                                                    const Blocks& blocks_lane,
                                                                    TraceCounters& counters) {
     return any_hit_in_tree<true>(tree, fray, t, blocks_lane, counters);
@@ -382,7 +379,7 @@ __attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hi
 std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     // A usable FloatRay has a finite origin and a finite nonzero direction, so RaySpace would be
     // valid too; an unusable one falls back to testing every polygon (an invalid ray misses all).
-    const bvh::FloatRay fray(ray, tree_.scale);
+    const FloatRay fray(ray, tree_.scale);
     NearestHit nearest(ray, t);
     if (!fray.usable) {
         if (RaySpace(ray).valid()) {
@@ -409,7 +406,7 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const bvh::FloatRay fray(ray, tree_.scale);
+    const FloatRay fray(ray, tree_.scale);
     std::optional<RaySpace> space;  // prepared on the first exact test, as in closest_hit
     const auto blocks = [&](std::uint32_t id) {
         ++counters.polygon_tests;
