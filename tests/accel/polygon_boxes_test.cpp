@@ -7,6 +7,7 @@
 #include <random>
 
 #include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/accel/float_prefilter/triangle_prefilter.h"
 #include "rt/geometry/ray_polygon.h"
 
 #include <gtest/gtest.h>
@@ -99,7 +100,7 @@ TEST(TriangleLook, GivesThePacketTestsAnswer) {
     int candidates = 0;
     for (int i = 0; i < 20000; ++i) {
         const Ray ray = random_ray(rng);
-        const bvh::FloatRay float_ray(ray, boxes.scale());
+        const FloatRay float_ray(ray, boxes.scale());
         ASSERT_TRUE(float_ray.usable);
         bvh::TrianglePacket packet{};
         float corners[4][9];
@@ -115,7 +116,7 @@ TEST(TriangleLook, GivesThePacketTestsAnswer) {
         }
         const int bits = bvh::packet_candidates(packet, float_ray);
         for (int lane = 0; lane < 4; ++lane) {
-            const bool one = bvh::triangle_candidate(corners[lane], float_ray);
+            const bool one = triangle_candidate(corners[lane], float_ray);
             ASSERT_EQ(one, ((bits >> lane) & 1) != 0) << "case " << i << " lane " << lane;
             candidates += one ? 1 : 0;
         }

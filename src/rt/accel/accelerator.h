@@ -8,15 +8,11 @@
 #include <optional>
 #include <string_view>
 
+#include "rt/accel/hit.h"
 #include "rt/geometry/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
-
-struct Hit {
-    double t = 0.0;
-    std::uint32_t polygon = 0;
-};
 
 /// Per-thread counters; summed at the end of a run (-p prints them).
 struct TraceCounters {

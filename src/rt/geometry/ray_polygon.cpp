@@ -37,7 +37,7 @@
 //      then both ranges still hold a t of the line within that distance of the polygon. So the
 //      two overlap, up to that distance, and the hit lies where the line is in the corner box
 //      (an accelerator can cull a box by where the line enters and leaves it) and within the
-//      corners' depths (the reach bounds in accel/reach rely on that).
+//      corners' depths (the hit-region bounds in accel/hit_regions rely on that).
 //
 // 5. So every polygon is asked the same question, exactly: does it contain the one displaced point
 //    P? P lies on no edge and no corner, so of the polygons whose projections meet around a shared
@@ -184,7 +184,8 @@ std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uin
     corner_depths(space, count, corner_at, nearest, farthest);
     // Into the span where the line is inside the corner box, then into the corners' depths: the
     // span keeps the hit where a box-culling accelerator looks for it, the depths keep it where
-    // the reach bounds (accel/reach) expect it. The two overlap up to the margin (see 4 above).
+    // the hit-region bounds (accel/hit_regions) expect it. The two overlap up to the margin (see
+    // 4 above).
     double depth = std::isfinite(along) ? along : nearest;
     double span_lo = 0.0;
     double span_hi = 0.0;

@@ -2,11 +2,12 @@
 // line enters each, with the conservative margins of float_ray.cpp.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 #include "rt/accel/bvh/bvh_layout.h"
 #include "rt/accel/bvh/float4.h"
-#include "rt/accel/bvh/float_ray.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 
 namespace rt::bvh {
 
@@ -15,6 +16,9 @@ struct BoxRay {
     simd::Float4 origin[3]{};
     simd::Float4 inverse[3]{};
     simd::Float4 margin[3]{};
+    /// Where, from Node::lo[0] (or WideNode::lo[0], in pairs of four), the planes the ray enters
+    /// (leaves) through on each axis are: lo[k] for a positive direction component, hi[k] for a
+    /// negative one. Node stores lo[3][4] then hi[3][4].
     int near_plane[3]{};
     int far_plane[3]{};
 
@@ -24,8 +28,9 @@ struct BoxRay {
             origin[k] = Float4::broadcast(ray.origin[k]);
             inverse[k] = Float4::broadcast(ray.inverse[k]);
             margin[k] = Float4::broadcast(ray.slab_margin[k]);
-            near_plane[k] = ray.near_plane[k];
-            far_plane[k] = ray.far_plane[k];
+            const bool positive = !std::signbit(ray.inverse[k]);  // never 0: see FloatRay
+            near_plane[k] = positive ? 4 * k : 12 + 4 * k;
+            far_plane[k] = positive ? 12 + 4 * k : 4 * k;
         }
     }
 };

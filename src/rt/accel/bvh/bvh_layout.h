@@ -28,7 +28,7 @@ struct alignas(64) Node {
     std::uint32_t child[4];
 };
 static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float),
-              "FloatRay's plane offsets count on hi following lo");
+              "BoxRay's plane offsets count on hi following lo");
 
 /// 256 bytes on a 64-byte boundary: the node traversal reads, two levels of Node collapsed into
 /// up to eight children (collapse.cpp); the same conservative boxes, the same child words.

@@ -42,11 +42,11 @@ std::optional<double> exact_hit(const RaySpace& space, const Scene& scene,
     return intersect_polygon(space, scene, id, t);
 }
 
-// The nearest hit so far, with brute force's rule: smaller t wins, equal t the lower id. The ray's
-// exact RaySpace is prepared on the first exact test: most rays never need one.
+// The nearest hit so far, in brute force's order (hit.h). The ray's exact RaySpace is prepared on
+// the first exact test: most rays never need one.
 class NearestHit {
 public:
-    NearestHit(const Ray& ray, Interval t) : ray_(ray), t_(t) {}
+    NearestHit(const Ray& ray, Interval t) : ray_(ray), best_(t) {}
     void offer(const Scene& scene, std::uint32_t id, TraceCounters& counters) {
         offer(scene, nullptr, 0, id, counters);
     }
@@ -57,26 +57,22 @@ public:
         if (!space_) {
             space_.emplace(ray_);
         }
-        // t <= the best t still comes back, so an equal-t polygon of lower id can win.
-        const Interval search{t_.min, best_ ? std::nextafter(best_->t, HUGE_VAL) : t_.max};
+        const Interval search = best_.search_interval();
         const std::optional<double> hit = packet != nullptr
                                               ? exact_hit(*space_, scene, *packet, lane, id, search)
                                               : intersect_polygon(*space_, scene, id, search);
         if (hit) {
-            if (!best_ || *hit < best_->t || id < best_->polygon) {
-                best_ = Hit{*hit, id};
-            }
+            best_.offer(*hit, id);
         }
     }
-    const std::optional<Hit>& best() const { return best_; }
+    const std::optional<Hit>& best() const { return best_.best(); }
     /// The largest t a box must reach to matter, inclusive.
-    double reach() const { return best_ ? best_->t : t_.max; }
+    double reach() const { return best_.reach(); }
 
 private:
     const Ray& ray_;
-    Interval t_;
     std::optional<RaySpace> space_;
-    std::optional<Hit> best_;
+    ClosestHitSoFar best_;
 };
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
@@ -92,7 +88,7 @@ __attribute__((target("avx2"))) inline __m256 load_pair(const bvh::TrianglePacke
 // packet_candidates of two consecutive packets at once, lane for lane the same operations in the
 // same order (no FMA: target "avx2" alone does not allow contraction). Bits 4-7: the second.
 __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePacket* packet,
-                                                         const bvh::FloatRay& ray) {
+                                                         const FloatRay& ray) {
     const __m256 ox = _mm256_set1_ps(ray.origin[ray.kx]);
     const __m256 oy = _mm256_set1_ps(ray.origin[ray.ky]);
     const __m256 oz = _mm256_set1_ps(ray.origin[ray.kz]);
@@ -115,9 +111,8 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
     const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
     const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
     const __m256 margin = _mm256_add_ps(
-        _mm256_mul_ps(size,
-                      _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
-                                    _mm256_mul_ps(size, _mm256_set1_ps(bvh::kRelativeSlack)))),
+        _mm256_mul_ps(size, _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
+                                          _mm256_mul_ps(size, _mm256_set1_ps(kRelativeSlack)))),
         _mm256_set1_ps(ray.edge_margin_constant));
     const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
     const __m256 all_positive =
@@ -136,7 +131,7 @@ __attribute__((target("avx2"))) int pair_candidates_avx2(const bvh::TrianglePack
 // returns true. With AVX2, two packets at a time.
 template <bool kAvx2, class Visit>
 [[gnu::always_inline]] inline bool for_each_candidate(
-    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const bvh::FloatRay& ray,
+    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const FloatRay& ray,
     Visit visit) {
     std::uint32_t previous = ~0u;
     for (std::uint32_t index = leaf & ~kLeafBit;;) {
@@ -256,7 +251,7 @@ __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& n
         entry = _mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(near_side, inverse), margin), entry);
         exit = _mm256_min_ps(_mm256_add_ps(_mm256_mul_ps(far_side, inverse), margin), exit);
     }
-    const __m256 slack = _mm256_set1_ps(bvh::kRelativeSlack);
+    const __m256 slack = _mm256_set1_ps(kRelativeSlack);
     const __m256 sign = _mm256_set1_ps(-0.0f);
     entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
     exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
@@ -289,7 +284,7 @@ template <bool kAvx2>
 // the loop (a call into an AVX2 function from plain code cannot be inlined).
 template <bool kAvx2>
 [[gnu::always_inline]] inline void nearest_in_tree(const bvh::Hierarchy& tree, const Scene& scene,
-                                                   const bvh::FloatRay& fray, Interval t,
+                                                   const FloatRay& fray, Interval t,
                                                    NearestHit& nearest, TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
     const float t_min = fray.scaled_down(t.min);
@@ -332,8 +327,8 @@ template <bool kAvx2>
 #ifdef RT_BVH_AVX2
 __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hierarchy& tree,
                                                                    const Scene& scene,
-                                                                   const bvh::FloatRay& fray,
-                                                                   Interval t, NearestHit& nearest,
+                                                                   const FloatRay& fray, Interval t,
+                                                                   NearestHit& nearest,
                                                                    TraceCounters& counters) {
     nearest_in_tree<true>(tree, scene, fray, t, nearest, counters);
 }
@@ -341,9 +336,8 @@ __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hi
 
 // Depth first through the tree until a candidate blocks; compiled twice, as nearest_in_tree is.
 template <bool kAvx2, class Blocks>
-[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree,
-                                                   const bvh::FloatRay& fray, Interval t,
-                                                   const Blocks& blocks_lane,
+[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree, const FloatRay& fray,
+                                                   Interval t, const Blocks& blocks_lane,
                                                    TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
     const float t_min = fray.scaled_down(t.min);
@@ -373,8 +367,7 @@ template <bool kAvx2, class Blocks>
 #ifdef RT_BVH_AVX2
 template <class Blocks>
 __attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hierarchy& tree,
-                                                                   const bvh::FloatRay& fray,
-                                                                   Interval t,
+                                                                   const FloatRay& fray, Interval t,
                                                                    const Blocks& blocks_lane,
                                                                    TraceCounters& counters) {
     return any_hit_in_tree<true>(tree, fray, t, blocks_lane, counters);
@@ -386,7 +379,7 @@ __attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hi
 std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     // A usable FloatRay has a finite origin and a finite nonzero direction, so RaySpace would be
     // valid too; an unusable one falls back to testing every polygon (an invalid ray misses all).
-    const bvh::FloatRay fray(ray, tree_.scale);
+    const FloatRay fray(ray, tree_.scale);
     NearestHit nearest(ray, t);
     if (!fray.usable) {
         if (RaySpace(ray).valid()) {
@@ -413,7 +406,7 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const bvh::FloatRay fray(ray, tree_.scale);
+    const FloatRay fray(ray, tree_.scale);
     std::optional<RaySpace> space;  // prepared on the first exact test, as in closest_hit
     const auto blocks = [&](std::uint32_t id) {
         ++counters.polygon_tests;

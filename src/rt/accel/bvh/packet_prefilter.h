@@ -1,14 +1,11 @@
 // The float pre-filter of a packet of four fan triangles: it rejects a triangle only when the
-// ray certainly misses it (float_ray.cpp, part 3); the exact test decides every other one.
+// ray certainly misses it (float_prefilter/float_ray.cpp, part 3); the exact test decides every
+// other one. Lane for lane the operations of triangle_candidate (triangle_prefilter.h).
 #pragma once
-
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
 
 #include "rt/accel/bvh/bvh_layout.h"
 #include "rt/accel/bvh/float4.h"
-#include "rt/accel/bvh/float_ray.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 
 namespace rt::bvh {
 
@@ -40,32 +37,6 @@ inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) 
         (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);
     const simd::Mask4 all_negative = (e0 <= margin) & (e1 <= margin) & (e2 <= margin);
     return (all_positive | all_negative).bits();
-}
-
-/// One triangle, corners [vertex][axis] rounded to nearest, as packet_candidates tests a lane:
-/// false only when the ray certainly misses it. The voxel methods' form (voxel/polygon_boxes.h).
-inline bool triangle_candidate(const float* corner, const FloatRay& ray) {
-    const float ox = ray.origin[ray.kx];
-    const float oy = ray.origin[ray.ky];
-    const float oz = ray.origin[ray.kz];
-    float x[3];
-    float y[3];
-    float size = 0.0f;
-    for (int v = 0; v < 3; ++v) {
-        const float* c = corner + std::ptrdiff_t{3} * v;
-        const float az = c[ray.kz] - oz;
-        x[v] = (c[ray.kx] - ox) - ray.shear_x * az;
-        y[v] = (c[ray.ky] - oy) - ray.shear_y * az;
-        size = std::max(size, std::max(std::fabs(x[v]), std::fabs(y[v])));
-    }
-    const float e0 = x[1] * y[2] - y[1] * x[2];
-    const float e1 = x[2] * y[0] - y[2] * x[0];
-    const float e2 = x[0] * y[1] - y[0] * x[1];
-    const float margin =
-        size * (ray.edge_margin_linear + size * kRelativeSlack) + ray.edge_margin_constant;
-    const bool all_positive = e0 >= -margin && e1 >= -margin && e2 >= -margin;
-    const bool all_negative = e0 <= margin && e1 <= margin && e2 <= margin;
-    return all_positive || all_negative;
 }
 
 }  // namespace rt::bvh

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "rt/accel/reach/polygon_reach.h"
+#include "rt/accel/hit_regions/polygon_reach.h"
 
 namespace rt {
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "rt/accel/reach/axis_box.h"
+#include "rt/accel/hit_regions/axis_box.h"
 #include "rt/core/vec3.h"
 
 namespace rt {

@@ -1,15 +1,15 @@
 // Where hit points can be: a coarse grid over the world, and in each cell the box of every
-// polygon reach (reach/polygon_reach.h) that meets it, cut to the cell. Exit culling asks, from
-// each cell, which directions lead to one of these boxes; a tree over them lets it skip groups of
-// boxes whose directions it already has.
+// polygon reach (hit_regions/polygon_reach.h) that meets it, cut to the cell. Exit culling asks,
+// from each cell, which directions lead to one of these boxes; a tree over them lets it skip groups
+// of boxes whose directions it already has.
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "rt/accel/reach/axis_box.h"
-#include "rt/accel/reach/polygon_reach.h"
+#include "rt/accel/hit_regions/axis_box.h"
+#include "rt/accel/hit_regions/polygon_reach.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

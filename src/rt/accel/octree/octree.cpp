@@ -1,7 +1,7 @@
 #include "rt/accel/octree/octree.h"
 
 #include "rt/accel/octree/octree_ddda.h"
-#include "rt/accel/voxel/voxel_hit_search.h"
+#include "rt/accel/voxel/voxel_queries.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -28,52 +28,20 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
     add_leaf_bounds(scene, tree_);
 }
 
-// Both queries clip the ray to the world before anything else: a ray that misses it (about
-// half of random rays starting outside) then costs no ray-space or search setup. Invalid rays
-// answer "no hit" either way.
+VoxelSearchParts Octree::search_parts() const {
+    return {scene_, boxes_, tree_.world, tree_.bounds_slots, rules_};
+}
+
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const double slack = rounding_slack(ray, tree_.world, rules_);
-    Interval inside;
-    if (!clip_to_box(ray, tree_.world, walk_interval(t, slack), inside)) {
-        return std::nullopt;
-    }
-    const RaySpace space(ray);
-    if (!space.valid()) {
-        return std::nullopt;
-    }
-    NearestHitSearch search(scene_, boxes_, space, t, counters);
-    NearHitRule rule(rules_, slack);
-    walk_octree_inside(
-        tree_, ray, inside,
-        [&](std::span<const std::uint32_t> polygons, double t_exit, const OctreeLeafAt&) {
-            if (voxel_may_hold_hit(polygons, tree_.bounds_slots, search.line())) {
-                search.test(polygons);
-            }
-            return rule.ends_walk(search.nearest(), t_exit, counters);
-        });
-    return search.nearest();
+    return voxel_closest_hit(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
+        walk_octree_inside(tree_, ray, inside, visit);
+    });
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    Interval inside;
-    if (!clip_to_box(ray, tree_.world, walk_interval(t, rounding_slack(ray, tree_.world, rules_)),
-                     inside)) {
-        return false;
-    }
-    const RaySpace space(ray);
-    if (!space.valid()) {
-        return false;
-    }
-    AnyHitSearch search(scene_, boxes_, space, t, counters);
-    bool hit = false;
-    walk_octree_inside(tree_, ray, inside,
-                       [&](std::span<const std::uint32_t> polygons, double, const OctreeLeafAt&) {
-                           ++counters.voxels_stepped;
-                           hit = voxel_may_hold_hit(polygons, tree_.bounds_slots, search.line()) &&
-                                 search.test(polygons);
-                           return hit;
-                       });
-    return hit;
+    return voxel_occluded(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
+        walk_octree_inside(tree_, ray, inside, visit);
+    });
 }
 
 std::string Octree::describe_walk(const Ray& ray, Interval t) const {

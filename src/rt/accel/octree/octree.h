@@ -12,6 +12,8 @@
 
 namespace rt {
 
+struct VoxelSearchParts;
+
 class Octree : public Accelerator, public DescribesWalk {
 public:
     /// Keeps a reference to the scene, which must outlive it. Uses settings.octree_depth, -ol,
@@ -35,6 +37,8 @@ private:
     OctreeTree tree_;
     WalkRules rules_;
     PolygonBoxes boxes_;
+
+    VoxelSearchParts search_parts() const;
 };
 
 OctreeBuildSettings octree_build_settings(const AccelSettings& settings);

@@ -3,7 +3,7 @@
 #include <limits>
 
 #include "rt/accel/seads/seads_walk.h"
-#include "rt/accel/voxel/voxel_hit_search.h"
+#include "rt/accel/voxel/voxel_queries.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -23,54 +23,20 @@ EmptySpace Seads::empty_space() const {
                : EmptySpace::VisitEach;
 }
 
-// Both queries clip the ray to the world before anything else, as the octree does: a ray that
-// misses it (about half of random rays starting outside) then costs no further setup.
+VoxelSearchParts Seads::search_parts() const {
+    return {scene_, boxes_, grid_.world, grid_.bounds_slots, rules_};
+}
+
 std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const double slack = rounding_slack(ray, grid_.world, rules_);
-    Interval inside;
-    if (!clip_to_box(ray, grid_.world, walk_interval(t, slack), inside)) {
-        return std::nullopt;
-    }
-    const RaySpace space(ray);
-    if (!space.valid()) {
-        return std::nullopt;
-    }
-    NearestHitSearch search(scene_, boxes_, space, t, counters);
-    NearHitRule rule(rules_, slack);
-    walk_seads_inside(
-        grid_, ray, inside,
-        [&](std::span<const std::uint32_t> polygons, double t_exit, const int*) {
-            if (voxel_may_hold_hit(polygons, grid_.bounds_slots, search.line())) {
-                search.test(polygons);
-            }
-            return rule.ends_walk(search.nearest(), t_exit, counters);
-        },
-        empty_space());
-    return search.nearest();
+    return voxel_closest_hit(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
+        walk_seads_inside(grid_, ray, inside, visit, empty_space());
+    });
 }
 
 bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    Interval inside;
-    if (!clip_to_box(ray, grid_.world, walk_interval(t, rounding_slack(ray, grid_.world, rules_)),
-                     inside)) {
-        return false;
-    }
-    const RaySpace space(ray);
-    if (!space.valid()) {
-        return false;
-    }
-    AnyHitSearch search(scene_, boxes_, space, t, counters);
-    bool hit = false;
-    walk_seads_inside(
-        grid_, ray, inside,
-        [&](std::span<const std::uint32_t> polygons, double, const int*) {
-            ++counters.voxels_stepped;
-            hit = voxel_may_hold_hit(polygons, grid_.bounds_slots, search.line()) &&
-                  search.test(polygons);
-            return hit;
-        },
-        empty_space());
-    return hit;
+    return voxel_occluded(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
+        walk_seads_inside(grid_, ray, inside, visit, empty_space());
+    });
 }
 
 std::string Seads::describe_walk(const Ray& ray, Interval t) const {

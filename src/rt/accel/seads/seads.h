@@ -14,6 +14,8 @@
 
 namespace rt {
 
+struct VoxelSearchParts;
+
 class Seads : public Accelerator, public DescribesWalk {
 public:
     /// Keeps a reference to the scene, which must outlive it. Uses settings.seads_resolution
@@ -38,6 +40,7 @@ private:
     PolygonBoxes boxes_;
 
     EmptySpace empty_space() const;
+    VoxelSearchParts search_parts() const;
 };
 
 std::unique_ptr<Accelerator> make_seads(const Scene& scene, const AccelSettings& settings);

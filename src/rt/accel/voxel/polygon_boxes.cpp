@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/accel/float_prefilter/triangle_prefilter.h"
 
 namespace rt {
 
@@ -34,8 +34,8 @@ bool PolygonBoxes::triangle_may_be_hit(TriangleProbe& probe, std::uint32_t polyg
     if (std::isnan(corners[0])) {
         return true;
     }
-    const bvh::FloatRay& ray = probe.get();
-    return !ray.usable || bvh::triangle_candidate(corners, ray);
+    const FloatRay& ray = probe.get();
+    return !ray.usable || triangle_candidate(corners, ray);
 }
 
 LineProbe::LineProbe(const Ray& ray) : origin(ray.origin) {

@@ -5,11 +5,11 @@
 // rounding far below the growth), so the polygon is skipped without touching the scene's records.
 // It only ever skips polygons the exact test would miss: the answers stay brute force's.
 //
-// A triangle whose box the line meets gets a second look before the exact test: the BVH's float
-// edge test (bvh/packet_prefilter.h, argued in bvh/float_ray.cpp, part 3) on its corners stored
-// as floats, which rejects it only when the ray certainly misses it. On random triangle soups a
-// line meets about five boxes for each triangle it hits; this look skips most of those exact
-// tests, each a double-precision test reading three records of the scene.
+// A triangle whose box the line meets gets a second look before the exact test: the float edge
+// test the BVH also uses (float_prefilter/triangle_prefilter.h, argued in float_ray.cpp, part 3)
+// on its corners stored as floats, which rejects it only when the ray certainly misses it. On
+// random triangle soups a line meets about five boxes for each triangle it hits; this look skips
+// most of those exact tests, each a double-precision test reading three records of the scene.
 #pragma once
 
 #include <cmath>
@@ -22,7 +22,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "rt/accel/bvh/float_ray.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/accel/voxel/box.h"
 #include "rt/geometry/ray.h"
 
@@ -102,7 +102,7 @@ inline bool line_may_meet_box(const LineProbe& line, const float* b) {
 class TriangleProbe {
 public:
     TriangleProbe(const Ray& ray, double scene_scale) : ray_(ray), scene_scale_(scene_scale) {}
-    const bvh::FloatRay& get() {
+    const FloatRay& get() {
         if (!float_ray_) {
             float_ray_.emplace(ray_, scene_scale_);
         }
@@ -112,7 +112,7 @@ public:
 private:
     const Ray& ray_;
     double scene_scale_;
-    std::optional<bvh::FloatRay> float_ray_;
+    std::optional<FloatRay> float_ray_;
 };
 
 class PolygonBoxes {

@@ -1,7 +1,5 @@
 #include "rt/accel/voxel/voxel_hit_search.h"
 
-#include <cmath>
-
 namespace rt {
 
 void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
@@ -17,16 +15,10 @@ void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
             continue;
         }
         ++counters_.polygon_tests;
-        // Open at the top just above the nearest t so far: a polygon at exactly that t is still
-        // returned, and wins if its id is lower (polygons arrive in voxel order, not id order).
-        Interval within = t_;
-        if (nearest_) {
-            within.max = std::nextafter(nearest_->t, HUGE_VAL);
-        }
-        if (const std::optional<double> t = intersect_polygon(space_, scene_, id, within)) {
-            if (!nearest_ || *t < nearest_->t || id < nearest_->polygon) {
-                nearest_ = Hit{*t, id};
-            }
+        // Polygons arrive in voxel order, not id order: the tie rule picks among equal t.
+        if (const std::optional<double> t =
+                intersect_polygon(space_, scene_, id, nearest_.search_interval())) {
+            nearest_.offer(*t, id);
         }
     }
 }

@@ -50,8 +50,8 @@ inline bool voxel_may_hold_hit(std::span<const std::uint32_t> polygons, std::uin
            (bounds_slots == 0 || line_may_meet_box(line, bounds_before(polygons).data()));
 }
 
-/// The nearest hit over every polygon tested so far along one ray: nearest t strictly inside the
-/// interval, equal t to the lowest id (the same rule as brute force, so the same answer).
+/// The nearest hit over every polygon tested so far along one ray, in brute force's order
+/// (hit.h): the same rule as brute force, so the same answer.
 class NearestHitSearch {
 public:
     NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
@@ -61,11 +61,11 @@ public:
           line_(space.ray()),
           triangle_(space.ray(), boxes.scale()),
           space_(space),
-          t_(t),
+          nearest_(t),
           counters_(counters) {}
 
     void test(std::span<const std::uint32_t> polygons);
-    const std::optional<Hit>& nearest() const { return nearest_; }
+    const std::optional<Hit>& nearest() const { return nearest_.best(); }
     const LineProbe& line() const { return line_; }
 
 private:
@@ -74,10 +74,9 @@ private:
     LineProbe line_;
     TriangleProbe triangle_;
     const RaySpace& space_;
-    Interval t_;
+    ClosestHitSoFar nearest_;
     TraceCounters& counters_;
     TestedPolygons tested_;
-    std::optional<Hit> nearest_;
 };
 
 /// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).

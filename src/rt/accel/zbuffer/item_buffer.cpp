@@ -7,9 +7,9 @@
 // d, so Y is seen from the eye within angle_tolerance_ of O: on the screen, within
 // pixel_margin_ pixels of O's own pixel position.
 //
-// Y lies in the polygon's reach (reach/polygon_reach.h), computed for the smallest |cos| a line
-// through the polygon and (within eye_slack_) through the eye can make with it. The footprint is
-// the screen box of that reach's part at depth >= near_depth_, widened by pixel_margin_: so O's
+// Y lies in the polygon's reach (hit_regions/polygon_reach.h), computed for the smallest |cos| a
+// line through the polygon and (within eye_slack_) through the eye can make with it. The footprint
+// is the screen box of that reach's part at depth >= near_depth_, widened by pixel_margin_: so O's
 // pixel is in it. For a reach wholly in front of the near plane that part is the convex hull of
 // the corners each grown by the reach's box growth; for one crossing it, the reach's box cut by
 // the plane (its corners in front and its edges' crossings). A reach wholly behind is never hit.
@@ -22,7 +22,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "rt/accel/reach/polygon_reach.h"
+#include "rt/accel/hit_regions/polygon_reach.h"
 
 #include <fmt/format.h>
 

@@ -42,23 +42,22 @@ std::optional<Hit> ZBufferFirstHits::closest_hit(const Ray& ray, Interval t,
         return fallback_.closest_hit(ray, t, counters);
     }
     const double direction_length = length(ray.direction);
-    std::optional<Hit> nearest;
+    ClosestHitSoFar nearest(t);
     for (const std::uint32_t rank : buffer_.candidates(pixel->x, pixel->y)) {
         // Strictly beyond: a polygon that might still tie the best t could have a lower id.
-        if (nearest &&
-            lowest_t(buffer_.nearest(rank), pixel->from_eye, direction_length) > nearest->t) {
+        if (nearest.best() &&
+            lowest_t(buffer_.nearest(rank), pixel->from_eye, direction_length) > nearest.reach()) {
             break;
         }
         const std::uint32_t id = buffer_.polygon(rank);
         ++counters.polygon_tests;
         // The same t brute force computes: the interval only decides whether it counts.
-        const std::optional<double> hit = intersect_polygon(space, scene_, id, t);
-        if (hit &&
-            (!nearest || *hit < nearest->t || (*hit == nearest->t && id < nearest->polygon))) {
-            nearest = Hit{*hit, id};
+        if (const std::optional<double> hit =
+                intersect_polygon(space, scene_, id, nearest.search_interval())) {
+            nearest.offer(*hit, id);
         }
     }
-    return nearest;
+    return nearest.best();
 }
 
 bool ZBufferFirstHits::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {

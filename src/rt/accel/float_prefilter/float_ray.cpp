@@ -38,7 +38,7 @@
 //    double, and so would the exact test's displaced ray (which is within an infinitesimal of
 //    the origin): rejecting needs the float E's to have mixed signs beyond
 //    8 eps L + 2^-20 L^2 + 8 eps^2.
-#include "rt/accel/bvh/float_ray.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 
 #include <algorithm>
 #include <bit>
@@ -46,7 +46,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace rt::bvh {
+namespace rt {
 
 namespace {
 
@@ -116,10 +116,6 @@ FloatRay::FloatRay(const Ray& ray, double scene_scale) {
             inv[k] = std::copysign(kLargestInverse, scaled[k]);
         }
         inverse[k] = static_cast<float>(inv[k]);
-        // Node stores lo[3][4] then hi[3][4].
-        const bool positive = !std::signbit(inv[k]);
-        near_plane[k] = positive ? 4 * k : 12 + 4 * k;
-        far_plane[k] = positive ? 12 + 4 * k : 4 * k;
         slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
     }
 
@@ -147,4 +143,4 @@ float FloatRay::scaled_up(double t) const {
     return static_cast<double>(f) < x ? next_up(f) : f;
 }
 
-}  // namespace rt::bvh
+}  // namespace rt

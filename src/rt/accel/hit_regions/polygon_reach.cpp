@@ -13,7 +13,7 @@
 //   rho + 1e-6 * diameter of the plane.
 // A polygon with a zero or non-finite normal always takes the grazing branch with the nearest
 // corner's depth: |Y - X| <= diameter in any direction, and no slab.
-#include "rt/accel/reach/polygon_reach.h"
+#include "rt/accel/hit_regions/polygon_reach.h"
 
 #include <algorithm>
 #include <cmath>

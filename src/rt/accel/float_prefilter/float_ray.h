@@ -1,11 +1,12 @@
-// A ray prepared for the BVH's float tests, with the error bounds that make them conservative:
-// a box or a fan triangle is rejected only when the exact test (intersect_polygon, in double on
-// the untransformed ray) could not hit anything in it. The bounds are argued in float_ray.cpp.
+// A ray prepared for the float pre-filters, with the error bounds that make them conservative: a
+// box (the BVH's nodes) or a triangle (the BVH's packets, the voxel methods' triangle look) is
+// rejected only when the exact test (intersect_polygon, in double on the untransformed ray) could
+// not hit anything in it. The bounds are argued in float_ray.cpp.
 #pragma once
 
 #include "rt/geometry/ray.h"
 
-namespace rt::bvh {
+namespace rt {
 
 /// t in the float tests is t * scale_t (scale_t a power of two, making the largest direction
 /// component lie in [1, 2)).
@@ -17,12 +18,8 @@ struct FloatRay {
 
     // Box tests.
     float origin[3] = {};
-    float inverse[3] = {};      ///< 1 / scaled direction, clamped to +-2^60
+    float inverse[3] = {};      ///< 1 / scaled direction, clamped to +-2^60 (never 0)
     float slab_margin[3] = {};  ///< added to each axis's slab interval
-    /// Where, from Node::lo[0], the four planes a ray enters (leaves) through on each axis are:
-    /// lo[k] for a positive direction component, hi[k] for a negative one.
-    int near_plane[3] = {};
-    int far_plane[3] = {};
 
     // Triangle pre-filter, in the ray's sheared 2D space (as RaySpace, in float).
     int kx = 0;
@@ -43,4 +40,4 @@ struct FloatRay {
 /// The relative slack of every float bound (2^-20, sixteen times float's rounding unit).
 constexpr float kRelativeSlack = 0x1p-20f;
 
-}  // namespace rt::bvh
+}  // namespace rt

@@ -9,7 +9,7 @@
 
 #include <cstdint>
 
-#include "rt/accel/reach/axis_box.h"
+#include "rt/accel/hit_regions/axis_box.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

@@ -1,0 +1,91 @@
+// The closest-hit and occlusion queries of the octree and SEADS, written once: clip the ray to the
+// world, prepare it, then walk the structure's voxels nearest first, testing each voxel's polygons
+// (after its bounds, where it has them) until the near-hit rule ends the walk, or, for
+// occlusion, until any polygon is hit. The two methods differ only in their walk, which each
+// passes in; everything is a template, forced inline (as one function per method, the compiler
+// would not inline it on its own: some 45 instructions a ray more), so the walk and the tests
+// inline into one loop as they did when each method wrote the queries out.
+//
+// Both queries clip the ray to the world before anything else: a ray that misses it (about half
+// of random rays starting outside) then costs no ray-space or search setup. Invalid rays answer
+// "no hit" either way.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "rt/accel/accelerator.h"
+#include "rt/accel/voxel/box.h"
+#include "rt/accel/voxel/near_hit_rule.h"
+#include "rt/accel/voxel/polygon_boxes.h"
+#include "rt/accel/voxel/voxel_hit_search.h"
+#include "rt/geometry/ray_polygon.h"
+
+namespace rt {
+
+/// What the queries need of a voxel structure besides its walk.
+struct VoxelSearchParts {
+    const Scene& scene;
+    const PolygonBoxes& boxes;
+    const Box& world;
+    std::uint32_t bounds_slots = 0;  ///< in front of each voxel's ids (voxel_bounds.h), or 0
+    const WalkRules& rules;
+};
+
+// `walk(inside, visit)` calls visit(polygons, t_exit, where) for each voxel along the ray within
+// `inside` (the interval already clipped to the world), nearest first, until visit returns true:
+// walk_octree_inside or walk_seads_inside.
+
+/// The nearest hit, as brute force finds it (docs/accelerators.md, "Near hits and the fudge").
+template <class Walk>
+[[gnu::always_inline]] inline std::optional<Hit> voxel_closest_hit(const VoxelSearchParts& parts,
+                                                                   const Ray& ray, Interval t,
+                                                                   TraceCounters& counters,
+                                                                   Walk&& walk) {
+    const double slack = rounding_slack(ray, parts.world, parts.rules);
+    Interval inside;
+    if (!clip_to_box(ray, parts.world, walk_interval(t, slack), inside)) {
+        return std::nullopt;
+    }
+    const RaySpace space(ray);
+    if (!space.valid()) {
+        return std::nullopt;
+    }
+    NearestHitSearch search(parts.scene, parts.boxes, space, t, counters);
+    NearHitRule rule(parts.rules, slack);
+    walk(inside, [&](std::span<const std::uint32_t> polygons, double t_exit, const auto&) {
+        if (voxel_may_hold_hit(polygons, parts.bounds_slots, search.line())) {
+            search.test(polygons);
+        }
+        return rule.ends_walk(search.nearest(), t_exit, counters);
+    });
+    return search.nearest();
+}
+
+/// Whether any polygon is hit inside the interval; not subject to -tv.
+template <class Walk>
+[[gnu::always_inline]] inline bool voxel_occluded(const VoxelSearchParts& parts, const Ray& ray,
+                                                  Interval t, TraceCounters& counters,
+                                                  Walk&& walk) {
+    Interval inside;
+    if (!clip_to_box(ray, parts.world,
+                     walk_interval(t, rounding_slack(ray, parts.world, parts.rules)), inside)) {
+        return false;
+    }
+    const RaySpace space(ray);
+    if (!space.valid()) {
+        return false;
+    }
+    AnyHitSearch search(parts.scene, parts.boxes, space, t, counters);
+    bool hit = false;
+    walk(inside, [&](std::span<const std::uint32_t> polygons, double, const auto&) {
+        ++counters.voxels_stepped;
+        hit = voxel_may_hold_hit(polygons, parts.bounds_slots, search.line()) &&
+              search.test(polygons);
+        return hit;
+    });
+    return hit;
+}
+
+}  // namespace rt

@@ -1,0 +1,117 @@
+// Every shipped scene, rendered with every intersection method, with and without exit culling and
+// with the z-buffer on top, must give brute force's picture exactly: every method answers every
+// ray as brute force does (docs/accelerators.md), so every float of the film must agree. The
+// views are shrunk, to at most a quarter of their width and height and about kSampleBudget eye
+// rays, to keep the test to seconds; every object is still in the picture, with its
+// reflections, refractions and shadow feelers.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "rt/app/accelerator_stack.h"
+#include "rt/app/run_settings.h"
+#include "rt/app/switch_parser.h"
+#include "rt/core/diagnostics.h"
+#include "rt/render/renderer.h"
+#include "rt/scene/load_scene.h"
+
+#include <gtest/gtest.h>
+
+#include "support/temp_dir.h"
+
+namespace rt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kLeastShrink = 4;          ///< the view's width and height are divided by this...
+constexpr double kSampleBudget = 16000;  ///< ... or more, to keep to about this many eye rays
+
+// The switches of every method, below the switches that add layers over it.
+const std::vector<std::vector<std::string>> kMethods = {
+    {"--accel", "octree"}, {"--accel", "octree", "-op"}, {"--accel", "seads"},
+    {"--accel", "bvh"},    {"--accel", "brute"},
+};
+const std::vector<std::vector<std::string>> kLayers = {{}, {"-De"}, {"--zbuffer"}};
+
+std::vector<fs::path> shipped_scenes() {
+    std::vector<fs::path> scenes;
+    for (const fs::directory_entry& entry : fs::directory_iterator(source_dir() / "scenes")) {
+        if (entry.path().extension() == ".scn") {
+            scenes.push_back(entry.path());
+        }
+    }
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+// The view area and output matrix shrunk: the same camera, fewer pixels.
+void shrink_view(Scene& scene) {
+    SceneView& view = scene.view;
+    const double samples = static_cast<double>(view.width) * view.height *
+                           view.sample_resolution_x * view.sample_resolution_y;
+    const int shrink =
+        std::max(kLeastShrink, static_cast<int>(std::ceil(std::sqrt(samples / kSampleBudget))));
+    view.width = std::max(1, view.width / shrink);
+    view.height = std::max(1, view.height / shrink);
+    view.window = {view.window.left / shrink, view.window.top / shrink,
+                   std::min(view.width - 1, view.window.right / shrink),
+                   std::min(view.height - 1, view.window.bottom / shrink)};
+}
+
+std::vector<float> render_with(const Scene& scene, const fs::path& path,
+                               const std::vector<std::string>& switches) {
+    std::vector<std::string> args = {path.string()};
+    args.insert(args.end(), switches.begin(), switches.end());
+    const Options options = parse_command_line(args);
+    RenderSettings settings;
+    settings.shading = shading_settings(options);
+    settings.window = render_window(scene, options);
+    RunConsole console;
+    console.warning = console.note = console.trace = console.report = [](const std::string&) {};
+    const AcceleratorStack stack(scene, options, console);
+    RenderObserver silent;
+    RenderStatistics statistics;
+    return render(scene, stack.top(), settings, silent, statistics).data();
+}
+
+std::string joined(const std::vector<std::string>& switches) {
+    std::string text;
+    for (const std::string& s : switches) {
+        text += (text.empty() ? "" : " ") + s;
+    }
+    return text;
+}
+
+TEST(EverySceneEveryMethod, DrawsBruteForcesPicture) {
+    const std::vector<fs::path> scenes = shipped_scenes();
+    ASSERT_GE(scenes.size(), 3u);
+    for (const fs::path& path : scenes) {
+        SCOPED_TRACE(path.filename().string());
+        Diagnostics diagnostics;
+        Scene scene = load_scene(path, ReaderDialect{}, diagnostics);
+        shrink_view(scene);
+        const std::vector<float> brute = render_with(scene, path, {"--accel", "brute", "-De"});
+        ASSERT_FALSE(brute.empty());
+        ASSERT_TRUE(std::any_of(brute.begin(), brute.end(), [](float v) { return v > 0.0f; }))
+            << "a black picture would prove nothing";
+        for (const std::vector<std::string>& method : kMethods) {
+            for (const std::vector<std::string>& layer : kLayers) {
+                std::vector<std::string> switches = method;
+                switches.insert(switches.end(), layer.begin(), layer.end());
+                SCOPED_TRACE(joined(switches));
+                const std::vector<float> picture = render_with(scene, path, switches);
+                ASSERT_EQ(picture.size(), brute.size());
+                const auto differ = std::mismatch(picture.begin(), picture.end(), brute.begin());
+                EXPECT_TRUE(differ.first == picture.end())
+                    << "first difference at float " << (differ.first - picture.begin()) << ": "
+                    << *differ.first << " against " << *differ.second;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt::test
