@@ -48,6 +48,7 @@ TEST(Box3, CornersMagnitudeAndDistance) {
     EXPECT_EQ(box.corner(1), (Vec3{2, 0, 1}));
     EXPECT_EQ(box.corner(6), (Vec3{-4, 3, 5}));
     EXPECT_EQ(box.magnitude(), 5.0);
+    EXPECT_EQ(box.centre(), (Vec3{-1, 1.5, 3}));
     EXPECT_EQ(distance_to(box, {0, 1, 2}), 0.0);
     EXPECT_EQ(distance_to(box, {5, 7, 5}), 5.0);  // 3 and 4 beyond hi.x and hi.y
     EXPECT_EQ(distance_to(box, {-4, 0, -1}), 2.0);

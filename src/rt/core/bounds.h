@@ -38,6 +38,7 @@ struct Box3 {
     Box3 grown(const Vec3& by) const { return {lo - by, hi + by}; }
     Box3 grown(double by) const { return grown(Vec3{by, by, by}); }
     Vec3 extent() const { return hi - lo; }
+    Vec3 centre() const { return (lo + hi) * 0.5; }
     double largest_extent() const {
         const Vec3 e = extent();
         return std::max({e.x, e.y, e.z});

@@ -104,8 +104,9 @@ struct Scene {
     }
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
     SourceLocation origin_of(std::uint32_t polygon) const;
-    /// Smallest box around every position; a zero box for an empty scene.
-    void bounds(Vec3& lo, Vec3& hi) const;
+    /// Smallest box around every position; a box of no size at the origin for an empty scene
+    /// (never an empty box: its infinities would spill into every size derived from it).
+    Box3 bounds() const;
 };
 
 }  // namespace rt
