@@ -35,7 +35,7 @@ int study(const std::vector<std::string>& args) {
         }
     }
     rt::bench::StudyScene scene(options, arguments.window);
-    const rt::FilmWindow& w = scene.window();
+    const rt::PixelRect& w = scene.window();
     const double pixels = static_cast<double>(w.width()) * w.height();
 
     rt::FilmReference reference;

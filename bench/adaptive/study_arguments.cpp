@@ -84,12 +84,12 @@ SamplingPlan adaptive_plan(const std::string& text) {
     return plan;
 }
 
-FilmWindow window(const std::string& text) {
+PixelRect window(const std::string& text) {
     const std::vector<std::string> v = split(text, ',');
     if (v.size() != 4) {
         throw UsageError("--window: expected left,top,right,bottom, found '" + text + "'");
     }
-    const FilmWindow w{std::stoi(v[0]), std::stoi(v[1]), std::stoi(v[2]), std::stoi(v[3])};
+    const PixelRect w{std::stoi(v[0]), std::stoi(v[1]), std::stoi(v[2]), std::stoi(v[3])};
     if (w.width() < 1 || w.height() < 1) {
         throw UsageError("--window: empty window '" + text + "'");
     }

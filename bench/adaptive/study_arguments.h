@@ -15,7 +15,7 @@ struct StudyArguments {
     int seeds = 6;                        ///< --seeds N: seeds 1..N for every plan
     SamplingPlan reference{8, 8, false};  ///< --reference NxN: -Dx at a high resolution
     int reference_renders = 4;            ///< --reference-renders M: seeds 1001..1000+M
-    std::optional<FilmWindow> window;     ///< --window l,t,r,b
+    std::optional<PixelRect> window;      ///< --window l,t,r,b
     std::vector<SamplingPlan> uniform;    ///< --uniform NxM,...: -Dx plans
     std::vector<SamplingPlan> adaptive;   ///< --adaptive NxM@var,...: -Xp and -Xr var
     std::optional<std::string> csv;       ///< --csv FILE: one row per plan and seed

@@ -8,7 +8,7 @@
 
 namespace rt::bench {
 
-StudyScene::StudyScene(const Options& options, const std::optional<FilmWindow>& window) {
+StudyScene::StudyScene(const Options& options, const std::optional<PixelRect>& window) {
     RunConsole console;
     console.warning = [](const std::string& m) {
         std::cerr << "rt_adaptive_study: warning: " << m << '\n';

@@ -40,11 +40,11 @@ struct StudyRender {
 class StudyScene {
 public:
     /// Loads options.scene with its switches; `window` replaces the scene's output matrix.
-    StudyScene(const Options& options, const std::optional<FilmWindow>& window);
+    StudyScene(const Options& options, const std::optional<PixelRect>& window);
 
     StudyRender render(const SamplingPlan& plan, std::uint64_t seed);
 
-    const FilmWindow& window() const { return settings_.window; }
+    const PixelRect& window() const { return settings_.window; }
 
 private:
     Scene scene_;

@@ -6,9 +6,7 @@
 namespace rt::lab {
 
 std::vector<Ray> camera_rays(const Scene& scene) {
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
+    const auto [lo, hi] = scene.bounds();
     const Vec3 middle = (lo + hi) * 0.5;
     const double radius = std::max(0.5 * length(hi - lo), 1e-9);
     // From a little above and to the side, so that axis-aligned scenes are not seen face-on.
@@ -33,9 +31,7 @@ std::vector<Ray> camera_rays(const Scene& scene) {
 }
 
 std::vector<Ray> random_rays(const Scene& scene, std::size_t count, std::uint64_t seed) {
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
+    const auto [lo, hi] = scene.bounds();
     const Vec3 middle = (lo + hi) * 0.5;
     const Vec3 size = hi - lo;
     std::mt19937_64 random(seed);

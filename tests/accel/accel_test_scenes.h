@@ -115,9 +115,7 @@ struct TestRay {
 inline std::vector<TestRay> make_test_rays(const Scene& scene, std::uint64_t seed, int count) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
+    const auto [lo, hi] = scene.bounds();
     const Vec3 centre = (lo + hi) * 0.5;
     const double diagonal = length(hi - lo);
     std::vector<TestRay> rays;

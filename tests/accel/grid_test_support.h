@@ -44,7 +44,7 @@ struct RayCase {
     Interval t;
 };
 
-inline std::vector<RayCase> random_rays(const Box& world, int count, std::uint32_t seed) {
+inline std::vector<RayCase> random_rays(const Box3& world, int count, std::uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::normal_distribution<double> normal(0.0, 1.0);

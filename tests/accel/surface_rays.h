@@ -27,9 +27,7 @@ namespace rt::test {
 /// The renderer's self-intersection epsilon (scene_epsilon in src/rt/render/ray_tracer.cpp):
 /// hits nearer than 1e-9 of the scene's diagonal (at least 1e-9) belong to the surface left.
 inline double renderer_epsilon(const Scene& scene) {
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
+    const auto [lo, hi] = scene.bounds();
     return 1e-9 * std::max(1.0, length(hi - lo));
 }
 
@@ -94,9 +92,7 @@ inline std::vector<SurfaceRay> surface_rays(const Scene& scene, int count, std::
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_int_distribution<std::uint32_t> polygon(
         0, static_cast<std::uint32_t>(scene.polygons.size() - 1));
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
+    const auto [lo, hi] = scene.bounds();
     const Vec3 centre = lo * 0.5 + hi * 0.5;
     const double diagonal = length(hi - lo);
     const double epsilon = renderer_epsilon(scene);

@@ -39,9 +39,9 @@ TEST(VoxelBounds, SeadsBoundsHoldEveryPolygonsPartInTheVoxel) {
                     continue;
                 }
                 const std::array<float, 6> bounds = bounds_before(ids);
-                const Box voxel = grid.voxel_box(x, y, z);
+                const Box3 voxel = grid.voxel_box(x, y, z);
                 for (const std::uint32_t id : ids) {
-                    const Box b = polygon_bounds(scene, id);
+                    const Box3 b = polygon_bounds(scene, id);
                     for (int a = 0; a < 3; ++a) {
                         EXPECT_LE(bounds[a], std::max(b.lo[a], voxel.lo[a]));
                         EXPECT_GE(bounds[3 + a], std::min(b.hi[a], voxel.hi[a]));

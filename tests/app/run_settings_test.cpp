@@ -223,19 +223,19 @@ Scene scene_with_window(int left, int top, int right, int bottom) {
     return scene;
 }
 
-FilmWindow window_for(const Scene& scene, std::vector<std::string> switches) {
+PixelRect window_for(const Scene& scene, std::vector<std::string> switches) {
     switches.insert(switches.begin(), "scene");
     return render_window(scene, parse_command_line(switches));
 }
 
 TEST(RenderWindowFromSwitches, IsTheOutputMatrixCutAtL) {
     const Scene scene = scene_with_window(10, 20, 109, 99);
-    EXPECT_EQ(window_for(scene, {}), (FilmWindow{10, 20, 109, 99}));
+    EXPECT_EQ(window_for(scene, {}), (PixelRect{10, 20, 109, 99}));
     // -L50: "draws only from line 50 up": rows 50, 49, ..., 20.
-    EXPECT_EQ(window_for(scene, {"-L50"}), (FilmWindow{10, 20, 109, 50}));
-    EXPECT_EQ(window_for(scene, {"-L", "20"}), (FilmWindow{10, 20, 109, 20}));
+    EXPECT_EQ(window_for(scene, {"-L50"}), (PixelRect{10, 20, 109, 50}));
+    EXPECT_EQ(window_for(scene, {"-L", "20"}), (PixelRect{10, 20, 109, 20}));
     // A line below the window's bottom leaves the window whole.
-    EXPECT_EQ(window_for(scene, {"-L500"}), (FilmWindow{10, 20, 109, 99}));
+    EXPECT_EQ(window_for(scene, {"-L500"}), (PixelRect{10, 20, 109, 99}));
     EXPECT_THROW(window_for(scene, {"-L19"}), UsageError);
 }
 

@@ -49,7 +49,7 @@ TEST(DisplayMapping, InfinityStaysWithinRange) {
 }
 
 TEST(DisplayMapping, FilmBecomesTheWindowsPictureWithUnfinishedRowsBlack) {
-    Film film(8, 6, FilmWindow{2, 1, 4, 3});  // 3 x 3 window
+    Film film(8, 6, PixelRect{2, 1, 4, 3});  // 3 x 3 window
     for (int y = 1; y <= 3; ++y) {
         for (int x = 2; x <= 4; ++x) {
             film.set_pixel(x, y, Rgb{1.0, 0.5, 0.0});
@@ -71,7 +71,7 @@ TEST(DisplayMapping, FilmBecomesTheWindowsPictureWithUnfinishedRowsBlack) {
 }
 
 TEST(DisplayMapping, FilmUsesItsStoredMappingByDefault) {
-    Film film(1, 1, FilmWindow{0, 0, 0, 0});
+    Film film(1, 1, PixelRect{0, 0, 0, 0});
     film.set_pixel(0, 0, Rgb{0.25, 0.25, 0.25});
     film.set_first_finished_row(0);
     film.mapping.multiplier = 2.0;

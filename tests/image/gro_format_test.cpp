@@ -18,7 +18,7 @@ namespace rt {
 namespace {
 
 Film sample_film() {
-    Film film(6, 5, FilmWindow{1, 1, 4, 3});  // 4 x 3 window
+    Film film(6, 5, PixelRect{1, 1, 4, 3});  // 4 x 3 window
     for (std::size_t i = 0; i < film.data().size(); ++i) {
         film.data()[i] = static_cast<float>(i) * 0.37F - 2.0F;
     }
@@ -61,7 +61,7 @@ TEST(GroFormat, RoundTripIsBitExact) {
 
 TEST(GroFormat, RoundTripKeepsAPartialFilmsFinishedRows) {
     test::TempDir dir;
-    Film film(10, 8, FilmWindow{0, 2, 9, 7});
+    Film film(10, 8, PixelRect{0, 2, 9, 7});
     film.set_pixel(3, 7, Rgb{0.25, 0.5, 0.75});
     film.set_first_finished_row(6);  // rows 6 and 7 done, interrupted
     write_gro(film, dir.path() / "partial.gro");
@@ -73,14 +73,14 @@ TEST(GroFormat, RoundTripKeepsAPartialFilmsFinishedRows) {
 
 TEST(GroFormat, RoundTripOfAFilmWithNothingFinished) {
     test::TempDir dir;
-    Film film(3, 3, FilmWindow{0, 0, 2, 2});  // a new film: first_finished_row = bottom + 1
+    Film film(3, 3, PixelRect{0, 0, 2, 2});  // a new film: first_finished_row = bottom + 1
     write_gro(film, dir.path() / "empty.gro");
     expect_same_film(film, read_gro(dir.path() / "empty.gro"));
 }
 
 TEST(GroFormat, HeaderIsReadableTextAndPixelsAreLittleEndian) {
     test::TempDir dir;
-    Film film(2, 1, FilmWindow{0, 0, 1, 0});
+    Film film(2, 1, PixelRect{0, 0, 1, 0});
     film.set_pixel(0, 0, Rgb{1.0, 0.0, -2.0});
     film.set_first_finished_row(0);
     film.provenance = {"a\nb", "", "rt", "t"};  // a newline must not break the header
@@ -99,10 +99,10 @@ TEST(GroFormat, HeaderIsReadableTextAndPixelsAreLittleEndian) {
 
 TEST(GroFormat, WriterRefusesWhatTheReaderWouldRefuse) {
     test::TempDir dir;
-    Film nan_film(2, 2, FilmWindow{0, 0, 1, 1});
+    Film nan_film(2, 2, PixelRect{0, 0, 1, 1});
     nan_film.set_pixel(1, 0, Rgb{std::nan(""), 0.0, 0.0});
     EXPECT_THROW(write_gro(nan_film, dir.path() / "nan.gro"), Error);
-    Film outside(2, 2, FilmWindow{0, 0, 2, 1});  // window wider than the view
+    Film outside(2, 2, PixelRect{0, 0, 2, 1});  // window wider than the view
     EXPECT_THROW(write_gro(outside, dir.path() / "outside.gro"), Error);
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }

@@ -18,7 +18,7 @@ namespace rt {
 namespace {
 
 Film small_film() {
-    Film film(6, 4, FilmWindow{1, 0, 3, 2});
+    Film film(6, 4, PixelRect{1, 0, 3, 2});
     for (int y = 0; y <= 2; ++y) {
         for (int x = 1; x <= 3; ++x) {
             film.set_pixel(x, y, Rgb{0.1 * x, 0.3 * y, 2.0});

@@ -29,7 +29,7 @@ protected:
         // missing program is a failure, not a reason to skip.
         show_ = test::bin_dir() / "show";
         ASSERT_TRUE(std::filesystem::exists(show_)) << "show is not built: " << show_;
-        Film film(5, 4, FilmWindow{0, 0, 4, 3});
+        Film film(5, 4, PixelRect{0, 0, 4, 3});
         for (int y = 0; y <= 3; ++y) {
             for (int x = 0; x <= 4; ++x) {
                 film.set_pixel(x, y, Rgb{0.2 * x, 0.1 * y, 0.5});

@@ -37,7 +37,7 @@ namespace {
 // The cube's lower left: the checkerboard with the cube's shadow on it (the shadow's edge
 // crosses single checker squares), the cube's silhouette, its side with the glossy reflection of
 // the checkerboard running off into black, and black background.
-constexpr FilmWindow kWindow{215, 180, 274, 239};
+constexpr PixelRect kWindow{215, 180, 274, 239};
 constexpr int kReferenceResolution = 6;
 constexpr int kReferenceRenders = 2;
 constexpr std::uint64_t kFirstReferenceSeed = 1001;

@@ -9,7 +9,7 @@
 namespace rt {
 namespace {
 
-RenderStatistics render_box(int threads, const FilmWindow& window) {
+RenderStatistics render_box(int threads, const PixelRect& window) {
     Scene scene = test::make_box({-1, -1, -1}, {1, 1, 1}, false);
     scene.view.look = {0, 0, 0};
     const BruteForce accel(scene);

@@ -14,7 +14,7 @@
 namespace rt {
 namespace {
 
-constexpr FilmWindow kWindow{2, 3, 9, 12};  // 8 columns, 10 rows
+constexpr PixelRect kWindow{2, 3, 9, 12};  // 8 columns, 10 rows
 
 // A lit box seen from the builder's eye, with an emissive lid so that pixels differ.
 Scene lit_box() {

@@ -52,7 +52,7 @@ TEST_F(ManualScene, TheManualsSceneLoadsVerbatim) {
     EXPECT_EQ(scene.view.sample_resolution_y, 1);
     EXPECT_EQ(scene.view.width, 512);
     EXPECT_EQ(scene.view.height, 400);
-    EXPECT_EQ(scene.view.window, (PixelWindow{0, 0, 511, 399}));
+    EXPECT_EQ(scene.view.window, (PixelRect{0, 0, 511, 399}));
     EXPECT_EQ(scene.attributes.size(), 13u);
     ASSERT_EQ(scene.surfaces.size(), 3u);
     EXPECT_EQ(scene.surfaces[0].file, "cube");

@@ -93,7 +93,7 @@ TEST(ScnReader, ItemsMayShareOrSplitLines) {
     EXPECT_EQ(scn.view.eye, (Vec3{10, 30, -75}));
     EXPECT_EQ(scn.view.screen_distance, 25.0);
     EXPECT_EQ(scn.view.sample_resolution_y, 2);
-    EXPECT_EQ(scn.view.window, (PixelWindow{0, 0, 511, 399}));
+    EXPECT_EQ(scn.view.window, (PixelRect{0, 0, 511, 399}));
     EXPECT_EQ(scn.attributes_file->name, "Attributes");
     // "window" after the output matrix is a comment, so a file name must begin its own line.
     // The entity count, the surface count and the surface on one line, then a comment.
@@ -117,7 +117,7 @@ TEST(ScnReader, CrlfIndentationAndNoFinalNewline) {
 TEST(ScnReader, OutputMatrixOnePastTheEdgeIsClampedWithAWarning) {
     Diagnostics d;
     const ScnFile scn = read(scene_text("$ 1", "$ 0 0 512 400"), {}, d);
-    EXPECT_EQ(scn.view.window, (PixelWindow{0, 0, 511, 399}));
+    EXPECT_EQ(scn.view.window, (PixelRect{0, 0, 511, 399}));
     EXPECT_EQ(d.warnings(),
               (std::vector<std::string>{
                   "s.scn:14: the output matrix's right edge 512 is one past the last column; "

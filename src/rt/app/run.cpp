@@ -79,7 +79,7 @@ void print_colors(const Film& film, const RunConsole& console) {
     console.trace(fmt::format(
         "color map: display value = intensity x 255 x {} ({})", m.multiplier,
         m.clip ? "over 255 scaled down keeping the hue" : "not clipped: over 255 wraps"));
-    const FilmWindow& w = film.window();
+    const PixelRect& w = film.window();
     for (int y = w.bottom; y >= std::max(w.top, film.first_finished_row()); --y) {
         for (int x = w.left; x <= w.right; ++x) {
             const Rgb v = film.pixel(x, y);

@@ -17,9 +17,8 @@ ShadingSettings run_shading(const Options& options) {
 }
 
 // The output matrix, cut at -L: "draws only from line L up" (row 0 is the top row).
-FilmWindow render_window(const Scene& scene, const Options& o) {
-    const PixelWindow& w = scene.view.window;
-    FilmWindow window{w.left, w.top, w.right, w.bottom};
+PixelRect render_window(const Scene& scene, const Options& o) {
+    PixelRect window = scene.view.window;
     if (o.start_line) {
         if (*o.start_line < window.top) {
             throw UsageError("-L" + std::to_string(*o.start_line) + ": line " +

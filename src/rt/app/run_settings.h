@@ -15,7 +15,7 @@ namespace rt {
 ShadingSettings run_shading(const Options& options);
 
 /// The scene's output matrix, cut at -L. Throws UsageError for an -L above the window.
-FilmWindow render_window(const Scene& scene, const Options& options);
+PixelRect render_window(const Scene& scene, const Options& options);
 
 /// What the switches change in the loaded scene: -E's crease normals and -K's scaled weights
 /// (which depend on the lights the shading settings keep).

@@ -49,7 +49,7 @@ std::array<std::uint8_t, 3> to_display(const Rgb& intensity, const DisplayMappin
 
 Image8 to_display(const Film& film, const DisplayMapping& m) {
     film.check_consistent();
-    const FilmWindow& w = film.window();
+    const PixelRect& w = film.window();
     Image8 image;
     image.width = w.width();
     image.height = w.height();

@@ -7,7 +7,7 @@
 
 namespace rt {
 
-Film::Film(int view_width, int view_height, FilmWindow window)
+Film::Film(int view_width, int view_height, PixelRect window)
     : view_width_(view_width),
       view_height_(view_height),
       window_(window),
@@ -17,7 +17,7 @@ Film::Film(int view_width, int view_height, FilmWindow window)
           0.0F) {}
 
 namespace {
-std::size_t offset_of(const FilmWindow& w, int x, int y) {
+std::size_t offset_of(const PixelRect& w, int x, int y) {
     return (static_cast<std::size_t>(y - w.top) * static_cast<std::size_t>(w.width()) +
             static_cast<std::size_t>(x - w.left)) *
            3;

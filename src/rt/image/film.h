@@ -5,20 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "rt/core/bounds.h"
 #include "rt/core/rgb.h"
 
 namespace rt {
-
-/// Inclusive window in view-area pixels, row 0 at the top (the .scn output matrix).
-struct FilmWindow {
-    int left = 0;
-    int top = 0;
-    int right = 0;
-    int bottom = 0;
-    int width() const { return right - left + 1; }
-    int height() const { return bottom - top + 1; }
-    friend bool operator==(const FilmWindow&, const FilmWindow&) = default;
-};
 
 /// How linear intensities become 8-bit display values (-m, -c; manual Appendix).
 struct DisplayMapping {
@@ -38,11 +28,11 @@ class Film {
 public:
     Film() = default;
     /// view_width x view_height is the whole view area; only window's pixels are stored.
-    Film(int view_width, int view_height, FilmWindow window);
+    Film(int view_width, int view_height, PixelRect window);
 
     int view_width() const { return view_width_; }
     int view_height() const { return view_height_; }
-    const FilmWindow& window() const { return window_; }
+    const PixelRect& window() const { return window_; }
     int width() const { return window_.width(); }
     int height() const { return window_.height(); }
 
@@ -69,7 +59,7 @@ public:
 private:
     int view_width_ = 0;
     int view_height_ = 0;
-    FilmWindow window_;
+    PixelRect window_;
     int first_finished_row_ = 0;
     std::vector<float> data_;
 };

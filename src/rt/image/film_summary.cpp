@@ -13,7 +13,7 @@ std::string or_unknown(const std::string& text) {
 }  // namespace
 
 std::string film_summary(const Film& film) {
-    const FilmWindow& w = film.window();
+    const PixelRect& w = film.window();
     const int rows_done = w.bottom + 1 - std::max(film.first_finished_row(), w.top);
     std::string text;
     text += fmt::format("size      {} x {} pixels (the view area)\n", film.view_width(),

@@ -41,7 +41,7 @@ float get_float_le(const std::uint8_t* in) {
 // Everything written must read back, so the writer refuses what the reader would refuse.
 void check_writable(const Film& film) {
     film.check_consistent();
-    const FilmWindow& w = film.window();
+    const PixelRect& w = film.window();
     const auto fail = [](const std::string& why) { throw Error(why); };
     if (film.view_width() < 1 || film.view_height() < 1 || film.view_width() > kMaxImageSide ||
         film.view_height() > kMaxImageSide) {
@@ -116,7 +116,7 @@ void check_pixel_bytes(const GroHeader& h, std::uint64_t file_size, const std::s
 }
 
 void read_pixels(std::istream& in, const GroHeader& h, Film& film, const std::string& file) {
-    const FilmWindow& w = h.window;
+    const PixelRect& w = h.window;
     const std::size_t row_values = static_cast<std::size_t>(w.width()) * 3;
     std::vector<std::uint8_t> row(row_values * kBytesPerValue);
     std::vector<float>& data = film.data();

@@ -209,7 +209,7 @@ void read_magic(LineReader& lines, const std::string& file) {
 // The checks that need several keys, each reported at the line that is out of range.
 void check_consistency(const GroHeader& h, const std::map<std::string, int, std::less<>>& seen,
                        const std::string& file) {
-    const FilmWindow& w = h.window;
+    const PixelRect& w = h.window;
     if (w.left < 0 || w.top < 0 || w.left > w.right || w.top > w.bottom ||
         w.right >= h.view_width || w.bottom >= h.view_height) {
         throw expected_found(
@@ -297,7 +297,7 @@ std::string header_text(std::string_view value) {
 }  // namespace
 
 std::string format_gro_header(const Film& film) {
-    const FilmWindow& w = film.window();
+    const PixelRect& w = film.window();
     const FilmProvenance& p = film.provenance;
     std::string text = std::string(kGroMagic) + "\n";
     text += fmt::format("view {} {}\n", film.view_width(), film.view_height());

@@ -13,7 +13,7 @@ namespace rt {
 struct GroHeader {
     int view_width = 0;
     int view_height = 0;
-    FilmWindow window;
+    PixelRect window;
     int first_finished_row = 0;
     DisplayMapping mapping;
     FilmProvenance provenance;

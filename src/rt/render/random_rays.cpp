@@ -30,12 +30,10 @@ Ray random_ray(const Vec3& lo, const Vec3& size, std::uint64_t seed, std::uint64
 
 KindCounters fire_random_rays(const Scene& scene, const Accelerator& accel, std::uint64_t count,
                               std::uint64_t seed, int threads) {
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
-    const Vec3 centre = (lo + hi) * 0.5;
-    const Vec3 doubled_lo = centre - (hi - lo);
-    const Vec3 size = (hi - lo) * 2.0;
+    const Box3 bounds = scene.bounds();
+    const Vec3 centre = bounds.centre();
+    const Vec3 doubled_lo = centre - bounds.extent();
+    const Vec3 size = bounds.extent() * 2.0;
     int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
     n = std::max(1, n);
     std::vector<KindCounters> counters(static_cast<std::size_t>(n));

@@ -17,10 +17,7 @@ namespace {
 constexpr double kRelativeEpsilon = 1e-9;
 
 double scene_epsilon(const Scene& scene) {
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
-    return kRelativeEpsilon * std::max(1.0, length(hi - lo));
+    return kRelativeEpsilon * std::max(1.0, length(scene.bounds().extent()));
 }
 
 double radians(double degrees) {

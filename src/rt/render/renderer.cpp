@@ -106,7 +106,7 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
 }
 
 void record_finished_row(RenderJob& job, int y) {
-    const FilmWindow& w = job.settings.window;
+    const PixelRect& w = job.settings.window;
     std::lock_guard lock(job.observer_mutex);
     job.finished[static_cast<std::size_t>(y - w.top)] = 1;
     ++job.rows_done;
@@ -122,7 +122,7 @@ void record_finished_row(RenderJob& job, int y) {
 }
 
 void render_rows(RenderJob& job, KindCounters& counters) {
-    const FilmWindow& w = job.settings.window;
+    const PixelRect& w = job.settings.window;
     const bool pixel_events = job.observer.wants_pixel_events();
     const bool sample_events = job.observer.wants_sample_reports();
     while (!job.stopping) {

@@ -15,8 +15,8 @@ namespace rt {
 
 struct RenderSettings {
     ShadingSettings shading;
-    FilmWindow window;  ///< the part of the view area to render (output matrix, -L)
-    int threads = 0;    ///< 0: one per core
+    PixelRect window;  ///< the part of the view area to render (output matrix, -L)
+    int threads = 0;   ///< 0: one per core
 };
 
 /// How a pixel was sampled (-dx).

@@ -7,16 +7,15 @@ SourceLocation Scene::origin_of(std::uint32_t polygon) const {
     return {source_files.at(ref.file), static_cast<int>(ref.line), 0};
 }
 
-void Scene::bounds(Vec3& lo, Vec3& hi) const {
+Box3 Scene::bounds() const {
     if (positions.empty()) {
-        lo = hi = Vec3{};
-        return;
+        return Box3::around(Vec3{});
     }
-    lo = hi = positions.front();
+    Box3 box = Box3::around(positions.front());
     for (const Vec3& p : positions) {
-        lo = min_components(lo, p);
-        hi = max_components(hi, p);
+        box.add(p);
     }
+    return box;
 }
 
 }  // namespace rt

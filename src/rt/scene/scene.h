@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rt/core/bounds.h"
 #include "rt/core/error.h"
 #include "rt/core/vec3.h"
 #include "rt/scene/attribute.h"
@@ -25,17 +26,6 @@ struct SceneHeader {
     double maxdist = 0.0;       ///< depth down to which rays are distributed
 };
 
-/// Inclusive pixel window of the view area to render: left, top, right, bottom; row 0 at the top.
-struct PixelWindow {
-    int left = 0;
-    int top = 0;
-    int right = 0;
-    int bottom = 0;
-    int width() const { return right - left + 1; }
-    int height() const { return bottom - top + 1; }
-    friend bool operator==(const PixelWindow&, const PixelWindow&) = default;
-};
-
 struct SceneView {
     Vec3 eye;
     Vec3 look;
@@ -46,7 +36,7 @@ struct SceneView {
     int sample_resolution_y = 1;
     int width = 0;  ///< view area in pixels
     int height = 0;
-    PixelWindow window;  ///< the output matrix
+    PixelRect window;  ///< the output matrix: the part of the view area to render
 };
 
 /// Polygon marks of -M (manual 2.5).
@@ -114,8 +104,9 @@ struct Scene {
     }
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
     SourceLocation origin_of(std::uint32_t polygon) const;
-    /// Smallest box around every position; a zero box for an empty scene.
-    void bounds(Vec3& lo, Vec3& hi) const;
+    /// Smallest box around every position; a box of no size at the origin for an empty scene
+    /// (never an empty box: its infinities would spill into every size derived from it).
+    Box3 bounds() const;
 };
 
 }  // namespace rt

@@ -33,10 +33,7 @@ void SceneBuilder::finish(const SourceLocation& eye_at) {
     if (scene_.polygons.empty()) {
         diagnostics_.warn(scene_.source_files.front() + ": the scene has no polygons");
     } else if (scene_.header.center == 1) {
-        Vec3 lo;
-        Vec3 hi;
-        scene_.bounds(lo, hi);
-        view.look = (lo + hi) * 0.5;
+        view.look = scene_.bounds().centre();
         diagnostics_.note("auto-centering: look point set to " +
                           show_point(view.look.x, view.look.y, view.look.z));
     }

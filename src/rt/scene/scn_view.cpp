@@ -52,7 +52,7 @@ void read_sample_resolution(ItemStream& scn, SceneView& view) {
 
 void read_window(ItemStream& scn, SceneView& view, Diagnostics& diagnostics) {
     constexpr int kFar = 1'000'000'000;  // keeps the arithmetic below in range
-    PixelWindow w;
+    PixelRect w;
     w.left = small_integer(scn, "the output matrix's left", -kFar, kFar);
     const SourceLocation at = scn.source().at(scn.line());
     w.top = small_integer(scn, "the output matrix's top", -kFar, kFar);
@@ -120,14 +120,14 @@ SceneView read_view(ItemStream& scn, const SceneHeader& header, SourceLocation& 
     trace(scn, diagnostics, fmt::format("view area {} x {}", v.width, v.height));
     read_window(scn, v, diagnostics);
     scn.end_item();
-    const PixelWindow& w = v.window;
+    const PixelRect& w = v.window;
     trace(scn, diagnostics,
           fmt::format("output matrix {} {} {} {}", w.left, w.top, w.right, w.bottom));
     return v;
 }
 
-PixelWindow checked_window(PixelWindow w, int width, int height, const SourceLocation& at,
-                           Diagnostics& diagnostics) {
+PixelRect checked_window(PixelRect w, int width, int height, const SourceLocation& at,
+                         Diagnostics& diagnostics) {
     const std::string given = fmt::format("{} {} {} {}", w.left, w.top, w.right, w.bottom);
     if (w.right == width) {
         w.right = width - 1;

@@ -18,7 +18,7 @@ SceneView read_view(ItemStream& scn, const SceneHeader& header, SourceLocation& 
 
 /// The output matrix against the view area: right == width or bottom == height is clamped with a
 /// warning (the manual's own "0 0 512 399"); anything else outside, or reversed, is an error.
-PixelWindow checked_window(PixelWindow window, int width, int height, const SourceLocation& at,
-                           Diagnostics& diagnostics);
+PixelRect checked_window(PixelRect window, int width, int height, const SourceLocation& at,
+                         Diagnostics& diagnostics);
 
 }  // namespace rt

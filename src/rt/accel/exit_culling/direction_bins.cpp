@@ -29,7 +29,7 @@ struct Range {
 // reciprocals of z0 (infinite for 0) and z1. Multiplying by a reciprocal rounds twice, well
 // within the margin.
 Range ratio_range(double b0, double b1, double inverse_z0, double inverse_z1) {
-    constexpr double kInf = AxisBox::kInfinity;
+    constexpr double kInf = Box3::kInfinity;
     Range r;
     r.lo = b0 >= 0.0 ? b0 * inverse_z1 : (inverse_z0 < kInf ? b0 * inverse_z0 : -kInf);
     r.hi = b1 <= 0.0 ? b1 * inverse_z1 : (inverse_z0 < kInf ? b1 * inverse_z0 : kInf);
@@ -96,7 +96,7 @@ DirectionBin DirectionBins::bin_of(const Vec3& d) const {
     return {2 * axis + (d[axis] < 0.0 ? 1 : 0), cell_of(v), cell_of(u)};
 }
 
-DirectionBins::FaceRect DirectionBins::face_rect(const AxisBox& box, int face) const {
+DirectionBins::FaceRect DirectionBins::face_rect(const Box3& box, int face) const {
     const int axis = face / 2;
     const bool negative = face % 2 == 1;
     const double z0 = std::max(negative ? -box.hi[axis] : box.lo[axis], 0.0);
@@ -106,7 +106,7 @@ DirectionBins::FaceRect DirectionBins::face_rect(const AxisBox& box, int face) c
     }
     const int b = (axis + 1) % 3;
     const int c = (axis + 2) % 3;
-    const double inverse_z0 = z0 > 0.0 ? 1.0 / z0 : AxisBox::kInfinity;
+    const double inverse_z0 = z0 > 0.0 ? 1.0 / z0 : Box3::kInfinity;
     const double inverse_z1 = 1.0 / z1;
     const Range u = ratio_range(box.lo[b], box.hi[b], inverse_z0, inverse_z1);
     const Range v = ratio_range(box.lo[c], box.hi[c], inverse_z0, inverse_z1);
@@ -117,7 +117,7 @@ DirectionBins::FaceRect DirectionBins::face_rect(const AxisBox& box, int face) c
             cell_of(std::max(u.lo, -1.0)), cell_of(std::min(u.hi, 1.0))};
 }
 
-bool DirectionBins::add_directions_of(const AxisBox& box, std::span<std::uint16_t> set) const {
+bool DirectionBins::add_directions_of(const Box3& box, std::span<std::uint16_t> set) const {
     bool added = false;
     for (int face = 0; face < 6; ++face) {
         const FaceRect r = face_rect(box, face);
@@ -134,8 +134,7 @@ bool DirectionBins::add_directions_of(const AxisBox& box, std::span<std::uint16_
     return added;
 }
 
-bool DirectionBins::holds_directions_of(const AxisBox& box,
-                                        std::span<const std::uint16_t> set) const {
+bool DirectionBins::holds_directions_of(const Box3& box, std::span<const std::uint16_t> set) const {
     for (int face = 0; face < 6; ++face) {
         const FaceRect r = face_rect(box, face);
         if (r.row0 > r.row1 || r.column0 > r.column1) {
@@ -159,7 +158,7 @@ std::uint16_t DirectionBins::row_mask(const FaceRect& r) const {
     return static_cast<std::uint16_t>(((1u << (r.column1 + 1)) - 1u) & ~((1u << r.column0) - 1u));
 }
 
-void DirectionBins::add_directions_of(const AxisBox& box, std::span<std::uint16_t> set,
+void DirectionBins::add_directions_of(const Box3& box, std::span<std::uint16_t> set,
                                       std::span<const std::uint16_t> only) const {
     for (int face = 0; face < 6; ++face) {
         const FaceRect r = face_rect(box, face);

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "rt/accel/hit_regions/axis_box.h"
+#include "rt/core/bounds.h"
 #include "rt/core/vec3.h"
 
 namespace rt {
@@ -38,12 +38,12 @@ public:
 
     /// Adds to `set` every bin holding a direction w / |w| for some w in `box` (w != 0), with a
     /// margin for rounding. Returns whether it added anything new.
-    bool add_directions_of(const AxisBox& box, std::span<std::uint16_t> set) const;
+    bool add_directions_of(const Box3& box, std::span<std::uint16_t> set) const;
     /// As above, but only the bins also in `only`.
-    void add_directions_of(const AxisBox& box, std::span<std::uint16_t> set,
+    void add_directions_of(const Box3& box, std::span<std::uint16_t> set,
                            std::span<const std::uint16_t> only) const;
     /// Whether `set` already holds every bin add_directions_of(box) would add.
-    bool holds_directions_of(const AxisBox& box, std::span<const std::uint16_t> set) const;
+    bool holds_directions_of(const Box3& box, std::span<const std::uint16_t> set) const;
 
     /// Sets in `band` (rows() masks, cleared first) every bin holding a direction w with
     /// |dot(unit_normal, w / |w|)| <= cosine: the directions that see a plane (nearly) edge-on.
@@ -54,7 +54,7 @@ private:
     struct FaceRect {
         int row0, row1, column0, column1;  ///< inclusive; row0 > row1 when empty
     };
-    FaceRect face_rect(const AxisBox& box, int face) const;
+    FaceRect face_rect(const Box3& box, int face) const;
     int cell_of(double coordinate) const;
     std::uint16_t row_mask(const FaceRect& r) const;
 

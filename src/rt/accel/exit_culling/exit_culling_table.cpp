@@ -24,8 +24,8 @@ namespace {
 
 // Directions from the cell to the target: the box of differences, widened for the rounding of
 // the subtractions.
-AxisBox differences(const AxisBox& target, const AxisBox& start, double widen) {
-    return AxisBox{target.lo - start.hi, target.hi - start.lo}.grown(widen);
+Box3 differences(const Box3& target, const Box3& start, double widen) {
+    return Box3{target.lo - start.hi, target.hi - start.lo}.grown(widen);
 }
 
 }  // namespace
@@ -82,8 +82,8 @@ void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::u
         for (int y = first[1]; y <= last[1]; ++y) {
             for (int x = first[0]; x <= last[0]; ++x) {
                 const int cell = x + r * (y + r * z);
-                const AxisBox start = cells_.cell_box(cell).grown(cells_.margin());
-                const AxisBox common = intersection(start, reach.grazing_box);
+                const Box3 start = cells_.cell_box(cell).grown(cells_.margin());
+                const Box3 common = intersection(start, reach.grazing_box);
                 if (common.empty() || !grazing_slab_meets_box(reach, common)) {
                     continue;
                 }
@@ -101,7 +101,7 @@ void ExitCullingTable::fill_region(int cell) {
     if (tree.empty()) {
         return;
     }
-    const AxisBox start = cells_.cell_box(cell).grown(cells_.margin());
+    const Box3 start = cells_.cell_box(cell).grown(cells_.margin());
     const double widen = 1e-12 * std::max(start.magnitude(), cells_.world().magnitude());
     const std::span<std::uint16_t> set{rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),
                                        static_cast<std::size_t>(bins_.rows())};
@@ -110,7 +110,7 @@ void ExitCullingTable::fill_region(int cell) {
     while (!stack.empty()) {
         const OccupiedCells::Node& node = tree[stack.back()];
         stack.pop_back();
-        const AxisBox towards = differences(node.box, start, widen);
+        const Box3 towards = differences(node.box, start, widen);
         if (node.first_child < 0) {
             bins_.add_directions_of(towards, set);
         } else if (!bins_.holds_directions_of(towards, set)) {
@@ -121,9 +121,9 @@ void ExitCullingTable::fill_region(int cell) {
 }
 
 int ExitCullingTable::entry_cell(const Ray& ray) const {
-    const AxisBox& world = cells_.world();
+    const Box3& world = cells_.world();
     Interval inside;
-    if (!clip_to_box(ray, Box{world.lo, world.hi}, {0.0, AxisBox::kInfinity}, inside)) {
+    if (!clip_to_box(ray, world, {0.0, Box3::kInfinity}, inside)) {
         return -1;
     }
     Vec3 q = ray.at(inside.min);

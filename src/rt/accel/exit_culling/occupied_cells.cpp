@@ -24,10 +24,7 @@ std::uint32_t morton(int x, int y, int z) {
 
 CullingFrame culling_frame(const Scene& scene) {
     CullingFrame frame;
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
-    frame.positions = {lo, hi};
+    frame.positions = scene.bounds();
     const double diagonal = length(frame.positions.extent());
     const double magnitude = frame.positions.magnitude();
     frame.far_limit = 100.0 * diagonal;
@@ -54,9 +51,9 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
     world_ = world_.grown(frame_.margin);
     cell_size_ = world_.extent() / resolution_;
 
-    std::vector<AxisBox> cells(static_cast<std::size_t>(resolution_) * resolution_ * resolution_);
+    std::vector<Box3> cells(static_cast<std::size_t>(resolution_) * resolution_ * resolution_);
     fill(reaches, cells);
-    std::vector<AxisBox> leaves;
+    std::vector<Box3> leaves;
     std::vector<std::uint32_t> codes;
     for (int cell = 0; cell < static_cast<int>(cells.size()); ++cell) {
         if (!cells[cell].empty()) {
@@ -71,7 +68,7 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
         order[i] = i;
     }
     std::sort(order.begin(), order.end(), [&](auto a, auto b) { return codes[a] < codes[b]; });
-    std::vector<AxisBox> sorted;
+    std::vector<Box3> sorted;
     for (const std::size_t i : order) {
         sorted.push_back(leaves[i]);
     }
@@ -83,14 +80,14 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
     }
 }
 
-void OccupiedCells::cell_range(const AxisBox& box, int first[3], int last[3]) const {
+void OccupiedCells::cell_range(const Box3& box, int first[3], int last[3]) const {
     for (int axis = 0; axis < 3; ++axis) {
         first[axis] = std::max(axis_cell(axis, box.lo[axis]) - 1, 0);
         last[axis] = std::min(axis_cell(axis, box.hi[axis]) + 1, resolution_ - 1);
     }
 }
 
-void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<AxisBox>& cells) const {
+void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const {
     for (const PolygonReach& reach : reaches) {
         if (reach.box.empty()) {
             continue;
@@ -102,7 +99,7 @@ void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Axis
             for (int y = first[1]; y <= last[1]; ++y) {
                 for (int x = first[0]; x <= last[0]; ++x) {
                     const int cell = x + resolution_ * (y + resolution_ * z);
-                    const AxisBox piece = intersection(reach.box, cell_box(cell));
+                    const Box3 piece = intersection(reach.box, cell_box(cell));
                     if (!piece.empty() && slab_meets_box(reach, piece)) {
                         cells[cell].add(piece);
                     }
@@ -112,8 +109,8 @@ void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Axis
     }
 }
 
-void OccupiedCells::build_node(const std::vector<AxisBox>& leaves, std::size_t begin,
-                               std::size_t end, std::size_t slot) {
+void OccupiedCells::build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
+                               std::size_t slot) {
     Node node;
     for (std::size_t i = begin; i < end; ++i) {
         node.box.add(leaves[i]);
@@ -149,10 +146,10 @@ int OccupiedCells::cell_of(const Vec3& p) const {
     return axis_cell(0, p.x) + resolution_ * (axis_cell(1, p.y) + resolution_ * axis_cell(2, p.z));
 }
 
-AxisBox OccupiedCells::cell_box(int cell) const {
+Box3 OccupiedCells::cell_box(int cell) const {
     const int index[3] = {cell % resolution_, (cell / resolution_) % resolution_,
                           cell / (resolution_ * resolution_)};
-    AxisBox box;
+    Box3 box;
     for (int axis = 0; axis < 3; ++axis) {
         box.lo[axis] = boundary(axis, index[axis]);
         box.hi[axis] = boundary(axis, index[axis] + 1);

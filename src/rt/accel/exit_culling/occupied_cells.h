@@ -8,15 +8,15 @@
 #include <span>
 #include <vector>
 
-#include "rt/accel/hit_regions/axis_box.h"
 #include "rt/accel/hit_regions/polygon_reach.h"
+#include "rt/core/bounds.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
 
 /// The rounding allowances for a scene: see occupied_cells.cpp.
 struct CullingFrame {
-    AxisBox positions;       ///< the box of the scene's corners
+    Box3 positions;          ///< the box of the scene's corners
     double far_limit = 0.0;  ///< farthest ray origin from `positions` that may be culled
     double rounding = 0.0;   ///< for polygon_reach()
     double margin = 0.0;     ///< for cells and entry points
@@ -30,7 +30,7 @@ public:
 
     /// Every reach box, grown by margin(): no hit point lies outside it, or within margin() of
     /// its boundary.
-    const AxisBox& world() const { return world_; }
+    const Box3& world() const { return world_; }
     const CullingFrame& frame() const { return frame_; }
     double margin() const { return frame_.margin; }
     int resolution() const { return resolution_; }
@@ -39,12 +39,12 @@ public:
     int cell_of(const Vec3& p) const;
     /// The cells along each axis that may meet the box: one more each way than its corners' own,
     /// as cells and boundaries are rounded separately.
-    void cell_range(const AxisBox& box, int first[3], int last[3]) const;
-    AxisBox cell_box(int cell) const;
+    void cell_range(const Box3& box, int first[3], int last[3]) const;
+    Box3 cell_box(int cell) const;
 
     /// A binary tree over the occupied cells' boxes, root first; leaves have no children.
     struct Node {
-        AxisBox box;
+        Box3 box;
         std::int32_t first_child = -1;  ///< the second child follows it
     };
     const std::vector<Node>& tree() const { return tree_; }
@@ -54,12 +54,12 @@ public:
 private:
     int axis_cell(int axis, double coordinate) const;
     double boundary(int axis, int index) const;
-    void fill(std::span<const PolygonReach> reaches, std::vector<AxisBox>& cells) const;
-    void build_node(const std::vector<AxisBox>& leaves, std::size_t begin, std::size_t end,
+    void fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const;
+    void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);
 
     CullingFrame frame_;
-    AxisBox world_;
+    Box3 world_;
     int resolution_ = 1;
     Vec3 cell_size_;
     std::vector<Node> tree_;

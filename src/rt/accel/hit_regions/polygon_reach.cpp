@@ -25,7 +25,7 @@ namespace {
 // Relative headroom on every bound, for the rounding of computing the bounds themselves.
 constexpr double kSlack = 1.0 + 1e-9;
 
-bool slab_meets(const Vec3& normal, const Vec3& point, double half, const AxisBox& box) {
+bool slab_meets(const Vec3& normal, const Vec3& point, double half, const Box3& box) {
     if (!std::isfinite(half)) {
         return true;
     }
@@ -43,7 +43,7 @@ bool slab_meets(const Vec3& normal, const Vec3& point, double half, const AxisBo
 PolygonReach polygon_reach(const Scene& scene, std::uint32_t id, double min_cos, double rounding) {
     const Polygon& polygon = scene.polygons[id];
     PolygonReach reach;
-    AxisBox corners;
+    Box3 corners;
     for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
         corners.add(scene.corner_position(polygon, k));
     }
@@ -108,11 +108,11 @@ double min_cosine_through(const Scene& scene, std::uint32_t id, const Vec3& poin
     return std::isfinite(bound) ? std::max(bound * (1.0 - 1e-9), 0.0) : 0.0;
 }
 
-bool slab_meets_box(const PolygonReach& reach, const AxisBox& box) {
+bool slab_meets_box(const PolygonReach& reach, const Box3& box) {
     return slab_meets(reach.normal, reach.plane_point, reach.slab_half, box);
 }
 
-bool grazing_slab_meets_box(const PolygonReach& reach, const AxisBox& box) {
+bool grazing_slab_meets_box(const PolygonReach& reach, const Box3& box) {
     return slab_meets(reach.normal, reach.plane_point, reach.grazing_slab_half, box);
 }
 

@@ -9,7 +9,7 @@
 
 #include <cstdint>
 
-#include "rt/accel/hit_regions/axis_box.h"
+#include "rt/core/bounds.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
@@ -18,21 +18,21 @@ namespace rt {
 struct PolygonReach {
     /// Hit points of rays more than kGrazingCosine away from edge-on (the plane's t): within
     /// the box, and within slab_half of the plane.
-    AxisBox box;
+    Box3 box;
     /// Hit points of rays within kGrazingCosine of edge-on (t clamped to the corners' depths);
     /// empty when no ray considered is that close. Within grazing_slab_half of the plane.
-    AxisBox grazing_box;
+    Box3 grazing_box;
     Vec3 plane_point;
     Vec3 normal;  ///< unit; zero when the polygon has no usable normal
-    double slab_half = AxisBox::kInfinity;
-    double grazing_slab_half = AxisBox::kInfinity;
+    double slab_half = Box3::kInfinity;
+    double grazing_slab_half = Box3::kInfinity;
     /// The |cos| with `normal` at or below which a ray is grazing: kGrazingCosine for a unit
     /// scene normal, 1 (every ray) without a usable one.
     double grazing_cosine = 1.0;
 
     /// Both boxes together.
-    AxisBox all() const {
-        AxisBox b = box;
+    Box3 all() const {
+        Box3 b = box;
         b.add(grazing_box);
         return b;
     }
@@ -54,8 +54,8 @@ PolygonReach polygon_reach(const Scene& scene, std::uint32_t id, double min_cos,
 double min_cosine_through(const Scene& scene, std::uint32_t id, const Vec3& point, double slack);
 
 /// Whether the box can contain hit points of the reach's `box` (its slab meets it)...
-bool slab_meets_box(const PolygonReach& reach, const AxisBox& box);
+bool slab_meets_box(const PolygonReach& reach, const Box3& box);
 /// ... and of its `grazing_box`.
-bool grazing_slab_meets_box(const PolygonReach& reach, const AxisBox& box);
+bool grazing_slab_meets_box(const PolygonReach& reach, const Box3& box);
 
 }  // namespace rt

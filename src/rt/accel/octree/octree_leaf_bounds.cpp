@@ -48,7 +48,7 @@ void add_leaf_bounds(const Scene& scene, OctreeTree& tree) {
         }
         const auto first = static_cast<std::uint32_t>(laid_out.size());
         if (node.count != 0) {
-            Box leaf;
+            Box3 leaf;
             for (int a = 0; a < 3; ++a) {
                 leaf.lo[a] = tree.lattice(a, at.origin[a]);
                 leaf.hi[a] = tree.lattice(a, at.origin[a] + at.size);

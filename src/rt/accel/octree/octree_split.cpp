@@ -108,8 +108,8 @@ void OctreeFill::make_leaf(OctreeTree& tree, std::uint32_t index,
     tree.polygons.insert(tree.polygons.end(), polygons.begin(), polygons.end());
 }
 
-Box OctreeFill::cell_box(const OctreeCell& cell) const {
-    Box box;
+Box3 OctreeFill::cell_box(const OctreeCell& cell) const {
+    Box3 box;
     for (int a = 0; a < 3; ++a) {
         box.lo[a] = tree_.lattice(a, cell.origin[a]);
         box.hi[a] = tree_.lattice(a, cell.origin[a] + cell.size);
@@ -120,7 +120,7 @@ Box OctreeFill::cell_box(const OctreeCell& cell) const {
 int OctreeFill::children_reached(std::uint32_t polygon, const double middle[3]) const {
     // Which halves along each axis the polygon's box reaches (the node's own box it reaches
     // already). Child c takes the upper half on the axes of its set bits, the lower on the others.
-    const Box& b = bounds_[polygon];
+    const Box3& b = bounds_[polygon];
     int lower = 0;
     int upper = 0;
     for (int a = 0; a < 3; ++a) {
@@ -141,7 +141,7 @@ int OctreeFill::children_reached(std::uint32_t polygon, const double middle[3]) 
 bool OctreeFill::touches(std::uint32_t polygon, const OctreeCell& child) const {
     // A child holding one of the corners certainly touches the polygon; only the others need the
     // exact test (for a small polygon across one midplane, none does).
-    const Box box = cell_box(child).padded(fudge_);
+    const Box3 box = cell_box(child).grown(fudge_);
     const Polygon& p = scene_.polygons[polygon];
     for (std::uint32_t k = 0; k < p.corner_count; ++k) {
         if (box.contains(scene_.corner_position(p, k))) {
@@ -173,7 +173,7 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
             // A box (48 bytes) or a record may straddle two cache lines: fetch both ends.
             const char* box = reinterpret_cast<const char*>(&bounds_[later]);
             __builtin_prefetch(box);
-            __builtin_prefetch(box + sizeof(Box) - 1);
+            __builtin_prefetch(box + sizeof(Box3) - 1);
             const char* record = reinterpret_cast<const char*>(&scene_.polygons[later]);
             __builtin_prefetch(record);
             __builtin_prefetch(record + offsetof(Polygon, normal) + sizeof(Vec3) - 1);

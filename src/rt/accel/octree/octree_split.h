@@ -50,7 +50,7 @@ public:
                std::array<std::vector<std::uint32_t>, 8>& children) const;
 
 private:
-    Box cell_box(const OctreeCell& cell) const;
+    Box3 cell_box(const OctreeCell& cell) const;
     /// Bit c set: the polygon's box reaches child c (each grown by the fudge).
     int children_reached(std::uint32_t polygon, const double middle[3]) const;
     /// Whether the polygon touches the child grown by the fudge.
@@ -58,7 +58,7 @@ private:
 
     const Scene& scene_;
     OctreeTree tree_;
-    std::vector<Box> bounds_;  ///< each polygon's box, grown by the fudge
+    std::vector<Box3> bounds_;  ///< each polygon's box, grown by the fudge
     double fudge_ = 0.0;
     std::uint64_t max_nodes_ = 0;
     int octlist_power_ = kDefaultOctlistPower;

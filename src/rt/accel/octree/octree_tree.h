@@ -34,7 +34,7 @@ struct OctreeNode {
 };
 
 struct OctreeTree {
-    Box world;                            ///< a cube (up to rounding)
+    Box3 world;                           ///< a cube (up to rounding)
     int depth = 0;                        ///< the finest level; the root is level 0
     Vec3 step;                            ///< world extent / 2^depth: one lattice step per axis
     std::vector<OctreeNode> nodes;        ///< nodes[0] is the root; children in x, y, z bit order

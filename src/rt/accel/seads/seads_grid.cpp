@@ -41,7 +41,7 @@ std::pair<int, int> voxel_range(const SeadsGrid& grid, int axis, double lo, doub
     return {cell(lo), cell(hi)};
 }
 
-bool holds_a_corner(const Scene& scene, std::uint32_t id, const Box& box) {
+bool holds_a_corner(const Scene& scene, std::uint32_t id, const Box3& box) {
     const Polygon& p = scene.polygons[id];
     for (std::uint32_t k = 0; k < p.corner_count; ++k) {
         if (box.contains(scene.corner_position(p, k))) {
@@ -55,7 +55,7 @@ using VoxelAndPolygon = std::pair<std::uint32_t, std::uint32_t>;
 
 void file_polygon(const Scene& scene, const SeadsGrid& grid, double fudge, std::uint32_t id,
                   std::vector<VoxelAndPolygon>& out) {
-    const Box bounds = polygon_bounds(scene, id).padded(fudge);
+    const Box3 bounds = polygon_bounds(scene, id).grown(fudge);
     const auto [x0, x1] = voxel_range(grid, 0, bounds.lo.x, bounds.hi.x);
     const auto [y0, y1] = voxel_range(grid, 1, bounds.lo.y, bounds.hi.y);
     const auto [z0, z1] = voxel_range(grid, 2, bounds.lo.z, bounds.hi.z);
@@ -69,7 +69,7 @@ void file_polygon(const Scene& scene, const SeadsGrid& grid, double fudge, std::
             for (int x = x0; x <= x1; ++x) {
                 // A voxel holding one of the corners certainly touches the polygon; only the
                 // others need the exact test.
-                const Box box = grid.voxel_box(x, y, z).padded(fudge);
+                const Box3 box = grid.voxel_box(x, y, z).grown(fudge);
                 if (holds_a_corner(scene, id, box) || polygon_overlaps_box(scene, id, box)) {
                     out.emplace_back(static_cast<std::uint32_t>(grid.index(x, y, z)), id);
                 }
@@ -165,7 +165,7 @@ void lay_out_with_bounds(const Scene& scene, SeadsGrid& grid, const std::vector<
 
 }  // namespace
 
-Box SeadsGrid::voxel_box(int x, int y, int z) const {
+Box3 SeadsGrid::voxel_box(int x, int y, int z) const {
     const Vec3 lo{world.lo.x + x * voxel_size.x, world.lo.y + y * voxel_size.y,
                   world.lo.z + z * voxel_size.z};
     // The last voxel ends exactly at the world's face, whatever the rounding of lo + n * size.

@@ -17,7 +17,7 @@ namespace rt {
 inline constexpr std::uint64_t kMaxSeadsVoxels = std::uint64_t{1} << 25;
 
 struct SeadsGrid {
-    Box world;
+    Box3 world;
     int side = 1;     ///< voxels along each axis
     Vec3 voxel_size;  ///< world extent / side, per axis
     /// side^3 + 1: voxel v's entries are [offsets[v], offsets[v+1]), none for an empty voxel
@@ -45,8 +45,8 @@ struct SeadsGrid {
         }
         return {polygons.data() + offsets[v] + bounds_slots, polygons.data() + offsets[v + 1]};
     }
-    /// Box of voxel (x, y, z), unpadded.
-    Box voxel_box(int x, int y, int z) const;
+    /// The box of voxel (x, y, z), not grown.
+    Box3 voxel_box(int x, int y, int z) const;
     std::size_t memory_bytes() const {
         return offsets.capacity() * sizeof(std::uint32_t) +
                polygons.capacity() * sizeof(std::uint32_t) +

@@ -13,18 +13,12 @@ constexpr double kWorldMargin = 0x1p-12;
 
 }  // namespace
 
-double Box::largest_extent() const {
-    const Vec3 e = extent();
-    return std::max({e.x, e.y, e.z});
-}
-
-double voxel_fudge(const Box& world, bool no_fudge) {
+double voxel_fudge(const Box3& world, bool no_fudge) {
     return no_fudge ? 0.0 : world.largest_extent() * 0x1p-24;
 }
 
-Box world_box(const Scene& scene, bool cube) {
-    Box box;
-    scene.bounds(box.lo, box.hi);
+Box3 world_box(const Scene& scene, bool cube) {
+    Box3 box = scene.bounds();
     double side = box.largest_extent();
     if (!(side > 0.0)) {
         // One point (or no polygon at all): any size will do, relative to where it is.
@@ -41,18 +35,16 @@ Box world_box(const Scene& scene, bool cube) {
     return box;
 }
 
-Box polygon_bounds(const Scene& scene, std::uint32_t polygon) {
+Box3 polygon_bounds(const Scene& scene, std::uint32_t polygon) {
     const Polygon& p = scene.polygons[polygon];
-    Box box{scene.corner_position(p, 0), scene.corner_position(p, 0)};
+    Box3 box = Box3::around(scene.corner_position(p, 0));
     for (std::uint32_t k = 1; k < p.corner_count; ++k) {
-        const Vec3 c = scene.corner_position(p, k);
-        box.lo = min_components(box.lo, c);
-        box.hi = max_components(box.hi, c);
+        box.add(scene.corner_position(p, k));
     }
     return box;
 }
 
-bool clip_to_box(const Ray& ray, const Box& box, Interval within, Interval& inside) {
+bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& inside) {
     double near = within.min;
     double far = within.max;
     for (int axis = 0; axis < 3; ++axis) {

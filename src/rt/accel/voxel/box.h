@@ -2,43 +2,30 @@
 // and where a ray enters and leaves one.
 #pragma once
 
+#include "rt/core/bounds.h"
 #include "rt/core/vec3.h"
 #include "rt/geometry/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
 
-struct Box {
-    Vec3 lo;
-    Vec3 hi;
-
-    Vec3 extent() const { return hi - lo; }
-    double largest_extent() const;
-    /// The box grown by `pad` on every side.
-    Box padded(double pad) const { return {lo - Vec3{pad, pad, pad}, hi + Vec3{pad, pad, pad}}; }
-    bool contains(const Vec3& p) const {
-        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z &&
-               p.z <= hi.z;
-    }
-};
-
 /// The box the voxel methods subdivide: the scene's bounds grown by a small margin (so that no
 /// polygon lies on the world's own faces) and never flat (a planar scene still gets some depth).
 /// With `cube`, every side is the largest (the octree halves one cube).
-Box world_box(const Scene& scene, bool cube);
+Box3 world_box(const Scene& scene, bool cube);
 
 /// "The fudge" (-of turns it off): how far every voxel is grown when deciding which polygons go
 /// into it, 2^-24 of the world's largest side. The walk's voxel boundaries and entry point are
 /// computed in floating point and may cut a voxel's corner by rounding; with every polygon also
 /// filed in the voxels within the fudge of it, a polygon the ray touches is still met. (The
 /// rounding of the hit's own t is the per-ray slack's job: near_hit_rule.h.) Zero with -of.
-double voxel_fudge(const Box& world, bool no_fudge);
+double voxel_fudge(const Box3& world, bool no_fudge);
 
 /// The smallest box around the polygon's corners.
-Box polygon_bounds(const Scene& scene, std::uint32_t polygon);
+Box3 polygon_bounds(const Scene& scene, std::uint32_t polygon);
 
 /// The part of the ray's t range inside the closed box, intersected with `within`; none if empty.
 /// A direction component of zero is handled exactly (no 0 * infinity).
-bool clip_to_box(const Ray& ray, const Box& box, Interval within, Interval& inside);
+bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& inside);
 
 }  // namespace rt

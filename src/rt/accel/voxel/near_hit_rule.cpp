@@ -12,7 +12,7 @@ WalkRules WalkRules::from(const AccelSettings& settings) {
     return rules;
 }
 
-double rounding_slack(const Ray& ray, const Box& world, const WalkRules& rules) {
+double rounding_slack(const Ray& ray, const Box3& world, const WalkRules& rules) {
     if (rules.no_fudge) {
         return 0.0;
     }

@@ -30,7 +30,7 @@ struct WalkRules {
 /// plus the world's size) covers it. The walk starts and ends that much beyond the interval and
 /// accepts a hit only that much before a voxel's exit, so it stays exact wherever the origin is.
 /// Zero with -of.
-double rounding_slack(const Ray& ray, const Box& world, const WalkRules& rules);
+double rounding_slack(const Ray& ray, const Box3& world, const WalkRules& rules);
 
 /// The interval to walk for a ray asked about `t`: `t` widened by the slack at both ends.
 inline Interval walk_interval(Interval t, double slack) {

@@ -56,7 +56,7 @@ bool overlaps(const Vec3* corners, std::uint32_t count, const Vec3& normal, cons
 
 }  // namespace
 
-bool polygon_overlaps_box(const Scene& scene, std::uint32_t polygon, const Box& box) {
+bool polygon_overlaps_box(const Scene& scene, std::uint32_t polygon, const Box3& box) {
     const Polygon& p = scene.polygons[polygon];
     const Vec3 centre = (box.lo + box.hi) * 0.5;
     const Vec3 half = (box.hi - box.lo) * 0.5;

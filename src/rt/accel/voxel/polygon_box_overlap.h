@@ -14,6 +14,6 @@ namespace rt {
 /// three, the polygon's normal, and each edge crossed with each box axis (Gottschalk's set for
 /// a flat convex polygon); projecting every corner on each keeps any of them a valid separator
 /// whatever the polygon's shape.
-bool polygon_overlaps_box(const Scene& scene, std::uint32_t polygon, const Box& box);
+bool polygon_overlaps_box(const Scene& scene, std::uint32_t polygon, const Box3& box);
 
 }  // namespace rt

@@ -51,7 +51,7 @@ PolygonBoxes::PolygonBoxes(const Scene& scene, double growth) {
     corners_.reserve(9 * scene.polygons.size());
     for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
         keep_triangle(scene, id);
-        const Box box = polygon_bounds(scene, id).padded(growth);
+        const Box3 box = polygon_bounds(scene, id).grown(growth);
         // Rounded to float outward, so the float box holds the double one.
         for (int a = 0; a < 3; ++a) {
             boxes_.push_back(std::nextafter(static_cast<float>(box.lo[a]), -HUGE_VALF));

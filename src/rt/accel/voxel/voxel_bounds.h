@@ -40,7 +40,7 @@ std::vector<float> grown_polygon_boxes(const Scene& scene, double growth);
 /// Appends to `out` the bounds of the voxel `voxel` holding `ids`: the union of their boxes from
 /// grown_polygon_boxes(scene, growth), clipped to the voxel grown by 2 * growth.
 void append_voxel_bounds(const std::vector<float>& grown_boxes, std::span<const std::uint32_t> ids,
-                         const Box& voxel, double growth, std::vector<std::uint32_t>& out);
+                         const Box3& voxel, double growth, std::vector<std::uint32_t>& out);
 
 /// The bounds in front of `ids` (a voxel's ids, from a structure that has bounds).
 inline std::array<float, 6> bounds_before(std::span<const std::uint32_t> ids) {

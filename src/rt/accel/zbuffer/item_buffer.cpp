@@ -54,12 +54,9 @@ ItemBuffer::ItemBuffer(const Scene& scene, const PinholeView& view, const ZBuffe
     pixel_margin_ = 1.01 * angle_tolerance_ * s * wide / pixel + 2.0 * kOnScreen +
                     1e-12 * (view.width + view.height);
 
-    Vec3 lo;
-    Vec3 hi;
-    scene.bounds(lo, hi);
-    const double farthest = length(max_components(hi - view.eye, view.eye - lo));
-    const double magnitude =
-        std::max(AxisBox{lo, hi}.magnitude(), AxisBox{view.eye, view.eye}.magnitude());
+    const Box3 bounds = scene.bounds();
+    const double farthest = length(max_components(bounds.hi - view.eye, view.eye - bounds.lo));
+    const double magnitude = std::max(bounds.magnitude(), Box3::around(view.eye).magnitude());
     rounding_ = 1e-12 * (farthest + s * std::sqrt(wide) + magnitude);
 
     const std::size_t count = scene.polygons.size();
@@ -113,11 +110,11 @@ ItemBuffer::Footprint ItemBuffer::footprint(const Scene& scene, std::uint32_t id
                                             double& nearest) const {
     const double min_cos = min_cosine_through(scene, id, view_.eye, eye_slack_);
     const PolygonReach reach = polygon_reach(scene, id, min_cos, rounding_);
-    const AxisBox region = reach.all();
+    const Box3 region = reach.all();
     nearest = distance_to(region, view_.eye) * (1.0 - 1e-12);
 
     const Polygon& polygon = scene.polygons[id];
-    AxisBox corners;
+    Box3 corners;
     for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
         corners.add(scene.corner_position(polygon, k));
     }
@@ -136,8 +133,8 @@ ItemBuffer::Footprint ItemBuffer::footprint(const Scene& scene, std::uint32_t id
         // The hull of the corners, each grown by the box's growth: tighter than the box.
         const Vec3 growth = max_components(corners.lo - reach.box.lo, reach.box.hi - corners.hi);
         for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
-            const AxisBox grown =
-                AxisBox{scene.corner_position(polygon, k), scene.corner_position(polygon, k)}.grown(
+            const Box3 grown =
+                Box3{scene.corner_position(polygon, k), scene.corner_position(polygon, k)}.grown(
                     growth);
             for (int c = 0; c < 8; ++c) {
                 points.push_back(grown.corner(c));
@@ -164,10 +161,10 @@ ItemBuffer::Footprint ItemBuffer::footprint(const Scene& scene, std::uint32_t id
 }
 
 ItemBuffer::Footprint ItemBuffer::pixels_of(const std::vector<Vec3>& points) const {
-    double x_lo = AxisBox::kInfinity;
-    double x_hi = -AxisBox::kInfinity;
-    double y_lo = AxisBox::kInfinity;
-    double y_hi = -AxisBox::kInfinity;
+    double x_lo = Box3::kInfinity;
+    double x_hi = -Box3::kInfinity;
+    double y_lo = Box3::kInfinity;
+    double y_hi = -Box3::kInfinity;
     for (const Vec3& p : points) {
         double px = 0.0;
         double py = 0.0;
