@@ -1,9 +1,9 @@
 // The lab's and the accelerator tests' synthetic meshes: sizes, closure, unit normals, bounds.
+#include "support/meshes/generated_meshes.h"
+
 #include <cmath>
 #include <map>
 #include <utility>
-
-#include "rt/scene/generated_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ void expect_unit_outward_triangles(const Scene& scene) {
 
 TEST(GeneratedMeshes, SphereIsClosedWithOutwardNormalsAndAboutTheAskedSize) {
     for (const std::uint32_t asked : {8u, 1000u, 10000u}) {
-        const Scene sphere = make_tessellated_sphere(asked, {1, 2, 3}, 2.0);
+        const Scene sphere = test::make_tessellated_sphere(asked, {1, 2, 3}, 2.0);
         expect_unit_outward_triangles(sphere);
         EXPECT_NEAR(static_cast<double>(sphere.polygons.size()), asked, 0.1 * asked + 8);
         // Closed: every edge is used once in each direction.
@@ -47,8 +47,8 @@ TEST(GeneratedMeshes, SphereIsClosedWithOutwardNormalsAndAboutTheAskedSize) {
 }
 
 TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
-    const Scene a = make_triangle_soup(2000, 5);
-    const Scene b = make_triangle_soup(2000, 5);
+    const Scene a = test::make_triangle_soup(2000, 5);
+    const Scene b = test::make_triangle_soup(2000, 5);
     ASSERT_EQ(a.polygons.size(), 2000u);
     expect_unit_outward_triangles(a);
     EXPECT_EQ(a.positions, b.positions);
@@ -66,7 +66,7 @@ TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
         }
         return sum / static_cast<double>(s.polygons.size());
     };
-    EXPECT_LT(mean_edge(make_triangle_soup(20000, 5)), 0.6 * mean_edge(a));
+    EXPECT_LT(mean_edge(test::make_triangle_soup(20000, 5)), 0.6 * mean_edge(a));
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
-#include "rt/scene/generated_meshes.h"
+#include "support/meshes/generated_meshes.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 
-namespace rt {
+namespace rt::test {
 
 namespace {
 
@@ -116,4 +116,4 @@ Scene make_triangle_soup(std::uint32_t triangles, std::uint64_t seed) {
     return scene;
 }
 
-}  // namespace rt
+}  // namespace rt::test

@@ -7,7 +7,7 @@
 
 #include "rt/scene/scene.h"
 
-namespace rt {
+namespace rt::test {
 
 /// A closed UV sphere of about `triangles` triangles (at least 8) around `centre`: shared
 /// positions, outward unit normals, a view looking at it from -z.
@@ -19,4 +19,4 @@ Scene make_tessellated_sphere(std::uint32_t triangles, const Vec3& centre = {},
 /// surface stays about the same whatever the count. Degenerate draws are redrawn.
 Scene make_triangle_soup(std::uint32_t triangles, std::uint64_t seed = 1);
 
-}  // namespace rt
+}  // namespace rt::test
