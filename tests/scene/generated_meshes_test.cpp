@@ -1,4 +1,4 @@
-// The lab's and the accelerator tests' synthetic meshes: sizes, closure, unit normals, bounds.
+// The tests' and benchmarks' synthetic meshes: sizes, closure, unit normals, bounds.
 #include "support/meshes/generated_meshes.h"
 
 #include <cmath>
@@ -67,6 +67,23 @@ TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
         return sum / static_cast<double>(s.polygons.size());
     };
     EXPECT_LT(mean_edge(test::make_triangle_soup(20000, 5)), 0.6 * mean_edge(a));
+}
+
+TEST(GeneratedMeshes, CubeSphereHasTwelveSquaresOfTrianglesOnTheUnitSphere) {
+    for (const std::uint32_t asked : {12u, 1000u, 20000u}) {
+        const Scene sphere = test::make_cube_sphere(asked);
+        expect_unit_outward_triangles(sphere);
+        const auto n = static_cast<std::uint32_t>(std::sqrt(asked / 12.0));
+        EXPECT_EQ(sphere.polygons.size(), 12u * n * n);  // 6 faces, n x n squares, 2 triangles
+        for (const Polygon& p : sphere.polygons) {
+            const Vec3 centroid = sphere.corner_position(p, 0) + sphere.corner_position(p, 1) +
+                                  sphere.corner_position(p, 2);
+            EXPECT_GT(dot(p.normal, centroid), 0.0);
+        }
+        for (const Vec3& p : sphere.positions) {
+            EXPECT_NEAR(length(p), 1.0, 1e-12);
+        }
+    }
 }
 
 }  // namespace

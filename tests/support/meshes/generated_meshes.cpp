@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 namespace rt::test {
 
@@ -113,6 +114,44 @@ Scene make_triangle_soup(std::uint32_t triangles, std::uint64_t seed) {
     scene.vertex_normals.assign(scene.positions.size(), Vec3{});
     scene.view.look = {0.5, 0.5, 0.5};
     scene.view.eye = {0.5, 0.5, -2.0};
+    return scene;
+}
+
+Scene make_cube_sphere(std::uint32_t triangles) {
+    const int n = std::max(1, static_cast<int>(std::sqrt(triangles / 12.0)));
+    Scene scene = empty_generated_scene("generated cube sphere");
+    const auto vertex = [&](int face, int i, int j) {
+        const double u = -1.0 + 2.0 * i / n;
+        const double v = -1.0 + 2.0 * j / n;
+        const int axis = face % 3;
+        const double side = face < 3 ? 1.0 : -1.0;
+        Vec3 p;
+        p[axis] = side;
+        p[(axis + 1) % 3] = u * side;
+        p[(axis + 2) % 3] = v;
+        scene.positions.push_back(normalize(p));
+        return static_cast<std::uint32_t>(scene.positions.size() - 1);
+    };
+    const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        add_triangle(scene, a, b, c, scene.positions[a] + scene.positions[b] + scene.positions[c]);
+    };
+    scene.polygons.reserve(static_cast<std::size_t>(12) * n * n);
+    for (int face = 0; face < 6; ++face) {
+        std::vector<std::uint32_t> grid;
+        for (int i = 0; i <= n; ++i) {
+            for (int j = 0; j <= n; ++j) {
+                grid.push_back(vertex(face, i, j));
+            }
+        }
+        const auto at = [&](int i, int j) { return grid[i * (n + 1) + j]; };
+        for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) {
+                add(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+                add(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+            }
+        }
+    }
+    scene.vertex_normals.assign(scene.positions.size(), Vec3{});
     return scene;
 }
 

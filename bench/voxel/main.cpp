@@ -1,6 +1,6 @@
-// voxel_bench: build time, memory and single-thread rays per second of SEADS and the octree on
-// tessellated spheres of 1k to 1M triangles (the yardstick). Usage:
-//   [ONLY=seads|octree] [SIDE=n] [DEPTH=n] build/bin/voxel_bench [max_triangles [rays
+// rt_voxel_bench: build time, memory and single-thread rays per second of SEADS and the octree on
+// cube spheres of 1k to 1M triangles (the yardstick). Usage (bench/README.md):
+//   [ONLY=seads|octree] [SIDE=n] [DEPTH=n] build-bench/bin/rt_voxel_bench [max_triangles [rays
 //   [min_triangles]]]
 // Rays are eye rays through a square grid of pixels in raster order, as the renderer traces them.
 #include <algorithm>
@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "rt/accel/make_accelerator.h"
+
+#include "support/meshes/generated_meshes.h"
 
 namespace {
 
@@ -29,52 +31,6 @@ double process_cpu_seconds() {
     timespec now{};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
     return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-// A sphere of about `triangles` triangles of even size: each face of a cube cut into an n x n
-// grid of squares, two triangles each, every vertex pushed out to the unit sphere. (A UV sphere's
-// poles, where hundreds of slivers meet, would measure the poles rather than the method.)
-rt::Scene sphere(int triangles) {
-    const int n = std::max(1, static_cast<int>(std::sqrt(triangles / 12.0)));
-    rt::Scene scene;
-    auto vertex = [&](int face, int i, int j) {
-        const double u = -1.0 + 2.0 * i / n;
-        const double v = -1.0 + 2.0 * j / n;
-        const int axis = face % 3;
-        const double side = face < 3 ? 1.0 : -1.0;
-        rt::Vec3 p;
-        p[axis] = side;
-        p[(axis + 1) % 3] = u * side;
-        p[(axis + 2) % 3] = v;
-        scene.positions.push_back(rt::normalize(p));
-        return static_cast<std::uint32_t>(scene.positions.size() - 1);
-    };
-    auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        const rt::Vec3 normal = rt::cross(scene.positions[b] - scene.positions[a],
-                                          scene.positions[c] - scene.positions[a]);
-        rt::Polygon p;
-        p.first_corner = static_cast<std::uint32_t>(scene.corners.size());
-        p.corner_count = 3;
-        p.normal = rt::normalize(normal);
-        scene.corners.insert(scene.corners.end(), {a, b, c});
-        scene.polygons.push_back(p);
-    };
-    for (int face = 0; face < 6; ++face) {
-        std::vector<std::uint32_t> grid;
-        for (int i = 0; i <= n; ++i) {
-            for (int j = 0; j <= n; ++j) {
-                grid.push_back(vertex(face, i, j));
-            }
-        }
-        const auto at = [&](int i, int j) { return grid[i * (n + 1) + j]; };
-        for (int i = 0; i < n; ++i) {
-            for (int j = 0; j < n; ++j) {
-                add(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-                add(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-            }
-        }
-    }
-    return scene;
 }
 
 // SIDE=n and DEPTH=n in the environment override the grid size and octree depth.
@@ -129,7 +85,7 @@ int main(int argc, char** argv) {
     const char* only = std::getenv("ONLY");  // "seads" or "octree": measure just that one
     const int min_triangles = argc > 3 ? std::atoi(argv[3]) : 1000;
     for (int triangles = min_triangles; triangles <= max_triangles; triangles *= 10) {
-        const rt::Scene scene = sphere(triangles);
+        const rt::Scene scene = rt::test::make_cube_sphere(static_cast<std::uint32_t>(triangles));
         rt::AccelSettings seads;
         seads.kind = rt::AccelKind::Seads;
         // About one voxel a side per cube root of the triangle count (measured best for the
