@@ -7,7 +7,7 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include "lab_measure.h"
 #include "lab_options.h"

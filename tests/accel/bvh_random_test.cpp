@@ -7,7 +7,7 @@
 #include "rt/accel/brute_force.h"
 #include "rt/accel/bvh/bvh.h"
 #include "rt/core/diagnostics.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "rt/accel/make_accelerator.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 
