@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "rt/sampling/chi_square.h"
+#include "rt/sampling/sampling_settings.h"
 #include "rt/shading/optics.h"
 #include "rt/shading/surface_point.h"
 

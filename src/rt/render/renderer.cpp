@@ -9,6 +9,7 @@
 #include "rt/render/camera.h"
 #include "rt/render/ray_tracer.h"
 #include "rt/sampling/chi_square.h"
+#include "rt/sampling/sampling_settings.h"
 #include "rt/sampling/sample_stream.h"
 #include "rt/sampling/strata.h"
 
