@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "rt/sampling/chi_square.h"
+#include "rt/sampling/adaptive_mean.h"
 #include "rt/sampling/sampling_settings.h"
 #include "rt/shading/optics.h"
 #include "rt/shading/surface_point.h"
@@ -194,12 +194,7 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
     }
     const SamplingSettings& sampling = settings_.sampling;
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
-    const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
-    RunningStatistics statistics;
-    SurfaceSeen seen;
-    bool one_surface = true;
-    bool rim_checked = false;
-    for (std::uint32_t k = 0; k < total; ++k) {
+    const auto take = [&](std::uint32_t k) {
         double u1 = 0.0;
         double u2 = 0.0;
         const double j1 = sample.stream.uniform();
@@ -208,23 +203,15 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
         Vec3 direction = lobe.diffuse ? sample_cosine_hemisphere(lobe.axis, u1, u2)
                                       : sample_cone(lobe.cone, lobe.axis, u1, u2);
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
-        statistics.add(trace({s.position, direction}, lobe.kind, depth + 1, true, sample));
+        const Rgb value = trace({s.position, direction}, lobe.kind, depth + 1, true, sample);
         ++sample.tree.distributed_rays;
-        one_surface = one_surface && (k == 0 || sample.last_seen == seen);
-        seen = sample.last_seen;
-        if (!sampling.adaptive || k + 1 < minimum || !one_surface ||
-            !sampling.ray_stop.satisfied(statistics.count(), statistics.display_variance())) {
-            continue;
-        }
-        if (!rim_checked) {
-            rim_checked = true;
-            one_surface = lobe.diffuse || rim_sees(lobe, s, seen, sample);
-        }
-        if (one_surface) {
-            break;
-        }
-    }
-    return statistics.mean();
+        return SeenSample<SurfaceSeen>{value, sample.last_seen};
+    };
+    const auto rim_agrees = [&](const SurfaceSeen& seen) {
+        return lobe.diffuse || rim_sees(lobe, s, seen, sample);
+    };
+    return adaptive_mean(total, sampling.adaptive ? &sampling.ray_stop : nullptr, take, rim_agrees)
+        .mean();
 }
 
 bool RayTracer::rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
