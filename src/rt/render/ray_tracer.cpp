@@ -116,6 +116,9 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
     const Attribute& a = *s.attribute;
     const bool distribute =
         full && settings_.sampling.distribute && depth <= max_distributed_depth_;
+    const LobeRays rays = distribute ? LobeRays::Distributed
+                          : full     ? LobeRays::Axis
+                                     : LobeRays::AxisSimple;
     bool distributed_here = false;
     Rgb result;
     if (settings_.reflection && a.specular > 0.0) {
@@ -129,19 +132,18 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         false,
                         RayKind::Reflected};
         distributed_here = distributed_here || (distribute && lobe.cone.half_angle > 0.0);
-        result += gather(lobe, s, depth, distribute, !full, sample) * a.specular;
+        result += gather(lobe, s, depth, rays, sample) * a.specular;
     }
     if (s.transmission > 0.0) {
         distributed_here = distributed_here || (distribute && a.refract_cone_degrees > 0.0);
-        result +=
-            refracted_rays(ray, s, depth, distribute, !full, sample) * a.color * s.transmission;
+        result += refracted_rays(ray, s, depth, rays, sample) * a.color * s.transmission;
     }
     if (diffuse_rays_ && a.diffuse > 0.0) {
         // Without shadow feelers light reaches a point only along rays that find emitters
         // (manual Appendix -Ds); diffuse reflection then needs rays of its own.
         const Lobe lobe{s.shading_normal, {}, true, true, RayKind::Diffuse};
         distributed_here = distributed_here || distribute;
-        result += gather(lobe, s, depth, distribute, !full, sample) * a.color * a.diffuse;
+        result += gather(lobe, s, depth, rays, sample) * a.color * a.diffuse;
     }
     if (distributed_here) {
         ++sample.tree.distributed_intersections;
@@ -151,8 +153,8 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
 
 // One refracted ray, or with -R and differing indices one per colour channel, each keeping only
 // its own channel. Total internal reflection sends the ray back inside.
-Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, bool distribute,
-                              bool simple, SampleContext& sample) const {
+Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, LobeRays rays,
+                              SampleContext& sample) const {
     const Attribute& a = *s.attribute;
     const Rgb& index = a.refraction_index;
     const bool split = index.r != index.g || index.g != index.b;
@@ -172,7 +174,7 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         !bent,  // totally reflected light stays on the ray's side
                         false,
                         RayKind::Refracted};
-        const Rgb traced = gather(lobe, s, depth, distribute, simple, sample);
+        const Rgb traced = gather(lobe, s, depth, rays, sample);
         if (!split) {
             return traced;
         }
@@ -186,10 +188,12 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
 // (SurfaceSeen) and, for a cone, four probes along its rim see it too: an edge can slip between a
 // lobe's first rays, as between a pixel's first samples, most often where a glossy reflection
 // runs off a polygon into the background. A diffuse lobe's hemisphere has no rim worth probing.
-Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool distribute,
-                      bool simple, SampleContext& sample) const {
+Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRays rays,
+                      SampleContext& sample) const {
+    const bool distribute = rays == LobeRays::Distributed;
     const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
     if (!spread) {
+        const bool simple = rays == LobeRays::AxisSimple;
         return trace({s.position, lobe.axis}, lobe.kind, depth + 1, simple, sample);
     }
     const SamplingSettings& sampling = settings_.sampling;
