@@ -18,11 +18,11 @@ function(rt_add_module name)
   endif()
 endfunction()
 
-# rt_add_tests(NAME DEPS dep...): one GoogleTest binary from the *.cpp files in tests/NAME (every
-# *_test.cpp, and the helpers beside them).
+# rt_add_tests(NAME DEPS dep...): one GoogleTest binary from the *.cpp files in tests/NAME and its
+# folders, which mirror src/rt/NAME's (every *_test.cpp, and the helpers beside them).
 function(rt_add_tests name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
-  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp)
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp)
   if(NOT sources)
     return()
   endif()

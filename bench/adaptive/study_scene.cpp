@@ -4,7 +4,7 @@
 
 #include "rt/app/run.h"
 #include "rt/app/run_settings.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 namespace rt::bench {
 

@@ -7,13 +7,13 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
-#include "rt/scene/generated_meshes.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include "lab_measure.h"
 #include "lab_options.h"
 #include "lab_rays.h"
 #include "lab_report.h"
+#include "support/meshes/generated_meshes.h"
 #include "svg_plot.h"
 
 namespace {
@@ -48,8 +48,8 @@ int run(const LabOptions& options) {
             throw rt::UsageError("rt_lab: unknown mesh '" + mesh + "' (sphere, soup, twocubes)");
         }
         for (const std::uint32_t size : options.sizes) {
-            const rt::Scene scene =
-                mesh == "sphere" ? rt::make_tessellated_sphere(size) : rt::make_triangle_soup(size);
+            const rt::Scene scene = mesh == "sphere" ? rt::test::make_tessellated_sphere(size)
+                                                     : rt::test::make_triangle_soup(size);
             run_scene(scene, mesh, options, results);
         }
     }

@@ -5,7 +5,7 @@
 #include "rt/accel/brute_force.h"
 #include "rt/core/diagnostics.h"
 #include "rt/render/camera.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <benchmark/benchmark.h>
 

@@ -9,7 +9,7 @@
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include "bench_arguments.h"
 #include "bench_report.h"

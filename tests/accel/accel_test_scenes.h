@@ -9,7 +9,7 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/geometry/ray.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 #include "rt/scene/scene.h"
 
 #include "support/scene_builder.h"

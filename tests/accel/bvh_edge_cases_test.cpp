@@ -10,11 +10,11 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/bvh/bvh.h"
-#include "rt/scene/generated_meshes.h"
 
 #include <gtest/gtest.h>
 
 #include "accel_compare.h"
+#include "support/meshes/generated_meshes.h"
 #include "support/scene_builder.h"
 
 namespace rt {
@@ -83,7 +83,7 @@ TEST(BvhEdgeCases, RaysStartingOnFacesAndInsideBoxes) {
         }
     }
     expect_same_answers(scene, bvh, queries);
-    const Scene sphere = make_tessellated_sphere(2000);
+    const Scene sphere = test::make_tessellated_sphere(2000);
     test::compare_with_brute_force(sphere, Bvh(sphere), 500, 3);
     std::vector<RayQuery> inside;
     for (int i = 0; i < 400; ++i) {
@@ -170,7 +170,7 @@ TEST(BvhEdgeCases, PolygonsWithoutANormalTakeTheGrazingDepth) {
     // A zero normal makes every hit a grazing one, whose depth comes from the corners and the
     // line's span in the corner box, not from a plane: the BVH culls boxes by where the line
     // enters and leaves them, and must still find each such hit, at the same t.
-    Scene scene = make_triangle_soup(300, 31);
+    Scene scene = test::make_triangle_soup(300, 31);
     for (Polygon& p : scene.polygons) {
         p.normal = Vec3{0, 0, 0};
     }
@@ -201,7 +201,7 @@ TEST(BvhEdgeCases, PolygonsWithoutANormalTakeTheGrazingDepth) {
 TEST(BvhEdgeCases, CoordinatesBeyondTheFloatTests) {
     for (const double scale : {1e-30, 1e15, 1e200}) {
         SCOPED_TRACE(scale);
-        Scene scene = make_triangle_soup(200, 9);
+        Scene scene = test::make_triangle_soup(200, 9);
         for (Vec3& p : scene.positions) {
             p = p * scale;
         }
@@ -209,7 +209,7 @@ TEST(BvhEdgeCases, CoordinatesBeyondTheFloatTests) {
     }
     // The rays come from the finite corners' box, so they are finite and a fifth hit; a few aim
     // at the broken polygons' corners.
-    Scene with_nan = make_triangle_soup(100, 10);
+    Scene with_nan = test::make_triangle_soup(100, 10);
     with_nan.positions[5].y = std::numeric_limits<double>::quiet_NaN();
     with_nan.positions[9].x = std::numeric_limits<double>::infinity();
     test::compare_with_brute_force(with_nan, Bvh(with_nan), 1000, 24, 0.2);
@@ -236,7 +236,7 @@ TEST(BvhEdgeCases, EmptyScenesAndInvalidRays) {
 }
 
 TEST(BvhEdgeCases, ConcurrentQueriesGiveTheSameAnswers) {
-    const Scene scene = make_triangle_soup(5000, 11);
+    const Scene scene = test::make_triangle_soup(5000, 11);
     const Bvh bvh(scene);
     const std::vector<RayQuery> queries = test::random_queries(scene, 4000, 26);
     std::vector<std::optional<Hit>> sequential;

@@ -7,12 +7,12 @@
 #include "rt/accel/brute_force.h"
 #include "rt/accel/bvh/bvh.h"
 #include "rt/core/diagnostics.h"
-#include "rt/scene/generated_meshes.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 
 #include "accel_compare.h"
+#include "support/meshes/generated_meshes.h"
 #include "support/scene_builder.h"
 #include "support/temp_dir.h"
 
@@ -23,7 +23,7 @@ using test::compare_with_brute_force;
 
 TEST(BvhRandomRays, SoupsOfSeveralSizes) {
     for (const std::uint32_t count : {1u, 7u, 100u, 3000u}) {
-        const Scene scene = make_triangle_soup(count, count);
+        const Scene scene = test::make_triangle_soup(count, count);
         const Bvh bvh(scene);
         compare_with_brute_force(scene, bvh, 4000, count);
     }
@@ -31,7 +31,7 @@ TEST(BvhRandomRays, SoupsOfSeveralSizes) {
 
 TEST(BvhRandomRays, TessellatedSpheres) {
     for (const std::uint32_t count : {8u, 500u, 20000u}) {
-        const Scene scene = make_tessellated_sphere(count);
+        const Scene scene = test::make_tessellated_sphere(count);
         const Bvh bvh(scene);
         compare_with_brute_force(scene, bvh, 6000, count + 1);
     }
@@ -55,7 +55,7 @@ TEST(BvhRandomRays, TwoCubes) {
 }
 
 TEST(BvhRandomRays, SingleThreadedBuildGivesTheSameAnswers) {
-    const Scene scene = make_triangle_soup(20000, 5);
+    const Scene scene = test::make_triangle_soup(20000, 5);
     compare_with_brute_force(scene, Bvh(scene, BvhSettings{1}), 3000, 15);
 }
 

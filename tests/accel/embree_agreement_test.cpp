@@ -8,12 +8,12 @@
 #include "rt/accel/make_accelerator.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
-#include "rt/scene/generated_meshes.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 
 #include "accel_compare.h"
+#include "support/meshes/generated_meshes.h"
 #include "support/scene_builder.h"
 #include "support/temp_dir.h"
 
@@ -59,12 +59,12 @@ void expect_mostly_same(const Scene& scene, int rays, std::uint64_t seed) {
 }
 
 TEST(EmbreeAgreement, Spheres) {
-    expect_mostly_same(make_tessellated_sphere(5000), 5000, 1);
+    expect_mostly_same(test::make_tessellated_sphere(5000), 5000, 1);
     expect_mostly_same(test::make_sphere({1, 2, 3}, 2.0, 10, 16, false), 5000, 2);
 }
 
 TEST(EmbreeAgreement, Soup) {
-    expect_mostly_same(make_triangle_soup(5000, 3), 5000, 3);
+    expect_mostly_same(test::make_triangle_soup(5000, 3), 5000, 3);
 }
 
 TEST(EmbreeAgreement, TwoCubes) {

@@ -4,7 +4,7 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 

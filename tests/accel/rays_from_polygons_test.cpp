@@ -16,12 +16,12 @@
 #include "rt/accel/make_accelerator.h"
 #include "rt/accel/octree/octree.h"
 #include "rt/accel/seads/seads.h"
-#include "rt/scene/generated_meshes.h"
 
 #include <gtest/gtest.h>
 
 #include "accel_test_scenes.h"
 #include "grid_test_support.h"
+#include "support/meshes/generated_meshes.h"
 #include "surface_rays.h"
 
 namespace rt::test {

@@ -25,7 +25,7 @@
 #include "rt/app/switch_parser.h"
 #include "rt/image/film_reference.h"
 #include "rt/render/renderer.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 

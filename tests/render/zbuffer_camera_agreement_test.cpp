@@ -4,7 +4,7 @@
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
 #include "rt/core/diagnostics.h"
 #include "rt/render/camera.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// The lab's and the accelerator tests' synthetic meshes: sizes, closure, unit normals, bounds.
-#include "rt/scene/generated_meshes.h"
+// The tests' and benchmarks' synthetic meshes: sizes, closure, unit normals, bounds.
+#include "support/meshes/generated_meshes.h"
 
 #include <cmath>
 #include <map>
@@ -21,7 +21,7 @@ void expect_unit_outward_triangles(const Scene& scene) {
 
 TEST(GeneratedMeshes, SphereIsClosedWithOutwardNormalsAndAboutTheAskedSize) {
     for (const std::uint32_t asked : {8u, 1000u, 10000u}) {
-        const Scene sphere = make_tessellated_sphere(asked, {1, 2, 3}, 2.0);
+        const Scene sphere = test::make_tessellated_sphere(asked, {1, 2, 3}, 2.0);
         expect_unit_outward_triangles(sphere);
         EXPECT_NEAR(static_cast<double>(sphere.polygons.size()), asked, 0.1 * asked + 8);
         // Closed: every edge is used once in each direction.
@@ -47,12 +47,14 @@ TEST(GeneratedMeshes, SphereIsClosedWithOutwardNormalsAndAboutTheAskedSize) {
 }
 
 TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
-    const Scene a = make_triangle_soup(2000, 5);
-    const Scene b = make_triangle_soup(2000, 5);
+    const Scene a = test::make_triangle_soup(2000, 5);
+    const Scene b = test::make_triangle_soup(2000, 5);
     ASSERT_EQ(a.polygons.size(), 2000u);
     expect_unit_outward_triangles(a);
     EXPECT_EQ(a.positions, b.positions);
-    const auto [lo, hi] = a.bounds();
+    Vec3 lo;
+    Vec3 hi;
+    a.bounds(lo, hi);
     for (int k = 0; k < 3; ++k) {
         EXPECT_GE(lo[k], 0.0);
         EXPECT_LE(hi[k], 1.0);
@@ -64,7 +66,24 @@ TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
         }
         return sum / static_cast<double>(s.polygons.size());
     };
-    EXPECT_LT(mean_edge(make_triangle_soup(20000, 5)), 0.6 * mean_edge(a));
+    EXPECT_LT(mean_edge(test::make_triangle_soup(20000, 5)), 0.6 * mean_edge(a));
+}
+
+TEST(GeneratedMeshes, CubeSphereHasTwelveSquaresOfTrianglesOnTheUnitSphere) {
+    for (const std::uint32_t asked : {12u, 1000u, 20000u}) {
+        const Scene sphere = test::make_cube_sphere(asked);
+        expect_unit_outward_triangles(sphere);
+        const auto n = static_cast<std::uint32_t>(std::sqrt(asked / 12.0));
+        EXPECT_EQ(sphere.polygons.size(), 12u * n * n);  // 6 faces, n x n squares, 2 triangles
+        for (const Polygon& p : sphere.polygons) {
+            const Vec3 centroid = sphere.corner_position(p, 0) + sphere.corner_position(p, 1) +
+                                  sphere.corner_position(p, 2);
+            EXPECT_GT(dot(p.normal, centroid), 0.0);
+        }
+        for (const Vec3& p : sphere.positions) {
+            EXPECT_NEAR(length(p), 1.0, 1e-12);
+        }
+    }
 }
 
 }  // namespace

@@ -16,10 +16,9 @@ enum class AccelKind { BruteForce, Octree, Seads, Bvh, Embree };
 std::string_view accel_kind_name(AccelKind kind);
 std::optional<AccelKind> accel_kind_from_name(std::string_view name);
 
-/// Voxel sizes for a scene of this many polygons when nothing names one, measured best on
-/// tessellated spheres (tools/voxel_bench): about one SEADS voxel a side per cube root of the
-/// count (finer grids walk more empty voxels than they save tests), and an octree depth of
-/// log2(count) / 2.5.
+/// Voxel sizes for a scene of this many polygons when nothing names one, measured best on cube
+/// spheres (bench/voxel): about one SEADS voxel a side per cube root of the count (finer grids
+/// walk more empty voxels than they save tests), and an octree depth of log2(count) / 2.5.
 int suggested_seads_resolution(std::size_t polygons);
 int suggested_octree_depth(std::size_t polygons);
 

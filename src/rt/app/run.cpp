@@ -13,7 +13,7 @@
 #include "rt/image/image_writer.h"
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <fmt/format.h>
 

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "rt/sampling/chi_square.h"
+#include "rt/sampling/adaptive_mean.h"
+#include "rt/sampling/sampling_settings.h"
 #include "rt/shading/optics.h"
 #include "rt/shading/surface_point.h"
 
@@ -112,6 +113,9 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
     const Attribute& a = *s.attribute;
     const bool distribute =
         full && settings_.sampling.distribute && depth <= max_distributed_depth_;
+    const LobeRays rays = distribute ? LobeRays::Distributed
+                          : full     ? LobeRays::Axis
+                                     : LobeRays::AxisSimple;
     bool distributed_here = false;
     Rgb result;
     if (settings_.reflection && a.specular > 0.0) {
@@ -125,19 +129,18 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         false,
                         RayKind::Reflected};
         distributed_here = distributed_here || (distribute && lobe.cone.half_angle > 0.0);
-        result += gather(lobe, s, depth, distribute, !full, sample) * a.specular;
+        result += gather(lobe, s, depth, rays, sample) * a.specular;
     }
     if (s.transmission > 0.0) {
         distributed_here = distributed_here || (distribute && a.refract_cone_degrees > 0.0);
-        result +=
-            refracted_rays(ray, s, depth, distribute, !full, sample) * a.color * s.transmission;
+        result += refracted_rays(ray, s, depth, rays, sample) * a.color * s.transmission;
     }
     if (diffuse_rays_ && a.diffuse > 0.0) {
         // Without shadow feelers light reaches a point only along rays that find emitters
         // (manual Appendix -Ds); diffuse reflection then needs rays of its own.
         const Lobe lobe{s.shading_normal, {}, true, true, RayKind::Diffuse};
         distributed_here = distributed_here || distribute;
-        result += gather(lobe, s, depth, distribute, !full, sample) * a.color * a.diffuse;
+        result += gather(lobe, s, depth, rays, sample) * a.color * a.diffuse;
     }
     if (distributed_here) {
         ++sample.tree.distributed_intersections;
@@ -147,8 +150,8 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
 
 // One refracted ray, or with -R and differing indices one per colour channel, each keeping only
 // its own channel. Total internal reflection sends the ray back inside.
-Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, bool distribute,
-                              bool simple, SampleContext& sample) const {
+Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, LobeRays rays,
+                              SampleContext& sample) const {
     const Attribute& a = *s.attribute;
     const Rgb& index = a.refraction_index;
     const bool split = index.r != index.g || index.g != index.b;
@@ -168,7 +171,7 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         !bent,  // totally reflected light stays on the ray's side
                         false,
                         RayKind::Refracted};
-        const Rgb traced = gather(lobe, s, depth, distribute, simple, sample);
+        const Rgb traced = gather(lobe, s, depth, rays, sample);
         if (!split) {
             return traced;
         }
@@ -182,20 +185,17 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
 // (SurfaceSeen) and, for a cone, four probes along its rim see it too: an edge can slip between a
 // lobe's first rays, as between a pixel's first samples, most often where a glossy reflection
 // runs off a polygon into the background. A diffuse lobe's hemisphere has no rim worth probing.
-Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool distribute,
-                      bool simple, SampleContext& sample) const {
+Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRays rays,
+                      SampleContext& sample) const {
+    const bool distribute = rays == LobeRays::Distributed;
     const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
     if (!spread) {
+        const bool simple = rays == LobeRays::AxisSimple;
         return trace({s.position, lobe.axis}, lobe.kind, depth + 1, simple, sample);
     }
     const SamplingSettings& sampling = settings_.sampling;
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
-    const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
-    RunningStatistics statistics;
-    SurfaceSeen seen;
-    bool one_surface = true;
-    bool rim_checked = false;
-    for (std::uint32_t k = 0; k < total; ++k) {
+    const auto take = [&](std::uint32_t k) {
         double u1 = 0.0;
         double u2 = 0.0;
         const double j1 = sample.stream.uniform();
@@ -204,23 +204,15 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool d
         Vec3 direction = lobe.diffuse ? sample_cosine_hemisphere(lobe.axis, u1, u2)
                                       : sample_cone(lobe.cone, lobe.axis, u1, u2);
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
-        statistics.add(trace({s.position, direction}, lobe.kind, depth + 1, true, sample));
+        const Rgb value = trace({s.position, direction}, lobe.kind, depth + 1, true, sample);
         ++sample.tree.distributed_rays;
-        one_surface = one_surface && (k == 0 || sample.last_seen == seen);
-        seen = sample.last_seen;
-        if (!sampling.adaptive || k + 1 < minimum || !one_surface ||
-            !sampling.ray_stop.satisfied(statistics.count(), statistics.display_variance())) {
-            continue;
-        }
-        if (!rim_checked) {
-            rim_checked = true;
-            one_surface = lobe.diffuse || rim_sees(lobe, s, seen, sample);
-        }
-        if (one_surface) {
-            break;
-        }
-    }
-    return statistics.mean();
+        return SeenSample<SurfaceSeen>{value, sample.last_seen};
+    };
+    const auto rim_agrees = [&](const SurfaceSeen& seen) {
+        return lobe.diffuse || rim_sees(lobe, s, seen, sample);
+    };
+    return adaptive_mean(total, sampling.adaptive ? &sampling.ray_stop : nullptr, take, rim_agrees)
+        .mean();
 }
 
 bool RayTracer::rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,

@@ -62,16 +62,23 @@ public:
 
 private:
     struct Lobe;
+    /// How the lobes at one hit send their rays.
+    enum class LobeRays {
+        Distributed,  ///< a distribution in each cone, as many rays as -Xr asks for
+        Axis,         ///< one ray along each lobe's axis (-Dd, or deeper than maxdist)
+        AxisSimple,   ///< one ray along the axis, from the hit of a distributed ray without -I:
+                      ///< it keeps the simple model
+    };
     /// Whether rays along the cone's rim see `seen` too (see gather).
     bool rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
                   SampleContext& sample) const;
     Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
                        SampleContext& sample) const;
-    Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, bool distribute,
-                       bool simple, SampleContext& sample) const;
-    /// The mean intensity over a lobe: one ray along its axis, or a distribution of rays.
-    /// `simple`: the rays descend from a distributed ray and keep its simple model (no -I).
-    Rgb gather(const Lobe& lobe, const SurfacePoint& s, int depth, bool distribute, bool simple,
+    Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, LobeRays rays,
+                       SampleContext& sample) const;
+    /// The mean intensity over a lobe: one ray along its axis, or a distribution of rays (a
+    /// diffuse lobe always spreads its rays over the hemisphere).
+    Rgb gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRays rays,
                SampleContext& sample) const;
 
     const Scene& scene_;

@@ -8,8 +8,9 @@
 
 #include "rt/render/camera.h"
 #include "rt/render/ray_tracer.h"
-#include "rt/sampling/chi_square.h"
+#include "rt/sampling/adaptive_mean.h"
 #include "rt/sampling/sample_stream.h"
+#include "rt/sampling/sampling_settings.h"
 #include "rt/sampling/strata.h"
 
 namespace rt {
@@ -67,12 +68,7 @@ bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, Sampl
 Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelReport& report) {
     const SamplingSettings& sampling = job.settings.shading.sampling;
     const std::uint32_t total = job.pixel_strata.size();
-    const std::uint32_t minimum = sampling.adaptive ? minimum_samples(total) : total;
-    RunningStatistics statistics;
-    SurfaceSeen seen;
-    bool one_surface = true;
-    bool neighbours_checked = false;
-    for (std::uint32_t k = 0; k < total; ++k) {
+    const auto take = [&](std::uint32_t k) {
         SampleStream stream(sampling.seed, x, y, k);
         double px = 0.5;
         double py = 0.5;
@@ -82,25 +78,18 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
             job.pixel_strata.point(k, j1, j2, px, py);
         }
         SampleContext sample{stream, counters, report.tree, {}};
-        statistics.add(job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1,
-                                        false, sample));
-        one_surface = one_surface && (k == 0 || sample.last_seen == seen);
-        seen = sample.last_seen;
-        if (!sampling.adaptive || k + 1 < minimum || !one_surface ||
-            !sampling.pixel_stop.satisfied(statistics.count(), statistics.display_variance())) {
-            continue;
-        }
-        if (!neighbours_checked) {
-            neighbours_checked = true;
-            SampleStream probe_stream(sampling.seed, x, y, total);  // after the pixel's samples
-            SampleContext probe{probe_stream, counters, report.tree, {}};
-            one_surface = neighbours_see(job, x, y, seen, probe);
-            report.probes += 4;
-        }
-        if (one_surface) {
-            break;
-        }
-    }
+        const Rgb value = job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1,
+                                           false, sample);
+        return SeenSample<SurfaceSeen>{value, sample.last_seen};
+    };
+    const auto neighbours_agree = [&](const SurfaceSeen& seen) {
+        SampleStream probe_stream(sampling.seed, x, y, total);  // after the pixel's samples
+        SampleContext probe{probe_stream, counters, report.tree, {}};
+        report.probes += 4;
+        return neighbours_see(job, x, y, seen, probe);
+    };
+    const RunningStatistics statistics = adaptive_mean(
+        total, sampling.adaptive ? &sampling.pixel_stop : nullptr, take, neighbours_agree);
     report.samples = statistics.count();
     return statistics.mean();
 }

@@ -1,24 +1,12 @@
-// The illumination and sampling switches as plain settings (manual Appendix: -A -Da -Dl -Ds -Dr
-// -Dt -Db -T -Po -Dd -Dx -Xp -Xr -I).
+// The illumination switches as plain settings (manual Appendix: -A -Da -Dl -Ds -Dr -Dt -Db -T -Po
+// -F -S -C -W -Ot -Oi), carrying the sampling settings (rt/sampling/sampling_settings.h) along.
 #pragma once
 
-#include <cstdint>
-
-#include "rt/sampling/chi_square.h"
+#include "rt/sampling/sampling_settings.h"
 #include "rt/shading/specular_model.h"
 #include "rt/shading/warn_light.h"
 
 namespace rt {
-
-/// Distributed ray tracing and adaptive supersampling (manual 1.3, 2.2, -D d, -D x, -X, -I).
-struct SamplingSettings {
-    std::uint64_t seed = 0;               ///< --seed: the same seed, the same picture
-    bool distribute = true;               ///< off with -Dd: one reflected, one refracted ray
-    bool adaptive = true;                 ///< off with -Dx: always every sample
-    ChiSquareStop pixel_stop;             ///< -Xp prob,var
-    ChiSquareStop ray_stop;               ///< -Xr prob,var
-    bool illuminate_distributed = false;  ///< -I: the full model at distributed rays' hits
-};
 
 /// -F distangle,distfac: distributed shadow feelers for fuzzy shadows. distfac is read as the
 /// number of feelers per light (rounded up).
@@ -40,7 +28,7 @@ struct ShadingSettings {
     bool far_side_feelers = false;             ///< -T
     bool smooth_shaded_opaque = false;         ///< -Po: smooth-shaded polygons are opaque
     double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
-    SamplingSettings sampling;
+    SamplingSettings sampling;      ///< read by the renderer and the ray tree, not by shading
     FuzzyFeelers fuzzy;             ///< -F
     SpecularSettings specular;      ///< -S and -C: the highlight's law and colour
     WarnSettings warn;              ///< -Wr -Wc -Wt
@@ -52,10 +40,5 @@ struct ShadingSettings {
         return 1.0 / (distance / attenuation_distance + attenuation_constant);
     }
 };
-
-/// -Oi, the earliest version of the raytracer (docs/rendering.md): Whitted's model as first
-/// written, before attenuation, transparent shadows and distribution were added, and with an
-/// emitter's point sources each at its full power. `every_sample` (-O1) also takes every sample.
-ShadingSettings earliest_version(ShadingSettings settings, bool every_sample);
 
 }  // namespace rt

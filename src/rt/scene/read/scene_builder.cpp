@@ -1,0 +1,190 @@
+#include "rt/scene/read/scene_builder.h"
+
+#include <limits>
+
+#include "rt/scene/polygon_geometry.h"
+#include "rt/scene/read/field_reader.h"
+
+#include <fmt/format.h>
+
+namespace rt {
+
+namespace {
+
+constexpr std::size_t kMaxIndex = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kUnplaced = std::numeric_limits<std::uint32_t>::max();
+
+const char* shape_kind(PolygonMark mark) {
+    return mark == PolygonMark::Sphere     ? "sphere"
+           : mark == PolygonMark::Cylinder ? "cylinder"
+                                           : "cone";
+}
+
+// A shape's numbers must make sense for the kind a polygon's mark gives it.
+void check_shape_use(const Shape& s, PolygonMark mark, const SourceLocation& used_at) {
+    const std::string use = fmt::format("shape {} is used as a {} by {}", s.index, shape_kind(mark),
+                                        used_at.to_string());
+    if (mark == PolygonMark::Cone) {
+        if (!(s.radius_or_angle > 0 && s.radius_or_angle < 90)) {
+            throw InputError(s.where, use + ", but its half-angle " +
+                                          show_number(s.radius_or_angle) +
+                                          " is not between 0 and 90 degrees");
+        }
+    } else if (!(s.radius_or_angle > 0)) {
+        throw InputError(s.where, use + ", but its radius " + show_number(s.radius_or_angle) +
+                                      " is not positive");
+    }
+    if (mark != PolygonMark::Sphere && s.first == s.second) {
+        throw InputError(s.where, use + ", but its two axis points are the same");
+    }
+}
+
+}  // namespace
+
+struct SceneBuilder::Placing {
+    const ScnSurface& entry;
+    const SurfaceMesh& mesh;
+    std::uint32_t surface = 0;
+    std::uint32_t file = 0;
+    SurfaceTransform transform;
+    std::vector<std::uint32_t> position_of;               ///< per mesh vertex, or kUnplaced
+    std::map<std::pair<long, int>, std::int32_t> shapes;  ///< (shape number, mark) -> Scene::shapes
+};
+
+SceneBuilder::SceneBuilder(Scene& scene, Diagnostics& diagnostics)
+    : scene_(scene), diagnostics_(diagnostics), file_shapes_(std::move(scene.shapes)) {
+    scene_.shapes.clear();
+    for (std::uint32_t i = 0; i < scene_.attributes.size(); ++i) {
+        attribute_by_number_.emplace(scene_.attributes[i].index, i);
+    }
+}
+
+void SceneBuilder::add_surface(const ScnSurface& entry, const SurfaceMesh& mesh,
+                               std::uint32_t file) {
+    const SurfacePlacement& p = entry.placement;
+    Placing placing{entry,
+                    mesh,
+                    static_cast<std::uint32_t>(scene_.surfaces.size()),
+                    file,
+                    SurfaceTransform(p.scale, p.rotation_degrees, p.translation),
+                    std::vector<std::uint32_t>(mesh.vertices.size(), kUnplaced),
+                    {}};
+    scene_.surfaces.push_back(entry.surface);
+    for (const MeshPolygon& polygon : mesh.polygons) {
+        add_polygon(placing, polygon);
+    }
+}
+
+SourceLocation SceneBuilder::polygon_location(const Placing& placing,
+                                              const MeshPolygon& polygon) const {
+    return {scene_.source_files[placing.file], polygon.line, 0};
+}
+
+void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
+    const std::span<const std::uint32_t> loop(placing.mesh.corners.data() + polygon.first_corner,
+                                              polygon.corner_count);
+    Vec3 n = newell_normal(loop, placing.mesh.vertices);
+    if (const std::string_view why = degeneracy(loop, placing.mesh.vertices, n); !why.empty()) {
+        diagnostics_.warn(fmt::format("{}: polygon {} is degenerate ({}); skipped",
+                                      polygon_location(placing, polygon).to_string(),
+                                      polygon.number, why));
+        return;
+    }
+    // The file's outward direction decides the side; without one (zero, or in the plane) the
+    // loop's own right-hand-rule normal stands.
+    const double agreement = dot(normalize(n), polygon.outward);
+    if (agreement < -1e-9 * length(polygon.outward)) {
+        n = -n;
+    }
+    if (scene_.corners.size() + loop.size() > kMaxIndex || scene_.polygons.size() >= kMaxIndex) {
+        throw InputError(placing.entry.surface.where, "the scene has too many polygons");
+    }
+    Polygon out;
+    out.first_corner = static_cast<std::uint32_t>(scene_.corners.size());
+    out.corner_count = polygon.corner_count;
+    out.normal = normalize(placing.transform.normal(n));
+    out.attribute = attribute_index(placing, polygon);
+    out.surface = placing.surface;
+    out.mark = polygon.mark;
+    out.shape = shape_index(placing, polygon);
+    out.smooth =
+        placing.entry.surface.smooth_shaded || polygon.mark == PolygonMark::InterpolatesNormals;
+    for (const std::uint32_t vertex : loop) {
+        scene_.corners.push_back(position_index(placing, vertex));
+    }
+    scene_.polygons.push_back(out);
+    scene_.polygon_origin.push_back({placing.file, static_cast<std::uint32_t>(polygon.line)});
+}
+
+std::uint32_t SceneBuilder::attribute_index(const Placing& placing,
+                                            const MeshPolygon& polygon) const {
+    const OpticalSurface& surface = placing.entry.surface;
+    long number = 0;
+    // A sum that overflows names no attribute; it must not wrap round onto one.
+    const bool overflow =
+        __builtin_add_overflow(surface.attribute_number, polygon.attribute_offset, &number);
+    const auto it = overflow ? attribute_by_number_.end() : attribute_by_number_.find(number);
+    if (it != attribute_by_number_.end()) {
+        return it->second;
+    }
+    if (overflow) {
+        throw InputError(
+            polygon_location(placing, polygon),
+            fmt::format("polygon {} uses attribute {} + offset {}, which is not defined",
+                        polygon.number, surface.attribute_number, polygon.attribute_offset));
+    }
+    if (polygon.attribute_offset == 0) {
+        throw InputError(surface.where, fmt::format("optical surface '{}' uses attribute {}, which "
+                                                    "is not defined",
+                                                    surface.file, number));
+    }
+    throw InputError(
+        polygon_location(placing, polygon),
+        fmt::format("polygon {} uses attribute {} (attribute {} of the optical surface "
+                    "+ offset {}), which is not defined",
+                    polygon.number, number, surface.attribute_number, polygon.attribute_offset));
+}
+
+// Shapes are written in the coordinates of the polygons that use them (manual 2.4), so each
+// surface gets its own world-space copy of each shape it uses.
+std::int32_t SceneBuilder::shape_index(Placing& placing, const MeshPolygon& polygon) {
+    const PolygonMark mark = polygon.mark;
+    if (mark == PolygonMark::Ordinary || mark == PolygonMark::InterpolatesNormals) {
+        return -1;
+    }
+    const auto key = std::make_pair(polygon.shape_number, static_cast<int>(mark));
+    if (const auto it = placing.shapes.find(key); it != placing.shapes.end()) {
+        return it->second;
+    }
+    const SourceLocation at = polygon_location(placing, polygon);
+    if (polygon.shape_number < 0 || polygon.shape_number >= std::ssize(file_shapes_)) {
+        throw InputError(
+            at, fmt::format("polygon {} (mark {}, a {}) refers to shape {}, but the "
+                            "shape file defines {} (numbered from 0)",
+                            polygon.number, static_cast<int>(mark), shape_kind(mark),
+                            polygon.shape_number, count_of(std::ssize(file_shapes_), "shape")));
+    }
+    Shape shape = file_shapes_[static_cast<std::size_t>(polygon.shape_number)];
+    check_shape_use(shape, mark, at);
+    const SurfaceTransform& t = placing.transform;
+    shape.first = t.point(shape.first);
+    shape.second = t.point(shape.second);
+    if (mark != PolygonMark::Cone) {
+        shape.radius_or_angle *= std::fabs(t.scale());  // a cone's angle survives a uniform scale
+    }
+    scene_.shapes.push_back(shape);
+    const auto index = static_cast<std::int32_t>(scene_.shapes.size() - 1);
+    placing.shapes.emplace(key, index);
+    return index;
+}
+
+std::uint32_t SceneBuilder::position_index(Placing& placing, std::uint32_t vertex) {
+    std::uint32_t& slot = placing.position_of[vertex];
+    if (slot == kUnplaced) {
+        slot = static_cast<std::uint32_t>(scene_.positions.size());
+        scene_.positions.push_back(placing.transform.point(placing.mesh.vertices[vertex]));
+    }
+    return slot;
+}
+
+}  // namespace rt

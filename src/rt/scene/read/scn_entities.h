@@ -1,0 +1,20 @@
+// The entities of a .scn (manual 2.2): a count, then per entity a count of optical surfaces and
+// one line per surface; then whatever follows the entities.
+#pragma once
+
+#include "rt/core/diagnostics.h"
+#include "rt/scene/dialect.h"
+#include "rt/scene/read/item_stream.h"
+#include "rt/scene/read/scn_reader.h"
+
+namespace rt {
+
+/// Appends every optical surface of every entity to scene.surfaces.
+void read_entities(ItemStream& scn, const ReaderDialect& dialect, ScnFile& scene,
+                   Diagnostics& diagnostics);
+
+/// Texture-mapped surfaces follow with -V (not implemented yet: NotImplementedError); without
+/// it, lines left after the entities are ignored with one warning.
+void check_after_entities(ItemStream& scn, const ReaderDialect& dialect, Diagnostics& diagnostics);
+
+}  // namespace rt

@@ -1,0 +1,113 @@
+#include "rt/scene/read/source_text.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <memory>
+#include <system_error>
+
+#include "rt/scene/read/reader_limits.h"
+
+#include <fmt/format.h>
+
+namespace rt {
+
+namespace {
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+std::string errno_reason(int error) {
+    return std::error_code(error, std::generic_category()).message();
+}
+
+// Reads the bytes, or returns why not ("No such file or directory").
+bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::string& reason) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        reason = errno_reason(EISDIR);
+        return false;
+    }
+    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) {
+        reason = errno_reason(errno);
+        return false;
+    }
+    // Read in blocks rather than trusting a size: pipes and special files have none.
+    char block[1 << 16];
+    std::size_t got = 0;
+    while ((got = std::fread(block, 1, sizeof block, file.get())) > 0) {
+        if (bytes.size() + got > kMaxInputFileBytes) {
+            reason = "larger than the 1 GiB limit for input files";
+            return false;
+        }
+        bytes.append(block, got);
+    }
+    if (std::ferror(file.get()) != 0) {
+        reason = errno_reason(errno == 0 ? EIO : errno);
+        return false;
+    }
+    return true;
+}
+
+bool is_forbidden_control(unsigned char c) {
+    const bool blank = c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+    return (c < 0x20 && !blank) || c == 0x7f;
+}
+
+// Binary junk is refused up front, so no reader ever sees a NUL or a stray control byte.
+void check_is_text(SourceText& text) {
+    if (!text.bytes.empty() && text.bytes.back() == '\x1a') {
+        text.bytes.pop_back();
+    }
+    const auto bad = std::find_if(text.bytes.begin(), text.bytes.end(), [](char c) {
+        return is_forbidden_control(static_cast<unsigned char>(c));
+    });
+    if (bad == text.bytes.end()) {
+        return;
+    }
+    const int line = 1 + static_cast<int>(std::count(text.bytes.begin(), bad, '\n'));
+    const unsigned code = static_cast<unsigned char>(*bad);
+    const std::string what =
+        code == 0 ? "NUL byte" : fmt::format("control character {:#04x}", code);
+    throw InputError(text.at(line), "unexpected " + what + "; this is not a text file");
+}
+
+bool oversized(const std::filesystem::path& path) {
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    return !ec && size > kMaxInputFileBytes;
+}
+
+}  // namespace
+
+int SourceText::last_line() const {
+    const int newlines = static_cast<int>(std::count(bytes.begin(), bytes.end(), '\n'));
+    const bool ends_with_newline = !bytes.empty() && bytes.back() == '\n';
+    return std::max(1, ends_with_newline ? newlines : newlines + 1);
+}
+
+SourceText read_scene_file(const std::filesystem::path& path) {
+    SourceText text{path.string(), {}};
+    std::string reason = "larger than the 1 GiB limit for input files";
+    if (oversized(path) || !read_bytes(path, text.bytes, reason)) {
+        throw InputError(SourceLocation{text.name, 0, 0}, "cannot open the scene file: " + reason);
+    }
+    check_is_text(text);
+    return text;
+}
+
+SourceText read_named_file(const std::filesystem::path& path, const std::string& kind,
+                           const std::string& written, const SourceLocation& named_at) {
+    SourceText text{path.string(), {}};
+    std::string reason = "larger than the 1 GiB limit for input files";
+    if (oversized(path) || !read_bytes(path, text.bytes, reason)) {
+        throw InputError(
+            named_at, "cannot open " + kind + " '" + written + "' (" + text.name + "): " + reason);
+    }
+    check_is_text(text);
+    return text;
+}
+
+}  // namespace rt
