@@ -4,6 +4,7 @@
 
 #include "rt/app/run.h"
 #include "rt/app/run_settings.h"
+#include "rt/render/film_window.h"
 #include "rt/scene/read/load_scene.h"
 
 namespace rt::bench {
@@ -19,7 +20,7 @@ StudyScene::StudyScene(const Options& options, const std::optional<PixelRect>& w
     scene_ = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
     settings_.shading = run_shading(options);
     prepare_scene(scene_, options, settings_.shading);
-    settings_.window = window ? *window : render_window(scene_, options);
+    settings_.window = window ? *window : film_window(scene_.view.window, options.start_line);
     settings_.threads = options.threads;
     accelerator_.emplace(scene_, options, console);
 }

@@ -9,6 +9,7 @@
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
+#include "rt/render/film_window.h"
 #include "rt/scene/read/load_scene.h"
 
 #include "bench_arguments.h"
@@ -45,7 +46,7 @@ int bench(const std::vector<std::string>& args) {
     rt::RenderSettings settings;
     settings.shading = rt::run_shading(options);
     rt::prepare_scene(scene, options, settings.shading);  // -E, -K
-    settings.window = rt::render_window(scene, options);
+    settings.window = rt::film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
     start = std::chrono::steady_clock::now();
     const rt::AcceleratorStack stack(scene, options, console);

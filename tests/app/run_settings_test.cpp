@@ -11,6 +11,7 @@
 #include "rt/app/accelerator_stack.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
+#include "rt/render/film_window.h"
 #include "rt/shading/lights.h"
 
 #include <fmt/format.h>
@@ -225,7 +226,7 @@ Scene scene_with_window(int left, int top, int right, int bottom) {
 
 PixelRect window_for(const Scene& scene, std::vector<std::string> switches) {
     switches.insert(switches.begin(), "scene");
-    return render_window(scene, parse_command_line(switches));
+    return film_window(scene.view.window, parse_command_line(switches).start_line);
 }
 
 TEST(RenderWindowFromSwitches, IsTheOutputMatrixCutAtL) {
@@ -236,7 +237,7 @@ TEST(RenderWindowFromSwitches, IsTheOutputMatrixCutAtL) {
     EXPECT_EQ(window_for(scene, {"-L", "20"}), (PixelRect{10, 20, 109, 20}));
     // A line below the window's bottom leaves the window whole.
     EXPECT_EQ(window_for(scene, {"-L500"}), (PixelRect{10, 20, 109, 99}));
-    EXPECT_THROW(window_for(scene, {"-L19"}), UsageError);
+    EXPECT_THROW(window_for(scene, {"-L19"}), SettingError);
 }
 
 // --- what the switches change in the scene (-E, -K) ----------------------------------------

@@ -342,6 +342,8 @@ TEST(SwitchTable, NamesTheSwitchesOfASettingError) {
     EXPECT_EQ(name_the_switches("use fewer SEADS voxels a side"),
               "use fewer SEADS voxels a side (the scene header's third number, or --accel "
               "seads)");
+    EXPECT_EQ(name_the_switches("the start line 19 is above the window's top row 20"),
+              "the start line (-L) 19 is above the window's top row 20");
     EXPECT_EQ(name_the_switches("nothing to name"), "nothing to name");
 }
 

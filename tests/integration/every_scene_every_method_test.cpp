@@ -14,6 +14,7 @@
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/diagnostics.h"
+#include "rt/render/film_window.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/read/load_scene.h"
 
@@ -68,7 +69,7 @@ std::vector<float> render_with(const Scene& scene, const fs::path& path,
     const Options options = parse_command_line(args);
     RenderSettings settings;
     settings.shading = run_shading(options);
-    settings.window = render_window(scene, options);
+    settings.window = film_window(scene.view.window, options.start_line);
     RunConsole console;
     console.warning = console.note = console.trace = console.report = [](const std::string&) {};
     const AcceleratorStack stack(scene, options, console);

@@ -11,6 +11,7 @@
 #include "rt/core/diagnostics.h"
 #include "rt/image/display_mapping.h"
 #include "rt/image/image_writer.h"
+#include "rt/render/film_window.h"
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/read/load_scene.h"
@@ -146,7 +147,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     RenderSettings settings;
     settings.shading = run_shading(options);
     prepare_scene(scene, options, settings.shading);
-    settings.window = render_window(scene, options);
+    settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
 
     phase = Clock::now();

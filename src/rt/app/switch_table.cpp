@@ -309,7 +309,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A a) { o.start_line = static_cast<int>(a.integer); },
      .summary = "draws only from line 250 up",
      .details = "Lines are drawn from the bottom up; this starts at line 250.", .section = "App.",
-     .example = "-L250"},
+     .example = "-L250", .setting = "start line"},
     {.spelling = "-E", .form = Number, .topic = Illumination, .first = {"the angle", kAngle},
      .apply = [](Options& o, A a) { o.crease_angle = a.first; },
      .summary = "Sharp breaks in Phong-shaded objects if angle 1.5 radians",
