@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -86,7 +87,7 @@ void print_ratio_row(std::ostream& out, const std::string& label,
     }
     double log_sum = 0.0;
     int count = 0;
-    double lowest = 1e300;
+    double lowest = std::numeric_limits<double>::infinity();
     double highest = 0.0;
     for (const std::optional<double>& r : ratios) {
         out << (r ? format("%7.2f", *r) : std::string("      -"));

@@ -12,7 +12,7 @@
 namespace rt::bench {
 namespace {
 
-constexpr Interval kAhead{0.0, 1e300};
+constexpr Interval kAhead{0.0, kBeyondAnyScene};
 
 Scene load_twocubes() {
     Diagnostics quiet;

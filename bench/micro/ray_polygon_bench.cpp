@@ -12,7 +12,7 @@ namespace rt::bench {
 namespace {
 
 constexpr int kRays = 4096;
-constexpr Interval kAhead{0.0, 1e300};
+constexpr Interval kAhead{0.0, kBeyondAnyScene};
 
 void intersect_polygon_prepared_ray(benchmark::State& state) {
     const Scene scene = regular_polygon_scene(static_cast<int>(state.range(0)));

@@ -100,13 +100,13 @@ inline std::vector<RayQuery> random_queries(const Scene& scene, int count, std::
                 q.t = Interval{};
                 break;
             case 1:
-                q.t = Interval{1e-9, 1e300};
+                q.t = Interval{1e-9, kBeyondAnyScene};
                 break;
             case 2:
                 q.t = Interval{unit(random), 0.5 + 2 * unit(random)};
                 break;
             case 3:
-                q.t = Interval{-1e300, 1e300};
+                q.t = Interval{-kBeyondAnyScene, kBeyondAnyScene};
                 break;
             default:
                 q.t = Interval{0.0, std::nextafter(1.0, 0.0)};  // up to the target, not at it

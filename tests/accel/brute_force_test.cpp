@@ -16,7 +16,7 @@
 namespace rt {
 namespace {
 
-constexpr Interval kAhead{0.0, 1e300};
+constexpr Interval kAhead{0.0, kBeyondAnyScene};
 
 // Unit squares facing +z at the given heights, in the order given.
 Scene squares_at(const std::vector<double>& heights) {
@@ -45,7 +45,7 @@ TEST(BruteForce, RespectsTheOpenInterval) {
     const BruteForce accel(scene);
     TraceCounters counters;
     // Starting exactly at the nearest square's t: that one no longer counts (open at min).
-    const std::optional<Hit> past = accel.closest_hit(kDown, {2.5, 1e300}, counters);
+    const std::optional<Hit> past = accel.closest_hit(kDown, {2.5, kBeyondAnyScene}, counters);
     ASSERT_TRUE(past);
     EXPECT_EQ(past->polygon, 1u);
     // Ending exactly at a square's t: not hit (open at max).
@@ -258,7 +258,7 @@ TEST(BruteForce, AgreesWithAnIndependentReference) {
         const Vec3 direction = i % 2 == 0 ? Vec3{gauss(random), gauss(random), gauss(random)}
                                           : (point_on_a_polygon() - origin) * (0.5 + unit(random));
         const Ray ray{origin, direction};
-        const Interval t{i % 3 == 0 ? 0.5 : 0.0, i % 5 == 0 ? 2.0 : 1e300};
+        const Interval t{i % 3 == 0 ? 0.5 : 0.0, i % 5 == 0 ? 2.0 : kBeyondAnyScene};
         TraceCounters counters;
         const ReferenceHit expected = reference_nearest(scene, ray, t);
         const std::optional<Hit> hit = accel.closest_hit(ray, t, counters);

@@ -79,7 +79,7 @@ TEST(BvhEdgeCases, RaysStartingOnFacesAndInsideBoxes) {
         for (const Vec3 direction : {Vec3{1, 0, 0}, Vec3{0, -1, 0}, Vec3{1, 1, 0}, Vec3{1, 1, 1},
                                      Vec3{-1, 2, 3}, Vec3{0, 0, -1}}) {
             queries.push_back({{origin, direction}, Interval{}});
-            queries.push_back({{origin, direction}, Interval{-1e300, 1e300}});
+            queries.push_back({{origin, direction}, Interval{-kBeyondAnyScene, kBeyondAnyScene}});
         }
     }
     expect_same_answers(scene, bvh, queries);

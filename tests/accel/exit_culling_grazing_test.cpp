@@ -33,11 +33,11 @@ TEST(ExitCullingGrazing, RaysLeavingAPolygonAlongItsPlaneAreNotCulledWhenTheyHit
             const Vec3 on = point_on(scene, 0, rng);
             const Ray ray{on + away * (3.0 * u(rng)), away};
             TraceCounters counters;
-            if (!brute.closest_hit(ray, {0.0, 1e300}, counters)) {
+            if (!brute.closest_hit(ray, {0.0, kBeyondAnyScene}, counters)) {
                 continue;
             }
             ++grazing_hits;
-            if (table.nothing_ahead(ray, {0.0, 1e300})) {
+            if (table.nothing_ahead(ray, {0.0, kBeyondAnyScene})) {
                 ++wrong;
             }
         }

@@ -52,7 +52,8 @@ TEST(ExitCullingMeasure, DISABLED_TwocubesEyeRays) {
     Tally tally;
     for (int y = 0; y < view.height; ++y) {
         for (int x = 0; x < view.width; ++x) {
-            count(brute, culling, view.primary_ray(x + 0.5, y + 0.5), {1e-9, 1e300}, tally);
+            count(brute, culling, view.primary_ray(x + 0.5, y + 0.5), {1e-9, kBeyondAnyScene},
+                  tally);
         }
     }
     print("twocubes eye rays", culling, tally);

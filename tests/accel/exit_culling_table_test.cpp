@@ -14,28 +14,29 @@ namespace {
 TEST(ExitCullingTable, AnEmptySceneCullsEveryValidRay) {
     const Scene scene = SceneBuilder().scene();
     const ExitCullingTable table(scene, 4, 8);
-    EXPECT_TRUE(table.nothing_ahead({{1, 2, 3}, {0, 0, 1}}, {0.0, 1e300}));
-    EXPECT_FALSE(table.nothing_ahead({{1, 2, 3}, {0, 0, 0}}, {0.0, 1e300}));
+    EXPECT_TRUE(table.nothing_ahead({{1, 2, 3}, {0, 0, 1}}, {0.0, kBeyondAnyScene}));
+    EXPECT_FALSE(table.nothing_ahead({{1, 2, 3}, {0, 0, 0}}, {0.0, kBeyondAnyScene}));
 }
 
 TEST(ExitCullingTable, RaysItCannotVouchForAreNeverCulled) {
     const Scene scene = make_box({-1, -1, -1}, {1, 1, 1}, false);
     const ExitCullingTable table(scene, 4, 8);
     const Ray away{{0, 5, 0}, {0, 1, 0}};
-    EXPECT_TRUE(table.nothing_ahead(away, {0.0, 1e300}));
-    EXPECT_FALSE(table.nothing_ahead(away, {-1.0, 1e300})) << "t.min < 0 looks backwards";
-    EXPECT_FALSE(table.nothing_ahead({{0, 1e6, 0}, {0, 1, 0}}, {0.0, 1e300})) << "too far away";
+    EXPECT_TRUE(table.nothing_ahead(away, {0.0, kBeyondAnyScene}));
+    EXPECT_FALSE(table.nothing_ahead(away, {-1.0, kBeyondAnyScene})) << "t.min < 0 looks backwards";
+    EXPECT_FALSE(table.nothing_ahead({{0, 1e6, 0}, {0, 1, 0}}, {0.0, kBeyondAnyScene}))
+        << "too far away";
     const double nan = std::nan("");
-    EXPECT_FALSE(table.nothing_ahead({{0, 5, 0}, {nan, 1, 0}}, {0.0, 1e300}));
-    EXPECT_FALSE(table.nothing_ahead({{0, 5, 0}, {0, 1, 0}}, {nan, 1e300}));
+    EXPECT_FALSE(table.nothing_ahead({{0, 5, 0}, {nan, 1, 0}}, {0.0, kBeyondAnyScene}));
+    EXPECT_FALSE(table.nothing_ahead({{0, 5, 0}, {0, 1, 0}}, {nan, kBeyondAnyScene}));
 }
 
 TEST(ExitCullingTable, ARayMissingTheWorldIsCulledAndOneInsideAClosedBoxIsNot) {
     const Scene scene = make_box({-1, -1, -1}, {1, 1, 1}, true);
     const ExitCullingTable table(scene, 6, 8);
-    EXPECT_TRUE(table.nothing_ahead({{5, 5, 5}, {1, 0, 0}}, {0.0, 1e300}));
-    EXPECT_FALSE(table.nothing_ahead({{0.1, 0.2, 0.3}, {1, 0.5, 0}}, {0.0, 1e300}));
-    EXPECT_FALSE(table.nothing_ahead({{5, 0, 0}, {-1, 0, 0}}, {0.0, 1e300}));
+    EXPECT_TRUE(table.nothing_ahead({{5, 5, 5}, {1, 0, 0}}, {0.0, kBeyondAnyScene}));
+    EXPECT_FALSE(table.nothing_ahead({{0.1, 0.2, 0.3}, {1, 0.5, 0}}, {0.0, kBeyondAnyScene}));
+    EXPECT_FALSE(table.nothing_ahead({{5, 0, 0}, {-1, 0, 0}}, {0.0, kBeyondAnyScene}));
 }
 
 TEST(ExitCullingTable, TwocubesTableIsSmall) {
@@ -55,7 +56,8 @@ TEST(ExitCulling, DebugModeReportsItsChecks) {
     settings.check_culled = true;
     const ExitCulling culling(scene, make_brute_force(scene), settings);
     TraceCounters counters;
-    EXPECT_FALSE(culling.closest_hit({{100, 100, 100}, {1, 0, 0}}, {0.0, 1e300}, counters));
+    EXPECT_FALSE(
+        culling.closest_hit({{100, 100, 100}, {1, 0, 0}}, {0.0, kBeyondAnyScene}, counters));
     EXPECT_EQ(counters.culled_exits, 1u);
     const ExitCullingStatistics statistics = culling.statistics();
     EXPECT_EQ(statistics.checked, 1u);

@@ -122,7 +122,7 @@ inline std::vector<SurfaceRay> surface_rays(const Scene& scene, int count, std::
             incoming = normalize(incoming);
         }
         const Vec3 n = scene.polygons[r.from].normal;
-        r.t = Interval{epsilon, 1e300};
+        r.t = Interval{epsilon, kBeyondAnyScene};
         const int choice = static_cast<int>(unit(rng) * 10);
         if (choice < 6 || length(incoming) == 0.0) {
             Vec3 d = random_direction(rng);

@@ -75,7 +75,7 @@ void expect_brute_force_answers(const Scene& scene, int step = 1) {
                     const double px = std::min(x + dx, static_cast<double>(view.width));
                     const double py = std::min(y + dy, static_cast<double>(view.height));
                     const Ray ray = view.primary_ray(px, py);
-                    for (const Interval t : {Interval{1e-9, 1e300}, Interval{0.0, 7.5}}) {
+                    for (const Interval t : {Interval{1e-9, kBeyondAnyScene}, Interval{0.0, 7.5}}) {
                         const std::optional<Hit> expected = brute.closest_hit(ray, t, counters);
                         const std::optional<Hit> got = zbuffer->closest_hit(ray, t, counters);
                         ASSERT_EQ(expected.has_value(), got.has_value()) << px << ", " << py;
@@ -171,10 +171,10 @@ TEST(ZBufferFirstHits, OtherRaysGoToTheFallback) {
     }
     EXPECT_EQ(fallback.calls, calls);
     // An eye ray asked with t.min < 0, or moved off the screen, is not the z-buffer's either.
-    zbuffer->closest_hit(view.primary_ray(10, 10), {-1.0, 1e300}, counters);
+    zbuffer->closest_hit(view.primary_ray(10, 10), {-1.0, kBeyondAnyScene}, counters);
     Ray moved = view.primary_ray(10, 10);
     moved.origin = moved.at(0.5);
-    zbuffer->closest_hit(moved, {1e-9, 1e300}, counters);
+    zbuffer->closest_hit(moved, {1e-9, kBeyondAnyScene}, counters);
     EXPECT_EQ(fallback.calls, calls + 2);
 }
 
@@ -193,8 +193,8 @@ TEST(ZBufferFirstHits, OverTheMemoryLimitEveryRayGoesToTheFallback) {
     TraceCounters counters;
     const BruteForce brute(scene);
     const Ray ray = view.primary_ray(256, 200);
-    EXPECT_EQ(brute.closest_hit(ray, {1e-9, 1e300}, counters)->polygon,
-              zbuffer->closest_hit(ray, {1e-9, 1e300}, counters)->polygon);
+    EXPECT_EQ(brute.closest_hit(ray, {1e-9, kBeyondAnyScene}, counters)->polygon,
+              zbuffer->closest_hit(ray, {1e-9, kBeyondAnyScene}, counters)->polygon);
     EXPECT_EQ(fallback.calls, 1);
 }
 

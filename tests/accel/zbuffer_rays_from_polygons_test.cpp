@@ -86,7 +86,8 @@ TEST(ZBufferRaysFromPolygons, ZBufferOverExitCullingGivesBruteForceAnswers) {
         const double along = 2 * unit(rng) - 1;
         const double side = i % 2 == 0 ? 1.0 : -1.0;
         const Vec3 origin = i % 4 < 2 ? Vec3{side, along, 0.0} : Vec3{along, side, 0.0};
-        on_walls.push_back({{origin, normalize(origin - scene.view.eye)}, {epsilon, 1e300}});
+        on_walls.push_back(
+            {{origin, normalize(origin - scene.view.eye)}, {epsilon, kBeyondAnyScene}});
     }
     const BruteForce brute(scene);
     // Compares with brute force; returns brute force's hits.
@@ -101,8 +102,8 @@ TEST(ZBufferRaysFromPolygons, ZBufferOverExitCullingGivesBruteForceAnswers) {
     EXPECT_EQ(below.calls, 0);
     std::vector<SurfaceRay> from_screen;
     for (int i = 0; i < 800; ++i) {
-        from_screen.push_back(
-            {view.primary_ray(unit(rng) * view.width, unit(rng) * view.height), {epsilon, 1e300}});
+        from_screen.push_back({view.primary_ray(unit(rng) * view.width, unit(rng) * view.height),
+                               {epsilon, kBeyondAnyScene}});
     }
     EXPECT_EQ(expect_brute_answers(from_screen), static_cast<int>(from_screen.size()));
     // From the same points in other directions: not eye rays, so the fallback's to answer.

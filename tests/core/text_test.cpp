@@ -33,5 +33,11 @@ TEST(ParseInteger, AcceptsWholeNumbersWrittenAsReals) {
     EXPECT_FALSE(parse_integer(""));
 }
 
+TEST(Cat, JoinsThePiecesInOrder) {
+    const std::string middle = "b";
+    EXPECT_EQ(cat({"a", middle, "", "cd"}), "abcd");
+    EXPECT_EQ(cat({}), "");
+}
+
 }  // namespace
 }  // namespace rt

@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr Interval kWholeLine{-1e300, 1e300};
+constexpr Interval kWholeLine{-kBeyondAnyScene, kBeyondAnyScene};
 constexpr Vec3 kUp{0, 0, 1};
 
 // A ray straight down onto the point (x, y) of the plane z = 0, from z = 5.
@@ -281,7 +281,8 @@ TEST(IntersectPolygon, IntervalIsOpenAtBothEnds) {
     EXPECT_FALSE(hit_flat(square_corners, ray, {4.0, 5.0}));
     EXPECT_TRUE(
         hit_flat(square_corners, ray, {std::nextafter(5.0, 0.0), std::nextafter(5.0, 6.0)}));
-    EXPECT_FALSE(hit_flat(square_corners, Ray{{1, 1, -5}, {0, 0, -1}}, {0.0, 1e300}));  // behind
+    EXPECT_FALSE(
+        hit_flat(square_corners, Ray{{1, 1, -5}, {0, 0, -1}}, {0.0, kBeyondAnyScene}));  // behind
 }
 
 TEST(PlaneHit, DepthOfThePlane) {

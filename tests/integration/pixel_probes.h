@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -179,16 +180,21 @@ inline std::optional<Crossing> cross_plane(V origin, V direction, const Placed& 
 /// Closer to an edge than this (relative to the half-side) is too close to call.
 constexpr double kEdgeMargin = 1e-3;
 
+/// Not the index of a square: a ray or feeler met none.
+constexpr int kNoSquare = -1;
+/// Not the index of a square: a feeler passes too close to an edge to call what it meets.
+constexpr int kTooCloseToCall = -2;
+
 /// The first square a ray meets, leaving out square `leaving` (the one it starts on).
 struct FirstHit {
-    int square = -1;  ///< -1: none
+    int square = kNoSquare;
     Crossing at;
     bool clear = true;  ///< false if an edge passes too close to call what the ray meets
 };
 
-inline FirstHit first_hit(const ProbeScene& s, const Ray& ray, int leaving = -1) {
+inline FirstHit first_hit(const ProbeScene& s, const Ray& ray, int leaving = kNoSquare) {
     FirstHit best;
-    best.at.t = 1e300;
+    best.at.t = std::numeric_limits<double>::infinity();
     for (int k = 0; k < static_cast<int>(s.squares.size()); ++k) {
         if (k == leaving) {
             continue;
@@ -213,8 +219,9 @@ inline FirstHit first_hit(const ProbeScene& s, const Ray& ray, int leaving = -1)
 }
 
 /// The square a shadow feeler passes on its way from `point` (on square `surface`) to `light`, a
-/// point source of square `emitter` (neither of which can block it): -1 if none, -2 if it passes
-/// too close to an edge to call. The probe scenes hold at most one such square.
+/// point source of square `emitter` (neither of which can block it): kNoSquare if none,
+/// kTooCloseToCall if it passes too close to an edge to call. The probe scenes hold at most one
+/// such square.
 inline int feeler_blocker(const ProbeScene& s, V point, V light, int emitter, int surface) {
     const V span = light - point;
     const double distance = length(span);
@@ -228,13 +235,13 @@ inline int feeler_blocker(const ProbeScene& s, V point, V light, int emitter, in
             continue;
         }
         if (std::fabs(c->inside) < kEdgeMargin) {
-            return -2;
+            return kTooCloseToCall;
         }
         if (c->inside > 0.0) {
             return k;
         }
     }
-    return -1;
+    return kNoSquare;
 }
 
 /// The probe's tolerance on the .gro's linear intensities: relative 1e-6. The .gro stores float32

@@ -42,7 +42,7 @@ int check_emission_and_ambient(const ProbeScene& s, const Switches& run) {
         for (int x = 0; x < s.width; ++x) {
             const Ray ray = pixel_ray(s, x, y);
             const FirstHit hit = first_hit(s, ray);
-            if (hit.square < 0 || !hit.clear) {
+            if (hit.square == kNoSquare || !hit.clear) {
                 continue;
             }
             const ProbeSquare& q = s.squares[static_cast<std::size_t>(hit.square)];
@@ -138,10 +138,10 @@ struct Probed {
     int shadowed = 0;  ///< pixels with a feeler through the blocker
 };
 
-// What a feeler brings through square `blocker` (-1: none): all of it, t·C of a transparent one
-// (unless -Dt), nothing through an opaque one.
+// What a feeler brings through square `blocker` (or kNoSquare): all of it, t·C of a transparent
+// one (unless -Dt), nothing through an opaque one.
 Colour feeler_filter(const ProbeScene& s, const Switches& run, int blocker) {
-    if (blocker < 0) {
+    if (blocker == kNoSquare) {
         return {1.0, 1.0, 1.0};
     }
     const ProbeSquare& q = s.squares[static_cast<std::size_t>(blocker)];
@@ -184,13 +184,13 @@ Probed check_lit_target(const ProbeScene& s, const Switches& run) {
             const V view = ray.direction * -1.0;
             const Ray mirror{point, ray.direction - normal * (2.0 * dot(ray.direction, normal))};
             const FirstHit mirrored = first_hit(s, mirror, kTarget);
-            bool callable = a.s == 0.0 || (mirrored.square < 0 && mirrored.clear);
+            bool callable = a.s == 0.0 || (mirrored.square == kNoSquare && mirrored.clear);
             bool shadowed = false;
             Colour want = colour_of(a) * a.a;
             for (const PointLight& light : point_lights(s)) {
                 const int blocker = feeler_blocker(s, point, light.position, kLight, kTarget);
-                callable = callable && blocker != -2;
-                shadowed = shadowed || blocker >= 0;
+                callable = callable && blocker != kTooCloseToCall;
+                shadowed = shadowed || (blocker != kNoSquare && blocker != kTooCloseToCall);
                 const V span = light.position - point;
                 if (!run.back_emits && dot(span, light.emitter_normal) >= 0.0) {
                     continue;  // -Db: the point is behind the emitter, which emits outward only

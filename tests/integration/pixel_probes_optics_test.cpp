@@ -35,7 +35,7 @@ std::optional<Colour> flat_seen(const ProbeScene& s, const Ray& ray, int leaving
     if (!hit.clear) {
         return std::nullopt;
     }
-    if (hit.square < 0) {
+    if (hit.square == kNoSquare) {
         return Colour{};
     }
     return own_light(s, hit.square, ray, run) * ray_factor(run, hit.at.t);
@@ -136,7 +136,7 @@ int check_glass(const ProbeScene& s, const Switches& run, bool transmits) {
         for (int x = 0; x < s.width; ++x) {
             const Ray ray = pixel_ray(s, x, y);
             const FirstHit hit = first_hit(s, ray);
-            if (!hit.clear || hit.square < 0) {
+            if (!hit.clear || hit.square == kNoSquare) {
                 continue;
             }
             if (hit.square == kBack) {

@@ -27,9 +27,9 @@ TEST(ZBufferCameraAgreement, EveryCameraRayIsAnsweredByTheItemBufferAsBruteForce
         for (int x = 0; x <= scene.view.width; x += 3) {
             const Ray ray = camera.primary_ray(x + 0.5 * (y % 2), y + 0.5 * (x % 2));
             const std::optional<Hit> expected =
-                brute.closest_hit(ray, {1e-9, 1e300}, brute_counters);
+                brute.closest_hit(ray, {1e-9, kBeyondAnyScene}, brute_counters);
             const std::optional<Hit> got =
-                zbuffer->closest_hit(ray, {1e-9, 1e300}, zbuffer_counters);
+                zbuffer->closest_hit(ray, {1e-9, kBeyondAnyScene}, zbuffer_counters);
             ASSERT_EQ(expected.has_value(), got.has_value());
             if (expected) {
                 ASSERT_EQ(expected->t, got->t);

@@ -14,7 +14,7 @@ namespace rt::test {
 
 namespace {
 
-constexpr Interval kWholeLine{-1e300, 1e300};
+constexpr Interval kWholeLine{-kBeyondAnyScene, kBeyondAnyScene};
 
 }  // namespace
 

@@ -19,7 +19,7 @@ struct LineHits {
     std::vector<double> depths;
 };
 
-/// Every polygon the ray's whole line (t in (-1e300, 1e300)) passes through; also checks that
+/// Every polygon the ray's whole line (t in +-kBeyondAnyScene) passes through; also checks that
 /// intersect_polygon and winding_number agree on each polygon.
 LineHits hits_along(const Scene& scene, const Ray& ray);
 

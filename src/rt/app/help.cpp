@@ -1,10 +1,10 @@
 #include "rt/app/help.h"
 
 #include <array>
-#include <initializer_list>
 #include <string_view>
 
 #include "rt/app/version.h"
+#include "rt/core/text.h"
 
 namespace rt {
 
@@ -34,15 +34,6 @@ constexpr std::array kTopics = {
     Topic::Highlights,       Topic::Disable,         Topic::FileFormat, Topic::Illumination,
     Topic::AdaptiveSampling, Topic::OldVersions,     Topic::Debugging,  Topic::Program,
 };
-
-// One string from pieces; also keeps GCC 12 from misreading `"text" + std::string` (-Wrestrict).
-std::string cat(std::initializer_list<std::string_view> pieces) {
-    std::string text;
-    for (const std::string_view piece : pieces) {
-        text += piece;
-    }
-    return text;
-}
 
 // "the multiplier" is "multiplier" in a synopsis or a range; "FILE" and "N" stay as they are.
 std::string_view bare_name(const Operand& operand) {

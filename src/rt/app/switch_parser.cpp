@@ -1,7 +1,6 @@
 #include "rt/app/switch_parser.h"
 
 #include <algorithm>
-#include <initializer_list>
 #include <optional>
 
 #include "rt/core/error.h"
@@ -10,15 +9,6 @@
 namespace rt {
 
 namespace {
-
-// One string from pieces; also keeps GCC 12 from misreading `"text" + std::string` (-Wrestrict).
-std::string cat(std::initializer_list<std::string_view> pieces) {
-    std::string text;
-    for (const std::string_view piece : pieces) {
-        text += piece;
-    }
-    return text;
-}
 
 struct Match {
     const SwitchSpec* spec = nullptr;

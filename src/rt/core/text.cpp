@@ -54,4 +54,12 @@ std::string quote_token(std::string_view token) {
     return quoted;
 }
 
+std::string cat(std::initializer_list<std::string_view> pieces) {
+    std::string text;
+    for (const std::string_view piece : pieces) {
+        text += piece;
+    }
+    return text;
+}
+
 }  // namespace rt

@@ -1,7 +1,9 @@
-// Locale-independent number parsing for every reader and the switch parser.
+// Text for every reader, the switch parser and the help: locale-independent number parsing,
+// tokens quoted for messages, strings joined from pieces.
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,5 +20,9 @@ std::optional<std::int64_t> parse_integer(std::string_view text);
 
 /// Quotes a token for an error message, shortening very long ones: 'abc'.
 std::string quote_token(std::string_view token);
+
+/// One string from pieces; also keeps GCC 12 from misreading `"text" + std::string`
+/// (-Wrestrict).
+std::string cat(std::initializer_list<std::string_view> pieces);
 
 }  // namespace rt

@@ -12,10 +12,13 @@ struct Ray {
     Vec3 at(double t) const { return origin + direction * t; }
 };
 
+/// The far end of an interval that has none: beyond any scene's distances, and finite.
+inline constexpr double kBeyondAnyScene = 1e300;
+
 /// The open interval of t in which a hit counts.
 struct Interval {
     double min = 0.0;
-    double max = 1e300;
+    double max = kBeyondAnyScene;
 };
 
 }  // namespace rt

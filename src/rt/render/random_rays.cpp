@@ -47,7 +47,8 @@ KindCounters fire_random_rays(const Scene& scene, const Accelerator& accel, std:
             }
             for (std::uint64_t i = first; i < std::min(count, first + kBatch); ++i) {
                 ++c.rays;
-                if (accel.closest_hit(random_ray(doubled_lo, size, seed, i), {0.0, 1e300}, c)) {
+                if (accel.closest_hit(random_ray(doubled_lo, size, seed, i), {0.0, kBeyondAnyScene},
+                                      c)) {
                     ++c.hits;
                 }
             }

@@ -66,7 +66,7 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
                      SampleContext& sample) const {
     TraceCounters& counters = sample.counters[kind];
     ++counters.rays;
-    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
+    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, kBeyondAnyScene}, counters);
     if (!hit) {
         sample.last_seen = {};
         return {};  // the background is black
@@ -95,7 +95,7 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
 SurfaceSeen RayTracer::first_surface(const Ray& ray, bool full, SampleContext& sample) const {
     TraceCounters& counters = sample.counters[RayKind::Probe];
     ++counters.rays;
-    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, 1e300}, counters);
+    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, kBeyondAnyScene}, counters);
     if (!hit) {
         return {};
     }

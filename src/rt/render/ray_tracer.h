@@ -27,11 +27,12 @@ struct RayTreeCounts {
     std::uint32_t probes = 0;                     ///< rays along lobes' rims (adaptive rule)
 };
 
-/// What a ray met, as the adaptive rule compares rays: the polygon (-1 for none) and how many
-/// polygons the shadow feelers from its hit met on their way to the lights. Rays that agree on
-/// both see one surface in one light: no polygon's edge and no shadow's edge between them.
+/// What a ray met, as the adaptive rule compares rays: the polygon (kNoPolygon for none) and how
+/// many polygons the shadow feelers from its hit met on their way to the lights. Rays that agree
+/// on both see one surface in one light: no polygon's edge and no shadow's edge between them.
 struct SurfaceSeen {
-    std::int64_t polygon = -1;
+    static constexpr std::int64_t kNoPolygon = -1;
+    std::int64_t polygon = kNoPolygon;
     std::uint64_t feeler_stops = 0;
     friend bool operator==(const SurfaceSeen&, const SurfaceSeen&) = default;
 };

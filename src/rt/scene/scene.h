@@ -63,9 +63,11 @@ struct Polygon {
     Vec3 normal;                     ///< unit geometric normal, pointing outward
     std::uint32_t attribute = 0;     ///< into Scene::attributes
     std::uint32_t surface = 0;       ///< into Scene::surfaces
+    /// Not an index into Scene::shapes: the polygon's mark uses no shape.
+    static constexpr std::int32_t kNoShape = -1;
     PolygonMark mark = PolygonMark::Ordinary;
-    std::int32_t shape = -1;  ///< into Scene::shapes, or -1
-    bool smooth = false;      ///< interpolate vertex normals (smooth-shade field or mark 1)
+    std::int32_t shape = kNoShape;  ///< into Scene::shapes, or kNoShape
+    bool smooth = false;            ///< interpolate vertex normals (smooth-shade field or mark 1)
 };
 
 /// Where a polygon came from, so that every later complaint can name a line.

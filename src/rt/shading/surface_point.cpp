@@ -8,7 +8,7 @@ namespace {
 
 Vec3 outward_shading_normal(const Scene& scene, std::uint32_t id, const Vec3& point) {
     const Polygon& p = scene.polygons[id];
-    if (p.shape >= 0 && p.mark != PolygonMark::Ordinary &&
+    if (p.shape != Polygon::kNoShape && p.mark != PolygonMark::Ordinary &&
         p.mark != PolygonMark::InterpolatesNormals) {
         return shape_normal(scene.shapes[static_cast<std::size_t>(p.shape)], p.mark, point,
                             p.normal);

@@ -85,7 +85,7 @@ TEST_F(ManualScene, SurfacesArePlacedAndNormalsPointOutward) {
         }
         EXPECT_NEAR(dot(p.normal, normalize(middle - centre)), 1.0, 1e-12) << "face " << i;
         EXPECT_FALSE(p.smooth);
-        EXPECT_EQ(p.shape, -1);
+        EXPECT_EQ(p.shape, Polygon::kNoShape);
     }
     // The checkerboard alternates attributes 0 and 1 through the polygons' offsets.
     EXPECT_EQ(scene.polygons[6].attribute, 0u);
@@ -241,7 +241,7 @@ TEST_F(SmallScene, MarksAndShapesWithM) {
         EXPECT_EQ(scene.polygons[1].mark, PolygonMark::Cylinder);
         EXPECT_EQ(scene.polygons[2].mark, PolygonMark::InterpolatesNormals);
         EXPECT_TRUE(scene.polygons[2].smooth);
-        EXPECT_EQ(scene.polygons[2].shape, -1);
+        EXPECT_EQ(scene.polygons[2].shape, Polygon::kNoShape);
         // Each surface has its own world-space copy of the shapes it uses.
         ASSERT_EQ(scene.shapes.size(), 4u);
         const Shape& sphere = scene.shapes[static_cast<std::size_t>(scene.polygons[0].shape)];

@@ -150,7 +150,7 @@ std::uint32_t SceneBuilder::attribute_index(const Placing& placing,
 std::int32_t SceneBuilder::shape_index(Placing& placing, const MeshPolygon& polygon) {
     const PolygonMark mark = polygon.mark;
     if (mark == PolygonMark::Ordinary || mark == PolygonMark::InterpolatesNormals) {
-        return -1;
+        return Polygon::kNoShape;
     }
     const auto key = std::make_pair(polygon.shape_number, static_cast<int>(mark));
     if (const auto it = placing.shapes.find(key); it != placing.shapes.end()) {
