@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 #include "rt/scene/scene.h"
 
 #include "lab_options.h"

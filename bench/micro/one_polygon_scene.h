@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt::bench {

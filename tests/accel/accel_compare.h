@@ -11,6 +11,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/brute_force.h"
+#include "rt/core/bounds.h"
 
 #include <gtest/gtest.h>
 
@@ -22,26 +23,24 @@ struct RayQuery {
 };
 
 /// The box around the scene's finite positions (a NaN or infinite corner would make every ray
-/// built from it non-finite), and its largest side; a unit box at the origin when there are none.
-inline void finite_bounds(const Scene& scene, Vec3& lo, Vec3& hi, double& size) {
-    bool any = false;
+/// built from it non-finite); a unit box at the origin when there are none.
+inline Box3 finite_bounds(const Scene& scene) {
+    Box3 box;
     for (const Vec3& p : scene.positions) {
-        if (!is_finite(p)) {
-            continue;
+        if (is_finite(p)) {
+            box.add(p);
         }
-        lo = any ? min_components(lo, p) : p;
-        hi = any ? max_components(hi, p) : p;
-        any = true;
     }
-    if (!any) {
-        lo = Vec3{-0.5, -0.5, -0.5};
-        hi = Vec3{0.5, 0.5, 0.5};
+    if (box.empty()) {
+        return {Vec3{-0.5, -0.5, -0.5}, Vec3{0.5, 0.5, 0.5}};
     }
-    size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    if (!(size > 0.0)) {
-        // A scene of one point: a box around it at its own scale.
-        size = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(lo.z), 1e-300});
-    }
+    return box;
+}
+
+/// The box's largest side; for a box of one point, a size at the point's own scale.
+inline double scene_size(const Box3& box) {
+    const double size = box.largest_extent();
+    return size > 0.0 ? size : std::max(box.magnitude(), 1e-300);
 }
 
 /// Rays whose origins fill the scene's box doubled on every side (padded by a twentieth of its
@@ -52,10 +51,10 @@ inline std::vector<RayQuery> random_queries(const Scene& scene, int count, std::
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::normal_distribution<double> normal(0.0, 1.0);
-    Vec3 lo;
-    Vec3 hi;
-    double size = 0.0;
-    finite_bounds(scene, lo, hi, size);
+    const Box3 bounds = finite_bounds(scene);
+    const Vec3 lo = bounds.lo;
+    const Vec3 hi = bounds.hi;
+    const double size = scene_size(bounds);
     const Vec3 middle = lo * 0.5 + hi * 0.5;  // not (lo + hi) / 2, which overflows near DBL_MAX
     const Vec3 pad{size / 20, size / 20, size / 20};
     const Vec3 half = (hi - lo) + pad;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rt/core/diagnostics.h"
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 #include "rt/scene/read/load_scene.h"
 #include "rt/scene/scene.h"
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "rt/accel/brute_force.h"
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 #include "rt/geometry/ray_polygon.h"
 #include "rt/scene/scene.h"
 

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "rt/accel/hit.h"
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 
 namespace rt {
 

@@ -9,8 +9,8 @@
 #include <optional>
 #include <span>
 
+#include "rt/core/ray.h"
 #include "rt/core/vec3.h"
-#include "rt/geometry/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

@@ -3,7 +3,7 @@
 // projection both come from here, so they agree exactly.
 #pragma once
 
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 
 namespace rt {
 

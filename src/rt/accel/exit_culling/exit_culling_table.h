@@ -10,7 +10,7 @@
 
 #include "rt/accel/exit_culling/direction_bins.h"
 #include "rt/accel/exit_culling/occupied_cells.h"
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 
 namespace rt {
 

@@ -4,7 +4,7 @@
 // not hit anything in it. The bounds are argued in float_ray.cpp.
 #pragma once
 
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 
 namespace rt {
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "rt/core/bounds.h"
+#include "rt/core/ray.h"
 #include "rt/core/vec3.h"
-#include "rt/geometry/ray.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

@@ -24,7 +24,7 @@
 
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/accel/voxel/box.h"
-#include "rt/geometry/ray.h"
+#include "rt/core/ray.h"
 
 namespace rt {
 
