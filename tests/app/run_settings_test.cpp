@@ -1,5 +1,5 @@
 // The step from the parsed command line to the library's settings (run_settings.h,
-// accelerator_stack.h), switch by switch. Each row gives a command line and exactly the settings
+// accel_stack_settings.h), switch by switch. Each row gives a command line and exactly the settings
 // it must change from the defaults: a switch that is dropped changes nothing and fails its row; a
 // switch wired to the wrong setting changes another one and fails it too.
 #include "rt/app/run_settings.h"
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/app/accel_stack_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
 #include "rt/shading/lights.h"

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <ctime>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/app/accel_stack_settings.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
@@ -150,7 +150,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.threads = options.threads;
 
     phase = Clock::now();
-    const AcceleratorStack stack(scene, options, console);
+    const AcceleratorStack stack(scene, accelerator_stack_settings(scene, options, console));
     const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);
     const auto print_profile = [&](const KindCounters& counters) {
