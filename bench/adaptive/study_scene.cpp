@@ -2,7 +2,6 @@
 
 #include <iostream>
 
-#include "rt/app/accel_stack_settings.h"
 #include "rt/app/run.h"
 #include "rt/app/run_settings.h"
 #include "rt/scene/read/load_scene.h"
@@ -22,7 +21,8 @@ StudyScene::StudyScene(const Options& options, const std::optional<PixelRect>& w
     prepare_scene(scene_, options, settings_.shading);
     settings_.window = window ? *window : render_window(scene_, options);
     settings_.threads = options.threads;
-    accelerator_.emplace(scene_, accelerator_stack_settings(scene_, options, console));
+    accelerator_.emplace(scene_, options.accel,
+                         AccelMessages{console.note, console.warning, console.trace});
 }
 
 StudyRender StudyScene::render(const SamplingPlan& plan, std::uint64_t seed) {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/app/accel_stack_settings.h"
+#include "rt/accel/accelerator_stack.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/diagnostics.h"
@@ -69,9 +69,7 @@ std::vector<float> render_with(const Scene& scene, const fs::path& path,
     RenderSettings settings;
     settings.shading = run_shading(options);
     settings.window = render_window(scene, options);
-    RunConsole console;
-    console.warning = console.note = console.trace = console.report = [](const std::string&) {};
-    const AcceleratorStack stack(scene, accelerator_stack_settings(scene, options, console));
+    const AcceleratorStack stack(scene, options.accel, AccelMessages{});
     RenderObserver silent;
     RenderStatistics statistics;
     return render(scene, stack.top(), settings, silent, statistics).data();

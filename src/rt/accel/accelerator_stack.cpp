@@ -21,12 +21,13 @@ TextSink callable(const TextSink& sink) {
     return [sink](const std::string& line) { send(sink, line); };
 }
 
-std::unique_ptr<Accelerator> build_method(const Scene& scene, const AcceleratorStackSettings& s) {
-    AccelSettings method = s.method;
+std::unique_ptr<Accelerator> build_method(const Scene& scene, const AcceleratorStackSettings& s,
+                                          const AccelMessages& m) {
+    AccelSettings method = method_for_scene(scene, s.method);
     if (s.trace_fill) {
-        method.fill_trace = s.trace;
-        if (!method.new_fillplane || method.kind != AccelKind::Octree) {
-            send(s.note, "-dof traces the -op octree fill only; nothing to trace here");
+        method.octree.fill_trace = m.trace;
+        if (!method.octree.level_order || method.kind != AccelKind::Octree) {
+            send(m.note, "-dof traces the -op octree fill only; nothing to trace here");
         }
     }
     return make_accelerator(scene, method);
@@ -46,21 +47,22 @@ void write_octree_listing_of(const Accelerator& accel, const std::filesystem::pa
 
 }  // namespace
 
-AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSettings& s) {
-    base_ = build_method(scene, s);
+AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSettings& s,
+                                   const AccelMessages& m) {
+    base_ = build_method(scene, s, m);
     if (s.octree_listing) {
-        write_octree_listing_of(*base_, *s.octree_listing, s.note);
+        write_octree_listing_of(*base_, *s.octree_listing, m.note);
     }
     // The debugging layers look at the method itself, inside exit culling.
     if (s.strike_check || s.strike_print || s.strike_voxels) {
         auto strike = std::make_unique<StrikeCheck>(scene, std::move(base_),
                                                     StrikeOptions{s.strike_print, s.strike_voxels},
-                                                    callable(s.trace));
+                                                    callable(m.trace));
         strike_ = strike.get();
         base_ = std::move(strike);
     }
     if (s.log_intersections) {
-        base_ = std::make_unique<IntersectionLog>(std::move(base_), callable(s.trace));
+        base_ = std::make_unique<IntersectionLog>(std::move(base_), callable(m.trace));
     }
     if (s.exit_culling) {
         ExitCullingSettings culling;
@@ -74,7 +76,7 @@ AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSet
         zbuffer_ = make_zbuffer_first_hits(scene, PinholeView::from_view(scene.view), *base_);
         const ZBufferStatistics z = zbuffer_->statistics();
         if (!z.active) {
-            send(s.warning,
+            send(m.warning,
                  "z-buffer off: " + z.inactive_reason + "; eye rays use the intersection method");
         }
         top_ = zbuffer_.get();

@@ -4,10 +4,8 @@
 // its switches; the stack knows nothing of switches or consoles.
 #pragma once
 
-#include <filesystem>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,17 +21,8 @@ namespace rt {
 /// Where a layer's messages go, one line each, without a newline; may be empty (then dropped).
 using TextSink = std::function<void(const std::string&)>;
 
-struct AcceleratorStackSettings {
-    AccelSettings method;             ///< which method, and how (header, --accel, -o switches)
-    bool exit_culling = true;         ///< false with -De
-    bool check_exit_culling = false;  ///< -de: re-trace every culled ray
-    bool zbuffer_first_hits = false;  ///< --zbuffer
-    bool strike_check = false;        ///< -ds
-    bool strike_print = false;        ///< -dsp: print each difference (implies the check)
-    bool strike_voxels = false;       ///< -dso: ... with the voxels walked (implies it too)
-    bool log_intersections = false;   ///< -dl
-    bool trace_fill = false;          ///< -dof: method.fill_trace gets `trace`
-    std::optional<std::filesystem::path> octree_listing;  ///< -doo: write the octree there
+/// Where the layers' messages go.
+struct AccelMessages {
     TextSink note;     ///< a debugging switch with nothing to act on
     TextSink warning;  ///< a layer that had to turn itself off
     /// -dsp, -dso, -dl and -dof lines; called from the rendering threads, one call at a time.
@@ -44,7 +33,8 @@ class AcceleratorStack {
 public:
     /// Builds every layer; the scene must outlive the stack. Throws as make_accelerator does, and
     /// IoError when the octree listing cannot be written.
-    AcceleratorStack(const Scene& scene, const AcceleratorStackSettings& settings);
+    AcceleratorStack(const Scene& scene, const AcceleratorStackSettings& settings,
+                     const AccelMessages& messages);
     const Accelerator& top() const { return *top_; }
     /// What -p (and -de) print about the layers above the method.
     std::vector<std::string> report_lines() const;
