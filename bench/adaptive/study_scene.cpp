@@ -22,7 +22,8 @@ StudyScene::StudyScene(const Options& options, const std::optional<PixelRect>& w
     prepare_scene(scene_, options, settings_.shading);
     settings_.window = window ? *window : film_window(scene_.view.window, options.start_line);
     settings_.threads = options.threads;
-    accelerator_.emplace(scene_, options, console);
+    accelerator_.emplace(scene_, options.accel,
+                         AccelMessages{console.note, console.warning, console.trace});
 }
 
 StudyRender StudyScene::render(const SamplingPlan& plan, std::uint64_t seed) {

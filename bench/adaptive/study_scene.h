@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "rt/accel/accelerator.h"
-#include "rt/app/accelerator_stack.h"
+#include "rt/accel/accelerator_stack.h"
 #include "rt/app/options.h"
 #include "rt/image/film.h"
 #include "rt/render/renderer.h"

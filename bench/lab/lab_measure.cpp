@@ -121,7 +121,7 @@ std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, 
     settings.seads_resolution = options.seads_side != 0
                                     ? options.seads_side
                                     : suggested_seads_resolution(scene.polygons.size());
-    settings.octree_depth = options.octree_depth != 0
+    settings.octree.depth = options.octree_depth != 0
                                 ? options.octree_depth
                                 : suggested_octree_depth(scene.polygons.size());
     Measurement m;

@@ -4,7 +4,7 @@
 #include <exception>
 #include <iostream>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/accel/accelerator_stack.h"
 #include "rt/app/run.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
@@ -49,7 +49,8 @@ int bench(const std::vector<std::string>& args) {
     settings.window = rt::film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
     start = std::chrono::steady_clock::now();
-    const rt::AcceleratorStack stack(scene, options, console);
+    const rt::AcceleratorStack stack(scene, options.accel,
+                                     {console.note, console.warning, console.trace});
     const rt::Accelerator* accel = &stack.top();
     run.build_seconds = seconds_since(start);
 

@@ -71,7 +71,7 @@ void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_
         "%-7s %8zu tris  param %3d  build %7.1f ms  %6.1f B/tri  %5.2f Mrays/s  "
         "%5.1f tests/ray  %5.1f voxels/ray  hits %zu\n",
         std::string(accel->name()).c_str(), scene.polygons.size(),
-        settings.kind == rt::AccelKind::Seads ? settings.seads_resolution : settings.octree_depth,
+        settings.kind == rt::AccelKind::Seads ? *settings.seads_resolution : *settings.octree.depth,
         build * 1e3, accel->memory_bytes() / n, ray_count / trace / 1e6,
         static_cast<double>(counters.polygon_tests) / ray_count,
         static_cast<double>(counters.voxels_stepped) / ray_count, hits);
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
         }
         rt::AccelSettings octree;
         octree.kind = rt::AccelKind::Octree;
-        octree.octree_depth = from_environment("DEPTH", rt::suggested_octree_depth(triangles));
+        octree.octree.depth = from_environment("DEPTH", rt::suggested_octree_depth(triangles));
         if (only == nullptr || std::string(only) == "octree") {
             measure(scene, octree, ray_count);
         }

@@ -66,7 +66,7 @@ TEST(StrikeCheck, CountsSilentlyWithoutPrintSwitches) {
     Collected printed;
     AccelSettings octree;
     octree.kind = AccelKind::Octree;
-    octree.octree_depth = 5;
+    octree.octree.depth = 5;
     // -tv 1: a ray gives up after one fruitless leaf, so it often misses what brute force hits.
     octree.terminate_after_voxels = 1;
     const StrikeCheck check(scene, make_accelerator(scene, octree), {}, printed.sink());

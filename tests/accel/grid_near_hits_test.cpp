@@ -48,7 +48,7 @@ std::vector<AccelSettings> voxel_methods() {
     seads.seads_resolution = 4;
     AccelSettings octree;
     octree.kind = AccelKind::Octree;
-    octree.octree_depth = 2;
+    octree.octree.depth = 2;
     return {seads, octree};
 }
 
@@ -103,7 +103,7 @@ TEST(NearHitsAcceptedAtOnce, AndNoFudgeReturnOnlyRealHits) {
             settings.accept_near_hits = on;
             settings.no_fudge = !on;
             settings.seads_resolution = 12;
-            settings.octree_depth = 6;
+            settings.octree.depth = 6;
             const auto accel = make_accelerator(scene, settings);
             TraceCounters counters;
             int farther = 0;
@@ -175,7 +175,7 @@ TEST(VoxelMethods, RaysFromFarAwayMatchBruteForce) {
     }
     for (AccelSettings settings : voxel_methods()) {
         settings.seads_resolution = 16;
-        settings.octree_depth = 7;
+        settings.octree.depth = 7;
         const auto accel = make_accelerator(scene, settings);
         expect_same_as_brute_force(scene, *accel, rays);
     }

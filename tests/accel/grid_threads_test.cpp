@@ -19,7 +19,7 @@ TEST(VoxelMethodsAcrossThreads, GiveTheSingleThreadedAnswers) {
     seads.seads_resolution = 10;
     AccelSettings octree;
     octree.kind = AccelKind::Octree;
-    octree.octree_depth = 6;
+    octree.octree.depth = 6;
     for (const AccelSettings& settings : {seads, octree}) {
         const auto accel = make_accelerator(scene, settings);
         std::vector<std::optional<Hit>> alone(rays.size());

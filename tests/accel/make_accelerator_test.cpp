@@ -58,6 +58,37 @@ Vec3 centre_of(const Scene& scene, std::uint32_t id) {
     return sum / static_cast<double>(p.corner_count);
 }
 
+// The scene header decides what the settings leave unset, and only that: a depth or a method set
+// (by -od or --accel) wins over the header's, and a method the header does not name is sized for
+// the scene's polygon count.
+TEST(MethodForScene, TheHeaderFillsWhatTheSettingsLeaveUnset) {
+    Scene scene = test::make_soup(3, 1000);
+    const auto decided = [&](int sptncde, int octr, const AccelSettings& asked) {
+        scene.header.sptncde = sptncde;
+        scene.header.octr = octr;
+        return method_for_scene(scene, asked);
+    };
+    const AccelSettings none;
+    EXPECT_EQ(decided(0, 0, none).kind, AccelKind::BruteForce);
+    EXPECT_EQ(decided(1, 3, none).kind, AccelKind::Octree);
+    EXPECT_EQ(decided(1, 3, none).octree.depth, 3);
+    EXPECT_EQ(decided(12, 0, none).kind, AccelKind::Seads);
+    EXPECT_EQ(decided(12, 0, none).seads_resolution, 12);
+    // Not named by the header: the suggested sizes (1000 polygons: depth 4, 10 a side).
+    EXPECT_EQ(decided(12, 0, none).octree.depth, 4);
+    EXPECT_EQ(decided(1, 3, none).seads_resolution, 10);
+    AccelSettings asked;
+    asked.kind = AccelKind::Bvh;
+    asked.octree.depth = 6;
+    asked.seads_resolution = 7;
+    for (const int sptncde : {0, 1, 12}) {
+        const AccelSettings d = decided(sptncde, 3, asked);
+        EXPECT_EQ(d.kind, AccelKind::Bvh) << sptncde;
+        EXPECT_EQ(d.octree.depth, 6) << sptncde;
+        EXPECT_EQ(d.seads_resolution, 7) << sptncde;
+    }
+}
+
 // Every exact method built by name answers rays through a soup as brute force does (the t of the
 // nearest hit to rounding, the same occlusion). Half the rays aim at a polygon's centre, so that
 // most of those hit something; the others go anywhere.
@@ -70,7 +101,7 @@ TEST(MakeAccelerator, EveryExactMethodAnswersAsBruteForce) {
          {AccelKind::BruteForce, AccelKind::Octree, AccelKind::Seads, AccelKind::Bvh}) {
         AccelSettings settings;
         settings.kind = kind;
-        settings.octree_depth = suggested_octree_depth(scene.polygons.size());
+        settings.octree.depth = suggested_octree_depth(scene.polygons.size());
         settings.seads_resolution = suggested_seads_resolution(scene.polygons.size());
         const std::unique_ptr<Accelerator> accel = make_accelerator(scene, settings);
         int hits = 0;
@@ -119,7 +150,7 @@ TEST(MakeAccelerator, ManyCorneredPolygonsAnswerAsBruteForce) {
     for (const AccelKind kind : {AccelKind::Octree, AccelKind::Seads, AccelKind::Bvh}) {
         AccelSettings settings;
         settings.kind = kind;
-        settings.octree_depth = 4;
+        settings.octree.depth = 4;
         settings.seads_resolution = 8;
         const std::unique_ptr<Accelerator> accel = make_accelerator(scene, settings);
         int hits = 0;
@@ -171,7 +202,7 @@ TEST(MakeAccelerator, MemoryIsNothingForBruteForceAndGrowsWithTheScene) {
     for (const AccelKind kind : {AccelKind::Octree, AccelKind::Seads, AccelKind::Bvh}) {
         AccelSettings settings;
         settings.kind = kind;
-        settings.octree_depth = 4;
+        settings.octree.depth = 4;
         settings.seads_resolution = 16;
         const std::size_t small_bytes = make_accelerator(small, settings)->memory_bytes();
         const std::size_t large_bytes = make_accelerator(large, settings)->memory_bytes();

@@ -24,7 +24,7 @@ OctreeBuildSettings at_depth(int depth, int seed_size_power = kDefaultSeedSizePo
 AccelSettings octree(int depth) {
     AccelSettings s;
     s.kind = AccelKind::Octree;
-    s.octree_depth = depth;
+    s.octree.depth = depth;
     return s;
 }
 
@@ -144,11 +144,11 @@ TEST(Octree, RunningOutOfOctlistIsAClearError) {
         ++power;
     }
     AccelSettings settings = octree(6);
-    settings.octlist_power = power;
+    settings.octree.octlist_power = power;
     EXPECT_NO_THROW(Octree(scene, settings));
-    settings.octlist_power = power - 1;
+    settings.octree.octlist_power = power - 1;
     for (const bool level_order : {false, true}) {
-        settings.new_fillplane = level_order;
+        settings.octree.level_order = level_order;
         try {
             Octree accel(scene, settings);
             ADD_FAILURE() << "no error for -ol " << power - 1;

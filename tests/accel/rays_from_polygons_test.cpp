@@ -38,9 +38,9 @@ struct Method {
 AccelSettings settings(AccelKind kind, int depth_or_side, bool level_order, bool near_hits) {
     AccelSettings s;
     s.kind = kind;
-    s.octree_depth = depth_or_side;
+    s.octree.depth = depth_or_side;
     s.seads_resolution = depth_or_side;
-    s.new_fillplane = level_order;
+    s.octree.level_order = level_order;
     s.accept_near_hits = near_hits;
     return s;
 }

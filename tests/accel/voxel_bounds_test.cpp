@@ -62,7 +62,7 @@ TEST(VoxelBounds, SkippingByThemMatchesBruteForce) {
 
     AccelSettings octree;
     octree.kind = AccelKind::Octree;
-    octree.octree_depth = 2;
+    octree.octree.depth = 2;
     const Octree on_tree(scene, octree);
     ASSERT_EQ(on_tree.tree().bounds_slots, kVoxelBoundsSlots);
     expect_same_as_brute_force(scene, on_tree, random_rays(on_tree.tree().world, 20000, 32));
@@ -72,9 +72,9 @@ TEST(VoxelBounds, BothOctreeFillsStillGiveTheSameTree) {
     const Scene scene = dense_sphere();
     AccelSettings settings;
     settings.kind = AccelKind::Octree;
-    settings.octree_depth = 3;
+    settings.octree.depth = 3;
     const Octree depth_first(scene, settings);
-    settings.new_fillplane = true;
+    settings.octree.level_order = true;
     const Octree level_order(scene, settings);
     EXPECT_EQ(depth_first.tree().nodes, level_order.tree().nodes);
     EXPECT_EQ(depth_first.tree().polygons, level_order.tree().polygons);

@@ -1,14 +1,14 @@
 // The step from the parsed command line to the library's settings (run_settings.h,
-// accelerator_stack.h), switch by switch. Each row gives a command line and exactly the settings
-// it must change from the defaults: a switch that is dropped changes nothing and fails its row; a
-// switch wired to the wrong setting changes another one and fails it too.
+// make_accelerator.h's method_for_scene), switch by switch. Each row gives a command line and
+// exactly the settings it must change from the defaults: a switch that is dropped changes nothing
+// and fails its row; a switch wired to the wrong setting changes another one and fails it too.
 #include "rt/app/run_settings.h"
 
 #include <map>
 #include <string>
 #include <vector>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/accel/make_accelerator.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
 #include "rt/render/film_window.h"
@@ -330,7 +330,7 @@ AccelSettings accel_for(const SceneHeader& header, std::vector<std::string> swit
     Scene scene = test::SceneBuilder().scene();
     scene.header = header;
     switches.insert(switches.begin(), "scene");
-    return accel_settings(scene, parse_command_line(switches));
+    return method_for_scene(scene, parse_command_line(switches).accel.method);
 }
 
 TEST(AccelSettingsFromSwitches, HeaderChoosesAndSwitchesOverride) {
@@ -338,8 +338,8 @@ TEST(AccelSettingsFromSwitches, HeaderChoosesAndSwitchesOverride) {
     octree.sptncde = 1;
     octree.octr = 4;
     EXPECT_EQ(accel_for(octree, {}).kind, AccelKind::Octree);
-    EXPECT_EQ(accel_for(octree, {}).octree_depth, 4);
-    EXPECT_EQ(accel_for(octree, {"-od6"}).octree_depth, 6);
+    EXPECT_EQ(accel_for(octree, {}).octree.depth, 4);
+    EXPECT_EQ(accel_for(octree, {"-od6"}).octree.depth, 6);
     SceneHeader seads;
     seads.sptncde = 12;
     EXPECT_EQ(accel_for(seads, {}).kind, AccelKind::Seads);
@@ -356,17 +356,18 @@ TEST(AccelSettingsFromSwitches, EachOctreeSwitchSetsItsField) {
     octree.sptncde = 1;
     octree.octr = 4;
     const AccelSettings base = accel_for(octree, {});
-    EXPECT_FALSE(base.octlist_power || base.seed_size_power || base.terminate_after_voxels);
-    EXPECT_FALSE(base.new_fillplane || base.accept_near_hits || base.no_fudge);
-    EXPECT_EQ(accel_for(octree, {"-ol16"}).octlist_power, 16);
-    EXPECT_EQ(accel_for(octree, {"-ss10"}).seed_size_power, 10);
+    EXPECT_FALSE(base.octree.octlist_power || base.octree.seed_size_power ||
+                 base.terminate_after_voxels);
+    EXPECT_FALSE(base.octree.level_order || base.accept_near_hits || base.no_fudge);
+    EXPECT_EQ(accel_for(octree, {"-ol16"}).octree.octlist_power, 16);
+    EXPECT_EQ(accel_for(octree, {"-ss10"}).octree.seed_size_power, 10);
     EXPECT_EQ(accel_for(octree, {"-tv8"}).terminate_after_voxels, 8);
     const AccelSettings op = accel_for(octree, {"-op"});
-    EXPECT_TRUE(op.new_fillplane && !op.accept_near_hits && !op.no_fudge);
+    EXPECT_TRUE(op.octree.level_order && !op.accept_near_hits && !op.no_fudge);
     const AccelSettings on = accel_for(octree, {"-on"});
-    EXPECT_TRUE(!on.new_fillplane && on.accept_near_hits && !on.no_fudge);
+    EXPECT_TRUE(!on.octree.level_order && on.accept_near_hits && !on.no_fudge);
     const AccelSettings of = accel_for(octree, {"-of"});
-    EXPECT_TRUE(!of.new_fillplane && !of.accept_near_hits && of.no_fudge);
+    EXPECT_TRUE(!of.octree.level_order && !of.accept_near_hits && of.no_fudge);
 }
 
 }  // namespace

@@ -129,9 +129,9 @@ TEST(SwitchParser, AttachedOrSeparateArguments) {
 }
 
 TEST(SwitchParser, LongestSpellingWins) {
-    EXPECT_TRUE(parse_command_line({"s", "-dsp"}).debug_strike_print);
-    EXPECT_FALSE(parse_command_line({"s", "-dsp"}).debug_strike);
-    EXPECT_TRUE(parse_command_line({"s", "-doo"}).debug_octree_output);
+    EXPECT_TRUE(parse_command_line({"s", "-dsp"}).accel.strike_print);
+    EXPECT_FALSE(parse_command_line({"s", "-dsp"}).accel.strike_check);
+    EXPECT_TRUE(parse_command_line({"s", "-doo"}).accel.octree_listing.has_value());
     EXPECT_EQ(usage_error({"s", "-doi"}),
               "not implemented: -doi: octree debugging is not implemented yet");
     EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).shading.specular.law,

@@ -20,7 +20,7 @@
 #include <optional>
 #include <string>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/accel/accelerator_stack.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/image/film_reference.h"
@@ -64,7 +64,7 @@ public:
         settings_.shading = run_shading(options_);
         prepare_scene(scene_, options_, settings_.shading);
         settings_.window = kWindow;
-        accelerator_.emplace(scene_, options_, RunConsole{});
+        accelerator_.emplace(scene_, options_.accel, AccelMessages{});
     }
 
     Film render(int nx, int ny, bool adaptive, std::uint64_t seed, double* rays = nullptr) {

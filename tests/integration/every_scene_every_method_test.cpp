@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/accel/accelerator_stack.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/diagnostics.h"

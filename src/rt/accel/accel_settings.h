@@ -1,8 +1,10 @@
 // Which intersection method to build and how (manual part three, 2.2 header numbers 3 and 4, and
-// the Appendix's -o and -t switches). Filled from the scene header and the switches by the app.
+// the Appendix's -o, -t and -d switches). The program's switches write them; what they leave
+// unset, the scene header decides (method_for_scene in make_accelerator.h).
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -22,18 +24,38 @@ std::optional<AccelKind> accel_kind_from_name(std::string_view name);
 int suggested_seads_resolution(std::size_t polygons);
 int suggested_octree_depth(std::size_t polygons);
 
+/// How to build the octree: its depth and node pool (-od, -ol, -ss), its fill (-op, -dof).
+struct OctreeBuildSettings {
+    std::optional<int> depth;            ///< -od; none: method_for_scene() decides
+    std::optional<int> octlist_power;    ///< -ol: at most 2^n nodes
+    std::optional<int> seed_size_power;  ///< -ss: 2^n nodes allocated at first
+    bool level_order = false;            ///< -op, the "new fill-plane": a level at a time
+    /// Threads for the default fill's subtrees (0: one a core); the tree is the same for any.
+    unsigned threads = 0;
+    std::function<void(const std::string&)> fill_trace;  ///< -dof: the -op fill, level by level
+};
+
 struct AccelSettings {
-    AccelKind kind = AccelKind::BruteForce;
-    int octree_depth = 0;                       ///< header's octr, or -od
-    int seads_resolution = 0;                   ///< header's sptncde (> 1): voxels a side
-    std::optional<int> octlist_power;           ///< -ol: octree storage 2^n
-    std::optional<int> seed_size_power;         ///< -ss: seed size 2^n
-    bool new_fillplane = false;                 ///< -op
+    std::optional<AccelKind> kind;              ///< --accel; none: the scene header's method
+    std::optional<int> seads_resolution;        ///< voxels a side; none: method_for_scene() decides
+    OctreeBuildSettings octree;                 ///< -od -ol -ss -op -dof
     bool accept_near_hits = false;              ///< -on
     bool no_fudge = false;                      ///< -of
     std::optional<int> terminate_after_voxels;  ///< -tv
-    /// -dof: told, level by level, what the -op fill did (may be empty).
-    std::function<void(const std::string&)> fill_trace;
+};
+
+/// The whole stack of accelerator_stack.h: the method, and the layers around it.
+struct AcceleratorStackSettings {
+    AccelSettings method;             ///< which method, and how (header, --accel, -o switches)
+    bool exit_culling = true;         ///< false with -De
+    bool check_exit_culling = false;  ///< -de: re-trace every culled ray
+    bool zbuffer_first_hits = false;  ///< --zbuffer
+    bool strike_check = false;        ///< -ds
+    bool strike_print = false;        ///< -dsp: print each difference (implies the check)
+    bool strike_voxels = false;       ///< -dso: ... with the voxels walked (implies it too)
+    bool log_intersections = false;   ///< -dl
+    bool trace_fill = false;          ///< -dof: the octree fill traces to the stack's trace sink
+    std::optional<std::filesystem::path> octree_listing;  ///< -doo: write the octree there
 };
 
 }  // namespace rt

@@ -55,8 +55,28 @@ std::optional<AccelKind> accel_kind_from_name(std::string_view name) {
     return std::nullopt;
 }
 
-std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& settings) {
-    switch (settings.kind) {
+AccelSettings method_for_scene(const Scene& scene, AccelSettings settings) {
+    const SceneHeader& h = scene.header;
+    const std::size_t polygons = scene.polygons.size();
+    if (!settings.kind) {
+        settings.kind = h.sptncde == 0   ? AccelKind::BruteForce
+                        : h.sptncde == 1 ? AccelKind::Octree
+                                         : AccelKind::Seads;
+    }
+    // A method the header does not name gets the voxel size measured best for the scene's size.
+    if (!settings.octree.depth) {
+        settings.octree.depth = h.sptncde == 1 ? h.octr : suggested_octree_depth(polygons);
+    }
+    if (!settings.seads_resolution) {
+        settings.seads_resolution =
+            h.sptncde > 1 ? h.sptncde : suggested_seads_resolution(polygons);
+    }
+    return settings;
+}
+
+std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& asked) {
+    const AccelSettings settings = method_for_scene(scene, asked);
+    switch (*settings.kind) {
         case AccelKind::BruteForce:
             return make_brute_force(scene);
         case AccelKind::Octree:
@@ -65,19 +85,15 @@ std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSet
             return make_seads(scene, settings);
         case AccelKind::Bvh:
             return make_bvh(scene);
-#if RT_WITH_EMBREE
         case AccelKind::Embree:
-            return make_embree_accelerator(scene);
-#else
-        case AccelKind::Embree:
-            throw NotImplementedError(
-                "the embree intersection method needs Embree 3, which this build of rt lacks");
-#endif
-        default:
-            throw NotImplementedError(std::string("the ") +
-                                      std::string(accel_kind_name(settings.kind)) +
-                                      " intersection method is not implemented yet");
+            break;
     }
+#if RT_WITH_EMBREE
+    return make_embree_accelerator(scene);
+#else
+    throw NotImplementedError(
+        "the embree intersection method needs Embree 3, which this build of rt lacks");
+#endif
 }
 
 }  // namespace rt

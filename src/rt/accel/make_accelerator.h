@@ -8,8 +8,14 @@
 
 namespace rt {
 
-/// The scene must outlive the result. Throws NotImplementedError for a method not built in (an
-/// Embree backend without Embree) and UsageError for settings it cannot honour.
+/// The settings with what they leave unset decided for this scene: the method the header names
+/// (0 0 brute force, 1 depth octree, N 0 SEADS), its octree depth or SEADS voxels a side, and for
+/// a method the header does not name, the sizes suggested for the scene's polygon count.
+AccelSettings method_for_scene(const Scene& scene, AccelSettings settings);
+
+/// Builds the method of method_for_scene(scene, settings). The scene must outlive the result.
+/// Throws NotImplementedError for a method not built in (an Embree backend without Embree) and
+/// UsageError for settings it cannot honour.
 std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& settings);
 
 }  // namespace rt

@@ -1,6 +1,6 @@
 // Everything a program can be told on its command line, in the library's own settings: the switch
-// table (switch_table.cpp) writes the reading dialect, the shading and sampling settings and the
-// display mapping directly, and run() hands them on as they are.
+// table (switch_table.cpp) writes the reading dialect, the shading and sampling settings, the
+// intersection method and the display mapping directly, and run() hands them on as they are.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rt/accel/accel_settings.h"
 #include "rt/image/film.h"
 #include "rt/scene/dialect.h"
 #include "rt/shading/shading_settings.h"
@@ -35,16 +36,9 @@ struct Options {
     std::optional<int> start_line;  ///< -L: draw only from this line up
 
     // --- the intersection method (manual part three) -------------------------------------------
-    std::optional<std::string> accel;           ///< --accel NAME: overrides the scene header
-    std::optional<int> octree_depth;            ///< -od: overrides the scene header
-    std::optional<int> terminate_after_voxels;  ///< -tv
-    std::optional<int> octlist_power;           ///< -ol
-    std::optional<int> seed_size_power;         ///< -ss
-    bool accept_near_hits = false;              ///< -on
-    bool no_fudge = false;                      ///< -of
-    bool new_fillplane = false;                 ///< -op
-    bool disable_exit_culling = false;          ///< -De
-    bool zbuffer_first_hits = false;            ///< --zbuffer: eye rays from an item buffer
+    /// --accel -od -tv -ol -ss -on -of -op -De --zbuffer, and the debugging switches -ds -dsp -dso
+    /// -dl -doo -dof -de; what they leave unset, the scene header decides.
+    AcceleratorStackSettings accel;
 
     // --- output -------------------------------------------------------------------------------
     std::vector<std::string> outputs;  ///< --output FILE (repeatable); format from the extension
@@ -56,16 +50,9 @@ struct Options {
     bool profile = false;                   ///< -p
     bool random_rays = false;               ///< -r
     bool print_columns = false;             ///< -dc
-    bool debug_strike = false;              ///< -ds
-    bool debug_strike_print = false;        ///< -dsp
-    bool debug_strike_oct = false;          ///< -dso
-    bool debug_intersections = false;       ///< -dl
-    bool debug_octree_output = false;       ///< -doo
     bool debug_octree_interactive = false;  ///< -doi (not implemented yet)
-    bool debug_fillplane = false;           ///< -dof
     bool debug_color = false;               ///< -dd
     bool debug_chi_square = false;          ///< -dx
-    bool debug_exit_culling = false;        ///< -de
 
     // --- the program itself (long options) ----------------------------------------------------
     bool show_help = false;     ///< --help

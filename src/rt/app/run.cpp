@@ -4,7 +4,7 @@
 #include <chrono>
 #include <ctime>
 
-#include "rt/app/accelerator_stack.h"
+#include "rt/accel/accelerator_stack.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
@@ -151,7 +151,8 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.threads = options.threads;
 
     phase = Clock::now();
-    const AcceleratorStack stack(scene, options, console);
+    const AcceleratorStack stack(scene, options.accel,
+                                 {console.note, console.warning, console.trace});
     const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);
     const auto print_profile = [&](const KindCounters& counters) {
@@ -162,7 +163,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
                 text += "  " + line + "\n";
             }
             console.report(text);
-        } else if (options.debug_exit_culling && console.report) {
+        } else if (options.accel.check_exit_culling && console.report) {
             for (const std::string& line : stack.report_lines()) {
                 console.report(line + "\n");
             }

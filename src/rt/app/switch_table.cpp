@@ -12,6 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "rt/core/error.h"
+#include "rt/core/text.h"
+
 namespace rt {
 
 namespace {
@@ -25,6 +28,16 @@ constexpr Range kPositive{0.0, 0.0, true, false, false};
 constexpr Range kNonNegative{0.0, 0.0, false, false, false};
 constexpr Range kProbability{0.0, 1.0, true, true, true};
 constexpr Range kAngle{0.0, std::numbers::pi, true, false, true};
+
+// --accel NAME: its row has no range, so the name is checked here, once.
+void set_accel_kind(Options& o, A a) {
+    const std::optional<AccelKind> kind = accel_kind_from_name(a.text);
+    if (!kind) {
+        throw UsageError("--accel: expected brute, octree, seads, bvh or embree, found " +
+                         quote_token(a.text));
+    }
+    o.accel.method.kind = *kind;
+}
 
 constexpr Range whole(int low, int high) {
     return {static_cast<double>(low), static_cast<double>(high), false, false, true};
@@ -62,7 +75,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-m2.0"},
     {.spelling = "-tv", .form = Integer, .topic = SpatialEncoding,
      .first = {"N", whole(1, 1000000)},
-     .apply = [](Options& o, A a) { o.terminate_after_voxels = static_cast<int>(a.integer); },
+     .apply = [](Options& o, A a) { o.accel.method.terminate_after_voxels = static_cast<int>(a.integer); },
      .summary = "Terminate rays after N fruitless voxel hits",
      .details = "Ends a ray as a miss after N voxels without any hit (a near hit waiting for its "
                 "voxel keeps it going): faster, and a different picture by design. Shadow "
@@ -74,7 +87,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "very strange colors.", .section = "App.", .example = "-c"},
     {.spelling = "-od", .form = Integer, .topic = SpatialEncoding,
      .first = {"the depth", whole(0, 20)},
-     .apply = [](Options& o, A a) { o.octree_depth = static_cast<int>(a.integer); },
+     .apply = [](Options& o, A a) { o.accel.method.octree.depth = static_cast<int>(a.integer); },
      .summary = "Specify octree depth (overrides scene file)",
      .details = "For studying the effects of different octree depths.", .section = "App.",
      .example = "-od5", .setting = "octree depth"},
@@ -85,33 +98,33 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-oo", .status = NotYet, .feature = kWireframe},
     {.spelling = "-ol", .form = Integer, .topic = SpatialEncoding,
      .first = {"the power of 2", whole(1, 30)},
-     .apply = [](Options& o, A a) { o.octlist_power = static_cast<int>(a.integer); },
+     .apply = [](Options& o, A a) { o.accel.method.octree.octlist_power = static_cast<int>(a.integer); },
      .summary = "Specify the length of the octlist, as a power of 2",
      .details = "The octree may use at most 2^n nodes (default 2^24, 8 bytes each); a tree that "
                 "needs more stops with an error naming -ol.",
      .section = "App.", .example = "-ol16", .setting = "octree node limit"},
     {.spelling = "-on", .topic = SpatialEncoding,
-     .apply = [](Options& o, A) { o.accept_near_hits = true; },
+     .apply = [](Options& o, A) { o.accel.method.accept_near_hits = true; },
      .summary = "Don't verify near hits (just accept them)",
      .details = "Accepts a hit lying beyond the voxel being searched at once. By default it waits "
                 "for its voxel, which gives exactly brute force's answer; -on can miss a nearer "
                 "polygon in a later voxel.", .section = "3.1",
      .example = "-on"},
-    {.spelling = "-of", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.no_fudge = true; },
+    {.spelling = "-of", .topic = SpatialEncoding, .apply = [](Options& o, A) { o.accel.method.no_fudge = true; },
      .summary = "Don't fudge (ddda is precise enough)",
      .details = "No fudge: polygons are filed in voxels without growing them (by 2^-24 of "
                 "the world) and hits are accepted without the rounding slack; answers may then "
                 "differ from brute force at voxel faces.", .section = "App.",
      .example = "-of"},
     {.spelling = "-op", .topic = SpatialEncoding,
-     .apply = [](Options& o, A) { o.new_fillplane = true; },
+     .apply = [](Options& o, A) { o.accel.method.octree.level_order = true; },
      .summary = "Use new fillplane routines.",
      .details = "Fills the octree one level at a time (breadth first) instead of depth first; the "
                 "tree is the same.",
      .section = "App.", .example = "-op"},
     {.spelling = "-ss", .form = Integer, .topic = SpatialEncoding,
      .first = {"the power of 2", whole(0, 30)},
-     .apply = [](Options& o, A a) { o.seed_size_power = static_cast<int>(a.integer); },
+     .apply = [](Options& o, A a) { o.accel.method.octree.seed_size_power = static_cast<int>(a.integer); },
      .summary = "Specify the seeds size as a power of 2",
      .details = "The octree's node pool starts at 2^n nodes (default 2^12) and doubles as "
                 "needed up to the -ol limit; the tree is the same.", .section = "App.",
@@ -207,7 +220,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Takes the maximum number of samples per pixel (the sample resolution squared).",
      .section = "App.", .example = "-Dx"},
     {.spelling = "-De", .topic = Disable,
-     .apply = [](Options& o, A) { o.disable_exit_culling = true; },
+     .apply = [](Options& o, A) { o.accel.exit_culling = false; },
      .summary = "disable exit ray culling",
      .details = "Exit-ray culling ends at once the rays that cannot hit anything: a table of world "
                 "regions and direction bins, built before rendering, says where nothing lies ahead "
@@ -352,28 +365,28 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "print column numbers",
      .details = "Prints the column number of the pixel on each sample.", .section = "App.",
      .example = "-dc"},
-    {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.debug_strike = true; },
+    {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.accel.strike_check = true; },
      .summary = "(strike) debug ddda by comparing actual results (slow)",
      .details = "Traces every ray and shadow feeler again by brute force and counts the answers "
                 "that differ; the count is printed at the end.",
      .section = "App.", .example = "-ds"},
     {.spelling = "-dsp", .topic = Debugging,
-     .apply = [](Options& o, A) { o.debug_strike_print = true; },
+     .apply = [](Options& o, A) { o.accel.strike_print = true; },
      .summary = "(strike print) print hits different only in poly, but not oct",
      .details = "Prints each difference the strike check finds (implies -ds).", .section = "App.",
      .example = "-dsp"},
     {.spelling = "-dso", .topic = Debugging,
-     .apply = [](Options& o, A) { o.debug_strike_oct = true; },
+     .apply = [](Options& o, A) { o.accel.strike_voxels = true; },
      .summary = "(strike oct) print octs looked in",
      .details = "With each difference, prints the voxels (octs) the walk looked in (implies "
                 "-ds).", .section = "App.", .example = "-dso"},
     {.spelling = "-dl", .topic = Debugging,
-     .apply = [](Options& o, A) { o.debug_intersections = true; }, .summary = "print intersections",
+     .apply = [](Options& o, A) { o.accel.log_intersections = true; }, .summary = "print intersections",
      .details = "Prints every nearest-hit query and its answer, whatever the method (the original "
                 "printed brute force's only).", .section = "App.",
      .example = "-dl"},
     {.spelling = "-doo", .topic = Debugging,
-     .apply = [](Options& o, A) { o.debug_octree_output = true; },
+     .apply = [](Options& o, A) { o.accel.octree_listing = "octree.lst"; },
      .summary = "Output the octree to octree.lst",
      .details = "Writes octree.lst in the current folder: every node, depth first, with the "
                 "polygon ids of each leaf.", .section = "App.", .example = "-doo"},
@@ -382,7 +395,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Debug octree interactively", .details = "Did not work in the original.",
      .section = "App.", .example = "-doi", .status = NotYet, .feature = kOctreeDebug},
     {.spelling = "-dof", .topic = Debugging,
-     .apply = [](Options& o, A) { o.debug_fillplane = true; }, .summary = "Debug octree fillplane",
+     .apply = [](Options& o, A) { o.accel.trace_fill = true; }, .summary = "Debug octree fillplane",
      .details = "Traces the -op fill-plane build of the octree level by level on standard error: "
                 "nodes, polygon references, leaves and splits of each level. Only with -op.", .section = "App.", .example = "-dof"},
     {.spelling = "-df", .topic = Debugging, .apply = [](Options& o, A) { o.trace_parsing = true; },
@@ -399,7 +412,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Prints, for each pixel, the samples taken, the intersections that distributed rays "
                 "and the distributed rays sent.", .section = "App.", .example = "-dx"},
     {.spelling = "-de", .topic = Debugging,
-     .apply = [](Options& o, A) { o.debug_exit_culling = true; },
+     .apply = [](Options& o, A) { o.accel.check_exit_culling = true; },
      .summary = "Debug exit ray culling",
      .details = "Traces every culled ray with the intersection method as well and counts those that "
                 "hit something (there should be none); prints the statistics at the end of the "
@@ -424,7 +437,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
      .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2"},
     {.spelling = "--accel", .form = Text, .topic = SpatialEncoding,
-     .first = {"NAME", {}}, .apply = [](Options& o, A a) { o.accel = a.text; },
+     .first = {"NAME", {}}, .apply = set_accel_kind,
      .summary = "Intersection method: brute, octree, seads, bvh or embree",
      .details = "Overrides the third and fourth numbers of the scene header. When the header "
                 "names another method, octree and seads size themselves for the scene: a depth "
@@ -432,7 +445,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "embree (a comparison only, not exact) needs a build with Embree 3.",
      .section = "new", .example = "--accel bvh"},
     {.spelling = "--zbuffer", .topic = SpatialEncoding,
-     .apply = [](Options& o, A) { o.zbuffer_first_hits = true; },
+     .apply = [](Options& o, A) { o.accel.zbuffer_first_hits = true; },
      .summary = "Find the eye rays' first hits with a z-buffer",
      .details = "Rasterises the polygons into an item buffer and takes each eye ray's first "
                 "polygon from it; the rest of the ray tree uses the intersection method.",

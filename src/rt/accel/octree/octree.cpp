@@ -8,21 +8,11 @@
 
 namespace rt {
 
-OctreeBuildSettings octree_build_settings(const AccelSettings& settings) {
-    OctreeBuildSettings build;
-    build.depth = settings.octree_depth;
-    build.octlist_power = settings.octlist_power;
-    build.seed_size_power = settings.seed_size_power;
-    build.no_fudge = settings.no_fudge;
-    build.fill_trace = settings.fill_trace;
-    return build;
-}
-
 Octree::Octree(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
-      tree_(settings.new_fillplane
-                ? build_octree_level_order(scene, octree_build_settings(settings))
-                : build_octree_depth_first(scene, octree_build_settings(settings))),
+      tree_(settings.octree.level_order
+                ? build_octree_level_order(scene, settings.octree, settings.no_fudge)
+                : build_octree_depth_first(scene, settings.octree, settings.no_fudge)),
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(tree_.world, false)) {
     add_leaf_bounds(scene, tree_);

@@ -16,8 +16,8 @@ struct VoxelSearchParts;
 
 class Octree : public Accelerator, public DescribesWalk {
 public:
-    /// Keeps a reference to the scene, which must outlive it. Uses settings.octree_depth, -ol,
-    /// -ss, -op, -of, -on and -tv; throws UsageError for a depth outside 0..20 or a tree that
+    /// Keeps a reference to the scene, which must outlive it. Uses settings.octree (its depth
+    /// must be set), -of, -on and -tv; throws UsageError for a depth outside 0..20 or a tree that
     /// does not fit in 2^ol nodes.
     Octree(const Scene& scene, const AccelSettings& settings);
     std::string_view name() const override { return "octree"; }
@@ -41,7 +41,6 @@ private:
     VoxelSearchParts search_parts() const;
 };
 
-OctreeBuildSettings octree_build_settings(const AccelSettings& settings);
 std::unique_ptr<Accelerator> make_octree(const Scene& scene, const AccelSettings& settings);
 
 }  // namespace rt

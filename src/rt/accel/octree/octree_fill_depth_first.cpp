@@ -104,14 +104,15 @@ unsigned build_threads(unsigned asked) {
 
 }  // namespace
 
-OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings) {
-    OctreeFill fill_state(scene, settings);
+OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings,
+                                    bool no_fudge) {
+    OctreeFill fill_state(scene, settings, no_fudge);
     OctreeTree& tree = fill_state.tree();
     OctreeCell root_cell;
-    root_cell.size = std::int64_t{1} << settings.depth;
+    root_cell.size = std::int64_t{1} << tree.depth;
     const unsigned threads = build_threads(settings.threads);
     if (threads <= 1) {
-        std::vector<ChildLists> scratch(static_cast<std::size_t>(settings.depth) + 1);
+        std::vector<ChildLists> scratch(static_cast<std::size_t>(tree.depth) + 1);
         fill(fill_state, tree, 0, root_cell, fill_state.all_polygons(), scratch);
     } else {
         // Split the top until there are at least four subtrees a thread, so that uneven ones
@@ -130,7 +131,7 @@ OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSetting
         std::vector<std::exception_ptr> errors(tasks.size());
         std::atomic<std::size_t> next{0};
         const auto work = [&] {
-            std::vector<ChildLists> scratch(static_cast<std::size_t>(settings.depth) + 1);
+            std::vector<ChildLists> scratch(static_cast<std::size_t>(tree.depth) + 1);
             for (std::size_t t = next++; t < tasks.size(); t = next++) {
                 try {
                     parts[t].nodes.emplace_back();

@@ -52,10 +52,11 @@ OctreeTree laid_out_depth_first(const OctreeTree& in) {
 
 }  // namespace
 
-OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSettings& settings) {
-    OctreeFill fill_state(scene, settings);
+OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSettings& settings,
+                                    bool no_fudge) {
+    OctreeFill fill_state(scene, settings, no_fudge);
     std::vector<PendingNode> level(1);
-    level[0].cell.size = std::int64_t{1} << settings.depth;
+    level[0].cell.size = std::int64_t{1} << fill_state.tree().depth;
     level[0].polygons = fill_state.all_polygons();
     std::array<std::vector<std::uint32_t>, 8> children;
     for (int depth = 0; !level.empty(); ++depth) {

@@ -30,9 +30,12 @@ OctreeCell OctreeCell::child(int c) const {
     return out;
 }
 
-OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) : scene_(scene) {
-    if (settings.depth < 0 || settings.depth > kMaxOctreeDepth) {
-        throw SettingError("octree depth", "the octree depth " + std::to_string(settings.depth) +
+OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings, bool no_fudge)
+    : scene_(scene) {
+    // The header's depth comes unchecked; a switch's is in range already.
+    const int depth = settings.depth.value_or(-1);
+    if (depth < 0 || depth > kMaxOctreeDepth) {
+        throw SettingError("octree depth", "the octree depth " + std::to_string(depth) +
                                                ": expected 0 to " +
                                                std::to_string(kMaxOctreeDepth));
     }
@@ -45,7 +48,7 @@ OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) 
     max_nodes_ = pool_limit(octlist_power_);
     const int seed =
         std::clamp(settings.seed_size_power.value_or(kDefaultSeedSizePower), 0, octlist_power_);
-    tree_.depth = settings.depth;
+    tree_.depth = depth;
     tree_.world = world_box(scene, true);
     tree_.step = tree_.world.extent() * (1.0 / static_cast<double>(std::int64_t{1} << tree_.depth));
     // -ss: the pool's first allocation; it then doubles as needed, up to the -ol limit.
@@ -57,7 +60,7 @@ OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings) 
                                                    "seed size");
     }
     tree_.nodes.emplace_back();
-    fudge_ = voxel_fudge(tree_.world, settings.no_fudge);
+    fudge_ = voxel_fudge(tree_.world, no_fudge);
     bounds_.reserve(scene.polygons.size());
     for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
         bounds_.push_back(polygon_bounds(scene, id));

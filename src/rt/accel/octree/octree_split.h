@@ -23,7 +23,7 @@ struct OctreeCell {
 class OctreeFill {
 public:
     /// Checks the depth and -ol, sets up the world box; throws UsageError for bad settings.
-    OctreeFill(const Scene& scene, const OctreeBuildSettings& settings);
+    OctreeFill(const Scene& scene, const OctreeBuildSettings& settings, bool no_fudge);
 
     OctreeTree& tree() { return tree_; }
     /// Every polygon's id (the root's contents).

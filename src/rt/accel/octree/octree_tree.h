@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "rt/accel/accel_settings.h"
 #include "rt/accel/voxel/box.h"
 #include "rt/scene/scene.h"
 
@@ -54,24 +55,16 @@ struct OctreeTree {
     }
 };
 
-/// How to build: depth, -ol, -ss, -of.
-struct OctreeBuildSettings {
-    int depth = 0;
-    std::optional<int> octlist_power;    ///< -ol: at most 2^n nodes
-    std::optional<int> seed_size_power;  ///< -ss: 2^n nodes allocated at first
-    bool no_fudge = false;               ///< -of
-    /// Threads for the default fill's subtrees (0: one a core); the tree is the same for any.
-    unsigned threads = 0;
-    std::function<void(const std::string&)> fill_trace;  ///< -dof: the -op fill, level by level
-};
-
 /// Puts bounds (voxel_bounds.h) in front of every non-empty leaf's ids, if the leaves hold enough
 /// polygons on average to be worth it; the same leaves and ids otherwise.
 void add_leaf_bounds(const Scene& scene, OctreeTree& tree);
 
+// Both fills need settings.depth; `no_fudge` (-of) files polygons in voxels without the fudge.
 /// The default fill: each node's polygons sent to its children depth first.
-OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings);
+OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSettings& settings,
+                                    bool no_fudge = false);
 /// -op, the "new fill-plane": one whole level of the tree at a time. The same tree, bit for bit.
-OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSettings& settings);
+OctreeTree build_octree_level_order(const Scene& scene, const OctreeBuildSettings& settings,
+                                    bool no_fudge = false);
 
 }  // namespace rt

@@ -12,7 +12,7 @@ namespace rt {
 
 Seads::Seads(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
-      grid_(build_seads_grid(scene, settings.seads_resolution, settings.no_fudge)),
+      grid_(build_seads_grid(scene, settings.seads_resolution.value_or(0), settings.no_fudge)),
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(grid_.world, false)) {}
 

@@ -1,0 +1,101 @@
+#include "rt/accel/accelerator_stack.h"
+
+#include "rt/accel/debug/intersection_log.h"
+#include "rt/accel/make_accelerator.h"
+#include "rt/accel/octree/octree.h"
+#include "rt/accel/octree/octree_listing.h"
+#include "rt/core/atomic_file.h"
+
+namespace rt {
+
+namespace {
+
+void send(const TextSink& sink, const std::string& line) {
+    if (sink) {
+        sink(line);
+    }
+}
+
+// A sink that may be empty, as the layers want it: always callable.
+TextSink callable(const TextSink& sink) {
+    return [sink](const std::string& line) { send(sink, line); };
+}
+
+std::unique_ptr<Accelerator> build_method(const Scene& scene, const AcceleratorStackSettings& s,
+                                          const AccelMessages& m) {
+    AccelSettings method = method_for_scene(scene, s.method);
+    if (s.trace_fill) {
+        method.octree.fill_trace = m.trace;
+        if (!method.octree.level_order || method.kind != AccelKind::Octree) {
+            send(m.note, "-dof traces the -op octree fill only; nothing to trace here");
+        }
+    }
+    return make_accelerator(scene, method);
+}
+
+void write_octree_listing_of(const Accelerator& accel, const std::filesystem::path& path,
+                             const TextSink& note) {
+    const auto* octree = dynamic_cast<const Octree*>(&accel);
+    if (octree == nullptr) {
+        send(note, "-doo: the intersection method is " + std::string(accel.name()) +
+                       ", not an octree: no " + path.filename().string() + " written");
+        return;
+    }
+    write_file_atomically(path,
+                          [&](std::ostream& out) { write_octree_listing(octree->tree(), out); });
+}
+
+}  // namespace
+
+AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSettings& s,
+                                   const AccelMessages& m) {
+    base_ = build_method(scene, s, m);
+    if (s.octree_listing) {
+        write_octree_listing_of(*base_, *s.octree_listing, m.note);
+    }
+    // The debugging layers look at the method itself, inside exit culling.
+    if (s.strike_check || s.strike_print || s.strike_voxels) {
+        auto strike = std::make_unique<StrikeCheck>(scene, std::move(base_),
+                                                    StrikeOptions{s.strike_print, s.strike_voxels},
+                                                    callable(m.trace));
+        strike_ = strike.get();
+        base_ = std::move(strike);
+    }
+    if (s.log_intersections) {
+        base_ = std::make_unique<IntersectionLog>(std::move(base_), callable(m.trace));
+    }
+    if (s.exit_culling) {
+        ExitCullingSettings culling;
+        culling.check_culled = s.check_exit_culling;
+        auto wrapped = std::make_unique<ExitCulling>(scene, std::move(base_), culling);
+        culling_ = wrapped.get();
+        base_ = std::move(wrapped);
+    }
+    top_ = base_.get();
+    if (s.zbuffer_first_hits) {
+        zbuffer_ = make_zbuffer_first_hits(scene, PinholeView::from_view(scene.view), *base_);
+        const ZBufferStatistics z = zbuffer_->statistics();
+        if (!z.active) {
+            send(m.warning,
+                 "z-buffer off: " + z.inactive_reason + "; eye rays use the intersection method");
+        }
+        top_ = zbuffer_.get();
+    }
+}
+
+std::vector<std::string> AcceleratorStack::report_lines() const {
+    std::vector<std::string> lines;
+    if (culling_ != nullptr) {
+        for (std::string& line : describe(culling_->statistics())) {
+            lines.push_back(std::move(line));
+        }
+    }
+    if (zbuffer_) {
+        for (std::string& line : describe(zbuffer_->statistics())) {
+            lines.push_back(std::move(line));
+        }
+    }
+    return lines;
+}
+
+}  // namespace rt
