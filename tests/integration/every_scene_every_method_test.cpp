@@ -15,7 +15,7 @@
 #include "rt/app/switch_parser.h"
 #include "rt/core/diagnostics.h"
 #include "rt/render/renderer.h"
-#include "rt/scene/load_scene.h"
+#include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -67,7 +67,7 @@ std::vector<float> render_with(const Scene& scene, const fs::path& path,
     args.insert(args.end(), switches.begin(), switches.end());
     const Options options = parse_command_line(args);
     RenderSettings settings;
-    settings.shading = shading_settings(options);
+    settings.shading = run_shading(options);
     settings.window = render_window(scene, options);
     RunConsole console;
     console.warning = console.note = console.trace = console.report = [](const std::string&) {};

@@ -52,9 +52,7 @@ TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
     ASSERT_EQ(a.polygons.size(), 2000u);
     expect_unit_outward_triangles(a);
     EXPECT_EQ(a.positions, b.positions);
-    Vec3 lo;
-    Vec3 hi;
-    a.bounds(lo, hi);
+    const auto [lo, hi] = a.bounds();
     for (int k = 0; k < 3; ++k) {
         EXPECT_GE(lo[k], 0.0);
         EXPECT_LE(hi[k], 1.0);

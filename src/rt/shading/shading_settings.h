@@ -41,4 +41,9 @@ struct ShadingSettings {
     }
 };
 
+/// -Oi, the earliest version of the raytracer (docs/rendering.md): Whitted's model as first
+/// written, before attenuation, transparent shadows and distribution were added, and with an
+/// emitter's point sources each at its full power. `every_sample` (-O1) also takes every sample.
+ShadingSettings earliest_version(ShadingSettings settings, bool every_sample);
+
 }  // namespace rt

@@ -28,7 +28,7 @@ namespace rt {
 struct VoxelSearchParts {
     const Scene& scene;
     const PolygonBoxes& boxes;
-    const Box& world;
+    const Box3& world;
     std::uint32_t bounds_slots = 0;  ///< in front of each voxel's ids (voxel_bounds.h), or 0
     const WalkRules& rules;
 };
