@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <iostream>
+#include <memory>
+#include <utility>
 
 #include "rt/core/text.h"
 
@@ -9,9 +11,28 @@
 
 namespace rt::cli {
 
-void configure(CLI::App& app) {
+namespace {
+
+class Formatter : public CLI::Formatter {
+public:
+    explicit Formatter(std::string usage) : usage_(std::move(usage)) { column_width(26); }
+
+    std::string make_usage(const CLI::App* app, std::string name) const override {
+        if (usage_.empty()) {
+            return CLI::Formatter::make_usage(app, std::move(name));
+        }
+        return fmt::format("Usage: {} {}\n", name, usage_);
+    }
+
+private:
+    std::string usage_;
+};
+
+}  // namespace
+
+void configure(CLI::App& app, std::string usage) {
     app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-    app.get_formatter()->column_width(26);
+    app.formatter(std::make_shared<Formatter>(std::move(usage)));
 }
 
 std::optional<int> parse(CLI::App& app, int argc, const char* const* argv, BareCommand bare) {

@@ -18,9 +18,10 @@ constexpr int kUsageExit = 2;
 /// What a command line without any argument asks for.
 enum class BareCommand { Runs, PrintsHelp };
 
-/// Settings every program's App shares: a repeated option's last value wins, and validators
-/// describe themselves in their messages rather than in the help's type column.
-void configure(CLI::App& app);
+/// Settings every program's App shares: a repeated option's last value wins, and the help's
+/// columns are wide enough for our names. `usage`, if given, replaces the help's generated
+/// "Usage: PROGRAM [OPTIONS] ..." tail, for programs that pass arguments on to rt.
+void configure(CLI::App& app, std::string usage = {});
 
 /// Parses argv into app. Returns the exit code if the program should stop: 0 after printing the
 /// help (--help, or no arguments when `bare` says so), kUsageExit after printing a usage error
