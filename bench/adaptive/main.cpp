@@ -1,13 +1,16 @@
-// rt_adaptive_study [study switches] SCENE [rt switches]: adaptive against uniform supersampling
+// rt_adaptive_study [study options] SCENE [rt switches]: adaptive against uniform supersampling
 // on one scene, measured against a far better-sampled reference (README.md).
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
 #include "rt/image/film_reference.h"
 
+#include "command_line/command_line.h"
 #include "study_arguments.h"
 #include "study_report.h"
 #include "study_scene.h"
@@ -16,11 +19,10 @@ namespace {
 
 constexpr std::uint64_t kFirstReferenceSeed = 1001;
 
-int study(const std::vector<std::string>& args) {
-    rt::bench::StudyArguments arguments = rt::bench::parse_study_arguments(args);
+int study(rt::bench::StudyArguments arguments, const std::string& help) {
     const rt::Options options = rt::parse_command_line(arguments.rt_args);
     if (options.show_help || options.show_usage) {
-        std::cout << rt::bench::study_usage();
+        std::cout << help;
         return 0;
     }
     if (arguments.uniform.empty()) {
@@ -74,11 +76,28 @@ int study(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app(
+        "Renders SCENE's window through the library with every plan and seeds 1..N: -Dx at each\n"
+        "--uniform sample resolution, adaptive at each --adaptive resolution with -Xp and -Xr\n"
+        "var (prob 0.2). Each picture's RMS error (display levels) is measured against the mean\n"
+        "of M -Dx renders at the --reference resolution (seeds 1001..), less that mean's own\n"
+        "noise. Prints each plan's rays and error, adaptive's error against uniform's at equal\n"
+        "rays, and the rays each needs for the same error.",
+        "rt_adaptive_study");
+    rt::cli::configure(app, "[study options] SCENE [rt switches]");
+    rt::bench::StudyArguments arguments;
+    rt::bench::add_study_options(app, arguments);
+    if (const std::optional<int> stop =
+            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
+        return *stop;
+    }
+    arguments.rt_args = app.remaining();
     try {
-        return study(std::vector<std::string>(argv + 1, argv + argc));
+        return study(arguments, app.help());
     } catch (const rt::UsageError& e) {
-        std::cerr << "rt_adaptive_study: " << e.what() << '\n' << rt::bench::study_usage();
-        return 2;
+        std::cerr << "rt_adaptive_study: " << e.what() << '\n'
+                  << "rt_adaptive_study: run 'rt_adaptive_study --help' for the options\n";
+        return rt::cli::kUsageExit;
     } catch (const std::exception& e) {
         std::cerr << "rt_adaptive_study: " << e.what() << '\n';
         return 1;

@@ -1,4 +1,4 @@
-// The adaptive-sampling study's command line: its own switches, and rt's for the rest.
+// The adaptive-sampling study's command line: its own options, and rt's switches for the rest.
 #pragma once
 
 #include <optional>
@@ -8,6 +8,7 @@
 #include "rt/image/film.h"
 
 #include "study_scene.h"
+#include <CLI/CLI.hpp>
 
 namespace rt::bench {
 
@@ -22,9 +23,9 @@ struct StudyArguments {
     std::vector<std::string> rt_args;     ///< SCENE and rt's switches
 };
 
-/// Throws rt::UsageError for a missing or malformed value.
-StudyArguments parse_study_arguments(const std::vector<std::string>& args);
-
-std::string study_usage();
+/// Declares the study's options on app, writing into arguments (--name VALUE or --name=VALUE;
+/// --uniform and --adaptive add up when repeated), and lets app keep every other argument, in
+/// order, for rt::parse_command_line (take them with app.remaining() after parsing).
+void add_study_options(CLI::App& app, StudyArguments& arguments);
 
 }  // namespace rt::bench

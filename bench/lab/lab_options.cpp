@@ -1,117 +1,111 @@
 #include "lab_options.h"
 
 #include <charconv>
+#include <limits>
 
-#include "rt/core/error.h"
+#include "rt/core/text.h"
+
+#include "command_line/command_line.h"
 
 namespace rt::lab {
 
 namespace {
 
-std::vector<std::string> split_commas(const std::string& text) {
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = text.find(',', start);
-        const std::size_t end = comma == std::string::npos ? text.size() : comma;
-        if (end > start) {
-            parts.push_back(text.substr(start, end - start));
-        }
-        start = end + 1;
-    }
-    return parts;
+// A count like 1000, 10k or 1M, above 0, rewritten as plain decimal for CLI11 to convert.
+CLI::Validator count() {
+    return {[](std::string& word) -> std::string {
+                std::string digits = word;
+                std::uint64_t factor = 1;
+                if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'M')) {
+                    factor = digits.back() == 'k' ? 1000 : 1000000;
+                    digits.pop_back();
+                }
+                std::uint64_t value = 0;
+                const auto [end, error] =
+                    std::from_chars(digits.data(), digits.data() + digits.size(), value);
+                if (error != std::errc{} || end != digits.data() + digits.size() || value == 0 ||
+                    value * factor > std::numeric_limits<std::int32_t>::max()) {
+                    return "expected a count like 1000, 10k or 1M, found " + quote_token(word);
+                }
+                word = std::to_string(value * factor);
+                return {};
+            },
+            ""};
 }
 
-std::uint32_t parse_size(const std::string& word) {
-    std::uint32_t value = 0;
-    std::string digits = word;
-    std::uint32_t factor = 1;
-    if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'M')) {
-        factor = digits.back() == 'k' ? 1000 : 1000000;
-        digits.pop_back();
-    }
-    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (error != std::errc{} || end != digits.data() + digits.size() || value == 0) {
-        throw UsageError("rt_lab: bad size '" + word + "' (a count like 1000, 10k or 1M)");
-    }
-    return value * factor;
+CLI::Validator accel_name() {
+    return {[](const std::string& name) -> std::string {
+                return accel_kind_from_name(name)
+                           ? std::string()
+                           : "unknown intersection method " + quote_token(name) +
+                                 " (brute, octree, seads, bvh, embree)";
+            },
+            ""};
 }
 
 }  // namespace
 
-std::string lab_help() {
-    return "rt_lab [switches]: every intersection method on the same meshes and rays\n"
-           "  --quick            1k and 10k triangles, shorter runs\n"
-           "  --sizes LIST       triangle counts, e.g. 1k,10k,100k,1M (the default)\n"
-           "  --meshes LIST      sphere,soup,twocubes (the default)\n"
-           "  --accels LIST      brute,octree,seads,bvh,embree (the default; missing ones are "
-           "skipped)\n"
-           "  --threads N        threads for the all-cores runs (default: all)\n"
-           "  --seconds S        least time per measurement (default 0.3)\n"
-           "  --seads-side N     SEADS voxels a side (default: the suggested size per mesh)\n"
-           "  --octree-depth N   octree depth (default: the suggested depth per mesh)\n"
-           "  --csv FILE         also write the table as CSV\n"
-           "  --svg FILE         also draw rays/s against triangle count (log-log)\n"
-           "  --source DIR       the source tree, for scenes/twocubes.scn (default .)\n";
-}
-
-LabOptions parse_lab_options(const std::vector<std::string>& args) {
-    LabOptions o;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw UsageError("rt_lab: " + a + " needs a value");
-            }
-            return args[++i];
-        };
-        if (a == "--help" || a == "-h") {
-            o.show_help = true;
-        } else if (a == "--quick") {
-            o.sizes = {1000, 10000};
-            o.seconds_per_run = 0.1;
-            o.brute_force_tests = 2e7;
-        } else if (a == "--sizes") {
-            o.sizes.clear();
-            for (const std::string& s : split_commas(value())) {
-                o.sizes.push_back(parse_size(s));
-            }
-        } else if (a == "--meshes") {
-            o.meshes = split_commas(value());
-        } else if (a == "--accels") {
-            o.accels.clear();
-            for (const std::string& s : split_commas(value())) {
-                const std::optional<AccelKind> kind = accel_kind_from_name(s);
-                if (!kind) {
-                    throw UsageError("rt_lab: unknown intersection method '" + s + "'");
-                }
-                o.accels.push_back(*kind);
-            }
-        } else if (a == "--threads") {
-            o.threads = parse_size(value());
-        } else if (a == "--seconds") {
-            const std::string& text = value();
-            const auto [end, error] =
-                std::from_chars(text.data(), text.data() + text.size(), o.seconds_per_run);
-            if (error != std::errc{} || end != text.data() + text.size() ||
-                !(o.seconds_per_run > 0.0)) {
-                throw UsageError("rt_lab: bad number of seconds '" + text + "'");
-            }
-        } else if (a == "--seads-side") {
-            o.seads_side = static_cast<int>(parse_size(value()));
-        } else if (a == "--octree-depth") {
-            o.octree_depth = static_cast<int>(parse_size(value()));
-        } else if (a == "--csv") {
-            o.csv_file = value();
-        } else if (a == "--svg") {
-            o.svg_file = value();
-        } else if (a == "--source") {
-            o.source_dir = value();
-        } else {
-            throw UsageError("rt_lab: unknown switch '" + a + "' (try --help)");
-        }
-    }
-    return o;
+void add_lab_options(CLI::App& app, LabOptions& o) {
+    // Every option acts when it is read, so the command line's order decides (see --quick).
+    app.add_flag_callback(
+           "--quick",
+           [&o] {
+               o.sizes = {1000, 10000};
+               o.seconds_per_run = 0.1;
+               o.brute_force_tests = 2e7;
+           },
+           "1k and 10k triangles, shorter runs")
+        ->trigger_on_parse();
+    app.add_option("--sizes", o.sizes, "triangle counts, e.g. 1k,10k,100k,1M (the default)")
+        ->type_name("LIST")
+        ->delimiter(',')
+        ->transform(count())
+        ->trigger_on_parse();
+    app.add_option("--meshes", o.meshes, "sphere,soup,twocubes (the default)")
+        ->type_name("LIST")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"sphere", "soup", "twocubes"}).description(""))
+        ->trigger_on_parse();
+    app.add_option_function<std::vector<std::string>>(
+           "--accels",
+           [&o](const std::vector<std::string>& names) {
+               o.accels.clear();
+               for (const std::string& name : names) {
+                   o.accels.push_back(*accel_kind_from_name(name));
+               }
+           },
+           "brute,octree,seads,bvh,embree (the default; missing ones are skipped)")
+        ->type_name("LIST")
+        ->delimiter(',')
+        ->check(accel_name())
+        ->trigger_on_parse();
+    app.add_option("--threads", o.threads, "threads for the all-cores runs (default: all)")
+        ->type_name("N")
+        ->transform(count())
+        ->trigger_on_parse();
+    app.add_option("--seconds", o.seconds_per_run, "least time per measurement (default 0.3)")
+        ->type_name("S")
+        ->check(cli::number_above(0.0))
+        ->trigger_on_parse();
+    app.add_option("--seads-side", o.seads_side,
+                   "SEADS voxels a side (default: the suggested size per mesh)")
+        ->type_name("N")
+        ->transform(count())
+        ->trigger_on_parse();
+    app.add_option("--octree-depth", o.octree_depth,
+                   "octree depth (default: the suggested depth per mesh)")
+        ->type_name("N")
+        ->transform(count())
+        ->trigger_on_parse();
+    app.add_option("--csv", o.csv_file, "also write the table as CSV")
+        ->type_name("FILE")
+        ->trigger_on_parse();
+    app.add_option("--svg", o.svg_file, "also draw rays/s against triangle count (log-log)")
+        ->type_name("FILE")
+        ->trigger_on_parse();
+    app.add_option("--source", o.source_dir, "the source tree, for scenes/twocubes.scn (default .)")
+        ->type_name("DIR")
+        ->trigger_on_parse();
 }
 
 }  // namespace rt::lab

@@ -2,11 +2,12 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "rt/accel/accel_settings.h"
+
+#include <CLI/CLI.hpp>
 
 namespace rt::lab {
 
@@ -20,15 +21,13 @@ struct LabOptions {
     double brute_force_tests = 2e8;  ///< ray-polygon tests brute force may spend per measurement
     std::string csv_file;
     std::string svg_file;
-    int seads_side = 0;    ///< SEADS voxels a side; 0: suggested_seads_resolution
-    int octree_depth = 0;  ///< octree depth; 0: suggested_octree_depth
+    int seads_side = 0;            ///< SEADS voxels a side; 0: suggested_seads_resolution
+    int octree_depth = 0;          ///< octree depth; 0: suggested_octree_depth
     std::string source_dir = ".";  ///< where scenes/twocubes.scn is
-    bool show_help = false;
 };
 
-/// Throws UsageError for an unknown or malformed switch.
-LabOptions parse_lab_options(const std::vector<std::string>& args);
-
-std::string lab_help();
+/// Declares the lab's options on app, writing into options. They take effect in command-line
+/// order, so a --sizes or --seconds after --quick overrides it, and one before it does not.
+void add_lab_options(CLI::App& app, LabOptions& options);
 
 }  // namespace rt::lab

@@ -2,13 +2,14 @@
 // rays through each, printing a table (and, on request, CSV and an SVG plot). bench/lab/README.md.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rt/core/diagnostics.h"
-#include "rt/core/error.h"
 #include "rt/scene/read/load_scene.h"
 
+#include "command_line/command_line.h"
 #include "lab_measure.h"
 #include "lab_options.h"
 #include "lab_rays.h"
@@ -44,9 +45,6 @@ int run(const LabOptions& options) {
                       results);
             continue;
         }
-        if (mesh != "sphere" && mesh != "soup") {
-            throw rt::UsageError("rt_lab: unknown mesh '" + mesh + "' (sphere, soup, twocubes)");
-        }
         for (const std::uint32_t size : options.sizes) {
             const rt::Scene scene = mesh == "sphere" ? rt::test::make_tessellated_sphere(size)
                                                      : rt::test::make_triangle_soup(size);
@@ -65,17 +63,19 @@ int run(const LabOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app(
+        "Every intersection method on the same meshes and rays: build time, memory and\n"
+        "rays per second (bench/lab/README.md).",
+        "rt_lab");
+    rt::cli::configure(app);
+    LabOptions options;
+    rt::lab::add_lab_options(app, options);
+    if (const std::optional<int> stop =
+            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::Runs)) {
+        return *stop;
+    }
     try {
-        const LabOptions options =
-            rt::lab::parse_lab_options(std::vector<std::string>(argv + 1, argv + argc));
-        if (options.show_help) {
-            std::cout << rt::lab::lab_help();
-            return 0;
-        }
         return run(options);
-    } catch (const rt::UsageError& e) {
-        std::cerr << e.what() << '\n';
-        return 2;
     } catch (const std::exception& e) {
         std::cerr << "rt_lab: " << e.what() << '\n';
         return 1;

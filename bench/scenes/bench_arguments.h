@@ -1,9 +1,11 @@
-// The scene benchmark's command line: its own switches, and everything else handed to rt's parser.
+// The scene benchmark's command line: its own options, and everything else handed to rt's parser.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 namespace rt::bench {
 
@@ -13,11 +15,9 @@ struct BenchArguments {
     std::vector<std::string> rt_args;  ///< SCENE and rt's switches (--threads, --accel, -Ds...)
 };
 
-/// Takes out --repeat N and --csv FILE (also --repeat=N, --csv=FILE); the rest is kept in order
-/// for rt::parse_command_line. Throws rt::UsageError for a missing or bad value.
-BenchArguments split_bench_arguments(const std::vector<std::string>& args);
-
-/// What `rt_scene_bench --help` prints.
-std::string bench_usage();
+/// Declares --repeat N and --csv FILE (also --repeat=N, --csv=FILE) on app, writing into
+/// arguments, and lets app keep every other argument, in order, for rt::parse_command_line
+/// (take them with app.remaining() after parsing).
+void add_bench_options(CLI::App& app, BenchArguments& arguments);
 
 }  // namespace rt::bench

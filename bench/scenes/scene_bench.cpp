@@ -3,6 +3,8 @@
 #include <chrono>
 #include <exception>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "rt/accel/accelerator_stack.h"
 #include "rt/app/run.h"
@@ -14,6 +16,7 @@
 
 #include "bench_arguments.h"
 #include "bench_report.h"
+#include "command_line/command_line.h"
 
 namespace {
 
@@ -21,11 +24,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int bench(const std::vector<std::string>& args) {
-    const rt::bench::BenchArguments arguments = rt::bench::split_bench_arguments(args);
+int bench(const rt::bench::BenchArguments& arguments, const std::string& help) {
     const rt::Options options = rt::parse_command_line(arguments.rt_args);
     if (options.show_help || options.show_usage) {
-        std::cout << rt::bench::bench_usage();
+        std::cout << help;
         return 0;
     }
     rt::RunConsole console;
@@ -69,11 +71,26 @@ int bench(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app(
+        "Loads SCENE once, builds its accelerator once and renders it N times through the\n"
+        "library, writing no picture; prints the median and minimum wall time per render and\n"
+        "rays per second. rt's own switches apply: --threads N, --accel NAME, -Ds, -L and the\n"
+        "rest (see rt --help).",
+        "rt_scene_bench");
+    rt::cli::configure(app, "[--repeat N] [--csv FILE] SCENE [rt switches]");
+    rt::bench::BenchArguments arguments;
+    rt::bench::add_bench_options(app, arguments);
+    if (const std::optional<int> stop =
+            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
+        return *stop;
+    }
+    arguments.rt_args = app.remaining();
     try {
-        return bench(std::vector<std::string>(argv + 1, argv + argc));
+        return bench(arguments, app.help());
     } catch (const rt::UsageError& e) {
-        std::cerr << "rt_scene_bench: " << e.what() << '\n' << rt::bench::bench_usage();
-        return 2;
+        std::cerr << "rt_scene_bench: " << e.what() << '\n'
+                  << "rt_scene_bench: run 'rt_scene_bench --help' for the options\n";
+        return rt::cli::kUsageExit;
     } catch (const std::exception& e) {
         std::cerr << "rt_scene_bench: " << e.what() << '\n';
         return 1;

@@ -2,17 +2,19 @@
 // cube spheres of 1k to 1M triangles (the yardstick). Usage (bench/README.md):
 //   [ONLY=seads|octree] [SIDE=n] [DEPTH=n] build-bench/bin/rt_voxel_bench [max_triangles [rays
 //   [min_triangles]]]
+// (--only, --side and --depth are the same as the variables).
 // Rays are eye rays through a square grid of pixels in raster order, as the renderer traces them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rt/accel/make_accelerator.h"
 
+#include "command_line/command_line.h"
 #include "support/meshes/generated_meshes.h"
 
 namespace {
@@ -33,10 +35,40 @@ double process_cpu_seconds() {
     return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-// SIDE=n and DEPTH=n in the environment override the grid size and octree depth.
-int from_environment(const char* name, int fallback) {
-    const char* value = std::getenv(name);
-    return value != nullptr ? std::atoi(value) : fallback;
+struct VoxelBenchArguments {
+    int max_triangles = 1000000;
+    int ray_count = 200000;
+    int min_triangles = 1000;
+    std::string only;  ///< "seads" or "octree": measure just that one
+    int side = 0;      ///< SEADS voxels a side; 0: the suggested size per sphere
+    int depth = 0;     ///< octree depth; 0: the suggested depth per sphere
+};
+
+void add_options(CLI::App& app, VoxelBenchArguments& a) {
+    const CLI::Validator count = rt::cli::whole_number_at_least(1);
+    app.add_option("max_triangles", a.max_triangles, "the largest sphere (default 1000000)")
+        ->type_name("")
+        ->transform(count);
+    app.add_option("rays", a.ray_count, "eye rays per measurement (default 200000)")
+        ->type_name("")
+        ->transform(count);
+    app.add_option("min_triangles", a.min_triangles,
+                   "the smallest sphere; each next one has ten times as many\n"
+                   "triangles (default 1000)")
+        ->type_name("")
+        ->transform(count);
+    app.add_option("--only", a.only, "measure just seads or octree")
+        ->type_name("NAME")
+        ->envname("ONLY")
+        ->check(CLI::IsMember({"seads", "octree"}).description(""));
+    app.add_option("--side", a.side, "SEADS voxels a side (default: the suggested size)")
+        ->type_name("N")
+        ->envname("SIDE")
+        ->transform(count);
+    app.add_option("--depth", a.depth, "octree depth (default: the suggested depth)")
+        ->type_name("N")
+        ->envname("DEPTH")
+        ->transform(count);
 }
 
 void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_count) {
@@ -80,26 +112,32 @@ void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int max_triangles = argc > 1 ? std::atoi(argv[1]) : 1000000;
-    const int ray_count = argc > 2 ? std::atoi(argv[2]) : 200000;
-    const char* only = std::getenv("ONLY");  // "seads" or "octree": measure just that one
-    const int min_triangles = argc > 3 ? std::atoi(argv[3]) : 1000;
-    for (int triangles = min_triangles; triangles <= max_triangles; triangles *= 10) {
+    CLI::App app(
+        "Build time, memory and single-thread rays per second of SEADS and the octree\n"
+        "on cube spheres of min_triangles to max_triangles triangles.",
+        "rt_voxel_bench");
+    rt::cli::configure(app);
+    VoxelBenchArguments a;
+    add_options(app, a);
+    if (const std::optional<int> stop =
+            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::Runs)) {
+        return *stop;
+    }
+    for (int triangles = a.min_triangles; triangles <= a.max_triangles; triangles *= 10) {
         const rt::Scene scene = rt::test::make_cube_sphere(static_cast<std::uint32_t>(triangles));
         rt::AccelSettings seads;
         seads.kind = rt::AccelKind::Seads;
         // About one voxel a side per cube root of the triangle count (measured best for the
         // sphere: finer grids walk more empty voxels than they save tests).
-        seads.seads_resolution =
-            from_environment("SIDE", rt::suggested_seads_resolution(triangles));
-        if (only == nullptr || std::string(only) == "seads") {
-            measure(scene, seads, ray_count);
+        seads.seads_resolution = a.side > 0 ? a.side : rt::suggested_seads_resolution(triangles);
+        if (a.only.empty() || a.only == "seads") {
+            measure(scene, seads, a.ray_count);
         }
         rt::AccelSettings octree;
         octree.kind = rt::AccelKind::Octree;
-        octree.octree.depth = from_environment("DEPTH", rt::suggested_octree_depth(triangles));
-        if (only == nullptr || std::string(only) == "octree") {
-            measure(scene, octree, ray_count);
+        octree.octree.depth = a.depth > 0 ? a.depth : rt::suggested_octree_depth(triangles);
+        if (a.only.empty() || a.only == "octree") {
+            measure(scene, octree, a.ray_count);
         }
     }
     return 0;

@@ -1,5 +1,6 @@
 // show NAME [--output FILE]... [--info] [-m F] [-c]: looks at a .gro picture written by rt
-// (manual 1.2). Parses the command line, calls the image library, maps errors to exit codes.
+// (manual 1.2). Reads the command line with CLI11, calls the image library, maps errors to exit
+// codes.
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -8,87 +9,48 @@
 #include <vector>
 
 #include "rt/core/error.h"
-#include "rt/core/text.h"
 #include "rt/image/film_summary.h"
 #include "rt/image/gro_format.h"
 #include "rt/image/image_writer.h"
 
-#include <fmt/format.h>
+#include "command_line/command_line.h"
 
 namespace {
 
 // Exit codes shared with rt: 0 ok, 1 bad input file, 2 usage, 3 I/O, 4 internal.
 constexpr int kOk = 0;
 constexpr int kBadInput = 1;
-constexpr int kUsage = 2;
+constexpr int kUsage = rt::cli::kUsageExit;
 constexpr int kIo = 3;
 constexpr int kInternal = 4;
-
-constexpr const char* kUsageText =
-    "usage: show NAME [--output FILE]... [--info] [-m F] [-c]\n"
-    "  NAME           the .gro picture, with or without the .gro suffix\n"
-    "  --output FILE  write the picture to FILE (.png, .ppm or .gro); may be repeated\n"
-    "  --info         print the picture's size, window, rows finished, display mapping,\n"
-    "                 scene, switches, program and creation time\n"
-    "  -m F, -mF      multiply display values by F (overrides the value stored in the file)\n"
-    "  -c             no intensity clipping: overbright values wrap (can give very strange\n"
-    "                 colors)\n"
-    "  --help         print this text\n";
 
 struct ShowArgs {
     std::string name;
     std::vector<std::string> outputs;
     bool info = false;
-    bool help = false;
     std::optional<double> multiplier;
     bool no_clip = false;
 };
 
-double multiplier_argument(const std::string& text) {
-    const std::optional<double> m = rt::parse_double(text);
-    if (!m || *m < 0.0) {
-        throw rt::UsageError("-m: expected a non-negative number, found " + rt::quote_token(text));
-    }
-    return *m;
-}
-
-ShowArgs parse_args(const std::vector<std::string>& args) {
-    ShowArgs s;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto next = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw rt::UsageError(fmt::format("expected an argument after {}, found none", a));
-            }
-            return args[++i];
-        };
-        if (a == "--help" || a == "-h") {
-            s.help = true;
-        } else if (a == "--info") {
-            s.info = true;
-        } else if (a == "--output" || a == "-o") {
-            s.outputs.push_back(next());
-        } else if (a.rfind("--output=", 0) == 0) {
-            s.outputs.push_back(a.substr(9));
-        } else if (a == "-m") {
-            s.multiplier = multiplier_argument(next());
-        } else if (a.rfind("-m", 0) == 0) {
-            s.multiplier = multiplier_argument(a.substr(2));
-        } else if (a == "-c") {
-            s.no_clip = true;
-        } else if (!a.empty() && a[0] == '-') {
-            throw rt::UsageError("unknown option " + rt::quote_token(a));
-        } else if (s.name.empty()) {
-            s.name = a;
-        } else {
-            throw rt::UsageError("expected one picture name, found " + rt::quote_token(s.name) +
-                                 " and " + rt::quote_token(a));
-        }
-    }
-    if (!s.help && s.name.empty()) {
-        throw rt::UsageError("expected a picture name");
-    }
-    return s;
+// The manual's "show name", with the conversions rt adds. A repeated -m or -c: the last wins.
+void add_options(CLI::App& app, ShowArgs& s) {
+    app.add_option("NAME", s.name, "the .gro picture, with or without the .gro suffix")
+        ->required()
+        ->type_name("");
+    app.add_option("-o,--output", s.outputs,
+                   "write the picture to FILE (.png, .ppm or .gro); may be repeated")
+        ->type_name("FILE");
+    app.add_flag("--info", s.info,
+                 "print the picture's size, window, rows finished, display mapping,\n"
+                 "scene, switches, program and creation time");
+    app.add_option("-m", s.multiplier,
+                   "multiply display values by F, also written -mF (overrides the\n"
+                   "value stored in the file)")
+        ->type_name("F")
+        ->check(rt::cli::number_at_least(0.0));
+    app.add_flag("-c", s.no_clip,
+                 "no intensity clipping: overbright values wrap (can give very\n"
+                 "strange colors)");
 }
 
 // "show name" names name.gro; a name already ending in .gro, or an existing file, is taken as is.
@@ -100,16 +62,7 @@ std::filesystem::path gro_path(const std::string& name) {
     return std::filesystem::path(name + ".gro");
 }
 
-int run(const std::vector<std::string>& args) {
-    if (args.empty()) {
-        std::cout << kUsageText;
-        return kOk;
-    }
-    const ShowArgs s = parse_args(args);
-    if (s.help) {
-        std::cout << kUsageText;
-        return kOk;
-    }
+int run(const ShowArgs& s) {
     for (const std::string& output : s.outputs) {
         rt::image_format_for(output);  // a bad name fails before any reading
     }
@@ -136,8 +89,20 @@ void print_error(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app(
+        "Looks at a .gro picture written by rt (manual 1.2): prints what it holds, or\n"
+        "converts it to PNG, PPM or .gro. Exit codes: 0 ok, 1 bad picture, 2 usage,\n"
+        "3 I/O, 4 internal.",
+        "show");
+    rt::cli::configure(app);
+    ShowArgs args;
+    add_options(app, args);
+    if (const std::optional<int> stop =
+            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
+        return *stop;
+    }
     try {
-        return run(std::vector<std::string>(argv + 1, argv + argc));
+        return run(args);
     } catch (const rt::InputError& e) {
         print_error(e.what());
         return kBadInput;

@@ -1,0 +1,238 @@
+// The programs in bench/ as a user meets them: each option read, and bad command lines refused
+// with exit code 2 and a message naming the option. They are built only with
+// RT_BUILD_BENCHMARKS=ON; otherwise these tests skip. The workloads are tiny: a test checks the
+// command line, not the figures.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/run_program.h"
+#include "support/temp_dir.h"
+
+namespace rt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class BenchProgram : public ::testing::Test {
+protected:
+    void SetUp() override {
+#ifndef RT_BENCHMARKS_BUILT
+        GTEST_SKIP() << "the bench programs are built with -DRT_BUILD_BENCHMARKS=ON";
+#endif
+    }
+    ProgramResult run(const std::string& program, const std::vector<std::string>& args) const {
+        return run_program(program, args, dir_.path());
+    }
+    std::vector<std::string> lines(const std::string& file) const {
+        std::vector<std::string> out;
+        const std::string text = read_text(dir_.path() / file);
+        std::size_t start = 0;
+        while (start < text.size()) {
+            const std::size_t end = text.find('\n', start);
+            out.push_back(text.substr(start, end - start));
+            start = end == std::string::npos ? text.size() : end + 1;
+        }
+        return out;
+    }
+    static std::string twocubes() {
+        return (source_dir() / "scenes" / "twocubes").string();
+    }
+
+    TempDir dir_;
+};
+
+// The index-th comma-separated field of a CSV line.
+std::string field(const std::string& line, int index) {
+    std::size_t start = 0;
+    for (int i = 0; i < index; ++i) {
+        start = line.find(',', start) + 1;
+    }
+    return line.substr(start, line.find(',', start) - start);
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+// Exit code 2, nothing measured, and "PROGRAM: message" with a pointer to --help.
+void expect_usage_error(const ProgramResult& r, const std::string& program,
+                        const std::string& message) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err, program + ": " + message + "\n" + program + ": run '" + program +
+                         " --help' for the options\n");
+    EXPECT_EQ(r.out, "");
+}
+
+void expect_help_lists(const ProgramResult& r, const std::vector<std::string>& options) {
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(contains(r.out, "Usage: ")) << r.out;
+    for (const std::string& option : options) {
+        EXPECT_TRUE(contains(r.out, "  " + option + " ")) << option << " missing from\n" << r.out;
+    }
+}
+
+TEST_F(BenchProgram, LabReadsEveryOption) {
+    // --quick first: the --sizes and --seconds after it override it.
+    const ProgramResult r = run("rt_lab", {"--quick",
+                                           "--sizes",
+                                           "1k",
+                                           "--meshes",
+                                           "sphere,twocubes",
+                                           "--accels",
+                                           "bvh,seads",
+                                           "--threads",
+                                           "1",
+                                           "--seconds=0.001",
+                                           "--seads-side",
+                                           "4",
+                                           "--octree-depth",
+                                           "3",
+                                           "--csv",
+                                           "lab.csv",
+                                           "--svg",
+                                           "lab.svg",
+                                           "--source",
+                                           source_dir().string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> csv = lines("lab.csv");
+    ASSERT_EQ(csv.size(), 5U) << r.out;  // a header, then two meshes by two methods
+    EXPECT_TRUE(csv[1].starts_with("sphere,960,bvh,")) << csv[1];  // 1k: the nearest sphere
+    EXPECT_TRUE(csv[2].starts_with("sphere,960,seads,")) << csv[2];
+    EXPECT_TRUE(csv[3].starts_with("twocubes,142,bvh,")) << csv[3];
+    EXPECT_TRUE(csv[4].starts_with("twocubes,142,seads,")) << csv[4];
+    for (std::size_t row = 1; row < csv.size(); ++row) {
+        EXPECT_EQ(field(csv[row], 5), "1") << csv[row];  // threads
+    }
+    EXPECT_TRUE(contains(read_text(dir_.path() / "lab.svg"), "<svg"));
+}
+
+TEST_F(BenchProgram, LabRefusesBadCommandLines) {
+    expect_usage_error(run("rt_lab", {"--bogus"}), "rt_lab",
+                       "The following argument was not expected: --bogus");
+    expect_usage_error(run("rt_lab", {"--quick", "--csv"}), "rt_lab",
+                       "--csv: 1 required FILE missing");
+    expect_usage_error(run("rt_lab", {"--sizes", "10x"}), "rt_lab",
+                       "--sizes: expected a count like 1000, 10k or 1M, found '10x'");
+    expect_usage_error(run("rt_lab", {"--meshes", "cube"}), "rt_lab",
+                       "--meshes: cube not in {sphere,soup,twocubes}");
+    expect_usage_error(run("rt_lab", {"--accels", "bvh,kd"}), "rt_lab",
+                       "--accels: unknown intersection method 'kd' (brute, octree, seads, bvh, "
+                       "embree)");
+    expect_usage_error(run("rt_lab", {"--seconds", "0"}), "rt_lab",
+                       "--seconds: expected a number above 0, found '0'");
+    expect_usage_error(run("rt_lab", {"--threads", "0"}), "rt_lab",
+                       "--threads: expected a count like 1000, 10k or 1M, found '0'");
+    expect_help_lists(
+        run("rt_lab", {"--help"}),
+        {"--quick", "--sizes LIST", "--meshes LIST", "--accels LIST", "--threads N", "--seconds S",
+         "--seads-side N", "--octree-depth N", "--csv FILE", "--svg FILE", "--source DIR"});
+}
+
+TEST_F(BenchProgram, SceneBenchTakesItsOptionsAndPassesTheRestToRt) {
+    const ProgramResult r = run("rt_scene_bench", {"--repeat", "2", twocubes(), "-L", "3",
+                                                   "--csv=bench.csv", "--threads", "1"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(contains(r.out, "512x4 pixels")) << r.out;  // rt's -L 3
+    EXPECT_TRUE(contains(r.out, "threads      1\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "renders      2:")) << r.out;
+    const std::vector<std::string> csv = lines("bench.csv");
+    ASSERT_EQ(csv.size(), 2U);
+    EXPECT_TRUE(contains(csv[1], ",1,512,4,2,")) << csv[1];  // threads, width, height, renders
+}
+
+TEST_F(BenchProgram, SceneBenchRefusesBadCommandLines) {
+    expect_usage_error(run("rt_scene_bench", {"--repeat", "0", twocubes()}), "rt_scene_bench",
+                       "--repeat: expected a whole number of at least 1, found '0'");
+    expect_usage_error(run("rt_scene_bench", {twocubes(), "--repeat"}), "rt_scene_bench",
+                       "--repeat: 1 required N missing");
+    // An unknown switch goes to rt's parser, which refuses it the same way.
+    expect_usage_error(run("rt_scene_bench", {twocubes(), "--bogus"}), "rt_scene_bench",
+                       "unknown switch '--bogus'");
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{}, std::vector<std::string>{"--help"}}) {
+        expect_help_lists(run("rt_scene_bench", args), {"--repeat N", "--csv FILE", "--help"});
+    }
+}
+
+TEST_F(BenchProgram, AdaptiveStudyReadsEveryOption) {
+    const ProgramResult r =
+        run("rt_adaptive_study",
+            {"--seeds", "1", "--reference", "2x2", "--reference-renders", "2", "--window",
+             "100,100,102,101", "--uniform", "1x1", "--uniform=2", "--adaptive",
+             "2x2@0.5,2@0.1/0.2:0.3", "--csv", "study.csv", twocubes(), "--threads", "1"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(contains(r.out, "window 100 100 102 101 (3 x 2)")) << r.out;
+    EXPECT_TRUE(contains(r.out, "the mean of 2 renders uniform 2x2")) << r.out;
+    const std::vector<std::string> csv = lines("study.csv");
+    ASSERT_EQ(csv.size(), 5U);  // a header, then four plans at one seed each
+    EXPECT_TRUE(csv[1].starts_with("uniform 1x1,1,1,0,")) << csv[1];
+    EXPECT_TRUE(csv[2].starts_with("uniform 2x2,2,2,0,")) << csv[2];
+    EXPECT_TRUE(csv[3].starts_with("adaptive 2x2 @0.5,2,2,1,0.5,0.5,0.2,1,")) << csv[3];
+    EXPECT_TRUE(csv[4].starts_with("adaptive 2x2 @0.1/0.2:0.3,2,2,1,0.1,0.2,0.3,1,")) << csv[4];
+}
+
+TEST_F(BenchProgram, AdaptiveStudyRefusesBadCommandLines) {
+    const std::string study = "rt_adaptive_study";
+    const auto refused = [&](const std::vector<std::string>& args, const std::string& message) {
+        std::vector<std::string> with_scene = args;
+        with_scene.push_back(twocubes());
+        expect_usage_error(run(study, with_scene), study, message);
+    };
+    refused({"--seeds", "0"}, "--seeds: expected a whole number of at least 1, found '0'");
+    refused({"--reference", "2x2x2"},
+            "--reference: expected a sample resolution NxM, found '2x2x2'");
+    refused({"--reference-renders", "1"},
+            "--reference-renders: expected a whole number of at least 2, found '1'");
+    refused({"--window", "1,2,3"}, "--window: expected left,top,right,bottom, found '1,2,3'");
+    refused({"--window", "5,5,4,4"}, "--window: empty window '5,5,4,4'");
+    refused({"--uniform", "2x0"}, "--uniform: expected a positive number, found '0'");
+    refused({"--adaptive", "4x4@0.1/0.2/0.3"},
+            "--adaptive: expected NxM@pvar/rvar:prob, found '4x4@0.1/0.2/0.3'");
+    refused({"-Q"}, "unknown switch '-Q'");
+    expect_usage_error(run(study, {twocubes(), "--csv"}), study, "--csv: 1 required FILE missing");
+    expect_help_lists(run(study, {"--help"}),
+                      {"--seeds N", "--reference NxM", "--reference-renders M", "--window l,t,r,b",
+                       "--uniform LIST", "--adaptive LIST", "--csv FILE"});
+}
+
+TEST_F(BenchProgram, VoxelBenchReadsItsArgumentsAndVariables) {
+    const ProgramResult octree =
+        run("rt_voxel_bench", {"1000", "100", "1000", "--only", "octree", "--depth", "3"});
+    ASSERT_EQ(octree.exit_code, 0) << octree.err;
+    EXPECT_TRUE(octree.out.starts_with("octree       972 tris  param   3 ")) << octree.out;
+    EXPECT_EQ(std::count(octree.out.begin(), octree.out.end(), '\n'), 1) << octree.out;
+    // The variables say the same as the options.
+    ::setenv("ONLY", "seads", 1);  // NOLINT(concurrency-mt-unsafe)
+    ::setenv("SIDE", "7", 1);      // NOLINT(concurrency-mt-unsafe)
+    const ProgramResult seads = run("rt_voxel_bench", {"1000", "100"});
+    ::unsetenv("ONLY");  // NOLINT(concurrency-mt-unsafe)
+    ::unsetenv("SIDE");  // NOLINT(concurrency-mt-unsafe)
+    ASSERT_EQ(seads.exit_code, 0) << seads.err;
+    EXPECT_TRUE(seads.out.starts_with("SEADS        972 tris  param   7 ")) << seads.out;
+    EXPECT_EQ(std::count(seads.out.begin(), seads.out.end(), '\n'), 1) << seads.out;
+}
+
+TEST_F(BenchProgram, VoxelBenchRefusesBadCommandLines) {
+    const std::string bench = "rt_voxel_bench";
+    expect_usage_error(run(bench, {"x"}), bench,
+                       "max_triangles: expected a whole number of at least 1, found 'x'");
+    expect_usage_error(run(bench, {"1000", "100", "1000", "4"}), bench,
+                       "The following argument was not expected: 4");
+    expect_usage_error(run(bench, {"--only", "bvh"}), bench, "--only: bvh not in {seads,octree}");
+    expect_usage_error(run(bench, {"--side"}), bench, "--side: 1 required N missing");
+    ::setenv("DEPTH", "0", 1);  // NOLINT(concurrency-mt-unsafe)
+    const ProgramResult depth = run(bench, {"1000", "100"});
+    ::unsetenv("DEPTH");  // NOLINT(concurrency-mt-unsafe)
+    expect_usage_error(depth, bench, "--depth: expected a whole number of at least 1, found '0'");
+    expect_help_lists(run(bench, {"--help"}),
+                      {"max_triangles", "rays", "min_triangles", "--only NAME (Env:ONLY)",
+                       "--side N (Env:SIDE)", "--depth N (Env:DEPTH)"});
+}
+
+}  // namespace
+}  // namespace rt::test
