@@ -70,9 +70,7 @@ std::vector<float> render_with(const Scene& scene, const fs::path& path,
     RenderSettings settings;
     settings.shading = run_shading(options);
     settings.window = film_window(scene.view.window, options.start_line);
-    RunConsole console;
-    console.warning = console.note = console.trace = console.report = [](const std::string&) {};
-    const AcceleratorStack stack(scene, options, console);
+    const AcceleratorStack stack(scene, options.accel, AccelMessages{});
     RenderObserver silent;
     RenderStatistics statistics;
     return render(scene, stack.top(), settings, silent, statistics).data();
