@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "rt/image/film.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/shading/shading_settings.h"
 
 namespace rt {
