@@ -97,8 +97,8 @@ Fields describe(const ShadingSettings& s) {
         {"illuminate_distributed", text(x.illuminate_distributed)},
         {"fuzzy.angle", text(s.fuzzy.angle)},
         {"fuzzy.count", std::to_string(s.fuzzy.count)},
-        {"specular.law", law_name(s.specular.law)},
-        {"specular.slope_m", text(s.specular.slope_m)},
+        {"specular.law()", law_name(s.specular.law())},
+        {"specular.slope_m()", text(s.specular.slope_m())},
         {"specular.tint", tint_name(s.specular.tint)},
         {"warn.mode", warn_name(s.warn.mode)},
         {"warn.cone_angle", text(s.warn.cone_angle)},
@@ -151,9 +151,11 @@ const std::vector<ShadingRow>& shading_rows() {
         {{"-F0.3,2.0"}, {{"fuzzy.angle", "0.3"}, {"fuzzy.count", "2"}}},
         {{"-F0.05,2.5"}, {{"fuzzy.angle", "0.05"}, {"fuzzy.count", "3"}}},
         {{"-Sp"}, {}},
-        {{"-Sg"}, {{"specular.law", "PhongGeometric"}}},
-        {{"-Stg0.3"}, {{"specular.law", "TorranceSparrowGaussian"}, {"specular.slope_m", "0.3"}}},
-        {{"-Stb0.4"}, {{"specular.law", "TorranceSparrowBeckmann"}, {"specular.slope_m", "0.4"}}},
+        {{"-Sg"}, {{"specular.law()", "PhongGeometric"}}},
+        {{"-Stg0.3"},
+         {{"specular.law()", "TorranceSparrowGaussian"}, {"specular.slope_m()", "0.3"}}},
+        {{"-Stb0.4"},
+         {{"specular.law()", "TorranceSparrowBeckmann"}, {"specular.slope_m()", "0.4"}}},
         {{"-Ci"}, {}},
         {{"-Co"}, {{"specular.tint", "ObjectColor"}}},
         {{"-Cf"}, {{"specular.tint", "Fresnel"}}},
@@ -199,7 +201,7 @@ TEST(ShadingSettingsFromSwitches, DefaultsAreTheManuals) {
     EXPECT_EQ(d.at("ray_stop.probability"), "0.2");
     EXPECT_EQ(d.at("ray_stop.variance"), "0.2");
     // -S: "The default is Phong." -I and -T are off by default (manual part four).
-    EXPECT_EQ(d.at("specular.law"), "Phong");
+    EXPECT_EQ(d.at("specular.law()"), "Phong");
     EXPECT_EQ(d.at("illuminate_distributed"), "false");
     EXPECT_EQ(d.at("far_side_feelers"), "false");
     EXPECT_EQ(d.at("both_sides_emit"), "true");
@@ -211,9 +213,9 @@ TEST(ShadingSettingsFromSwitches, GaussianNormaliserFollowsTheSlope) {
     // c(m) -> 1/(pi m^2) for small m (docs/illumination-models.md).
     const double m = 0.05;
     const ShadingSettings s = shading_for({"-Stg0.05"});
-    EXPECT_NEAR(s.specular.gaussian_normaliser * 3.141592653589793 * m * m, 1.0, 0.01);
+    EXPECT_NEAR(s.specular.gaussian_normaliser() * 3.141592653589793 * m * m, 1.0, 0.01);
     const ShadingSettings wide = shading_for({"-Stg0.5"});
-    EXPECT_LT(wide.specular.gaussian_normaliser, s.specular.gaussian_normaliser / 10.0);
+    EXPECT_LT(wide.specular.gaussian_normaliser(), s.specular.gaussian_normaliser() / 10.0);
 }
 
 // --- the film window (-L) --------------------------------------------------------------------

@@ -134,7 +134,7 @@ TEST(SwitchParser, LongestSpellingWins) {
     EXPECT_TRUE(parse_command_line({"s", "-doo"}).accel.octree_listing.has_value());
     EXPECT_EQ(usage_error({"s", "-doi"}),
               "not implemented: -doi: octree debugging is not implemented yet");
-    EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).shading.specular.law,
+    EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).shading.specular.law(),
               SpecularLaw::TorranceSparrowGaussian);
     EXPECT_TRUE(parse_command_line({"s", "-Dp"}).dialect.no_power_fields);
     EXPECT_EQ(usage_error({"s", "-Dpx"}), "unknown switch '-Dpx'");

@@ -182,22 +182,24 @@ std::map<std::string_view, Expectation> expectations() {
         {"-Sp",
          {{},
           [](const Options& o) {  // the default, so also look for the switch itself
-              return o.shading.specular.law == SpecularLaw::Phong && o.given_switches.size() == 1;
+              return o.shading.specular.law() == SpecularLaw::Phong && o.given_switches.size() == 1;
           }}},
         {"-Sg",
          {{},
-          [](const Options& o) { return o.shading.specular.law == SpecularLaw::PhongGeometric; }}},
+          [](const Options& o) {
+              return o.shading.specular.law() == SpecularLaw::PhongGeometric;
+          }}},
         {"-Stg",
          {number(1.0),
           [](const Options& o) {
-              return o.shading.specular.law == SpecularLaw::TorranceSparrowGaussian &&
-                     o.shading.specular.slope_m == 1.0;
+              return o.shading.specular.law() == SpecularLaw::TorranceSparrowGaussian &&
+                     o.shading.specular.slope_m() == 1.0;
           }}},
         {"-Stb",
          {number(1.0),
           [](const Options& o) {
-              return o.shading.specular.law == SpecularLaw::TorranceSparrowBeckmann &&
-                     o.shading.specular.slope_m == 1.0;
+              return o.shading.specular.law() == SpecularLaw::TorranceSparrowBeckmann &&
+                     o.shading.specular.slope_m() == 1.0;
           }}},
         {"-R", {{}, [](const Options& o) { return o.dialect.rgb_refraction; }}},
         {"-Wr", {{}, [](const Options& o) { return o.shading.warn.mode == WarnMode::Rogers; }}},

@@ -35,12 +35,14 @@ Attribute manual_attribute(int index) {
     return a;
 }
 
-WeightScalingInputs one_white_light(bool feelers, bool reflection) {
-    WeightScalingInputs in;
-    in.total_light = {1.0, 0.9, 0.8};
-    in.shadow_feelers = feelers;
-    in.reflection = reflection;
-    return in;
+// One white light (L = 1), under -Ds (no feelers) and -Dr (no reflection) or not.
+constexpr Rgb kOneWhiteLight{1.0, 0.9, 0.8};
+
+ShadingSettings switches(bool feelers, bool reflection) {
+    ShadingSettings settings;
+    settings.shadow_feelers = feelers;
+    settings.reflection = reflection;
+    return settings;
 }
 
 struct Case {
@@ -68,49 +70,51 @@ TEST(WeightScaling, ManualAttributesWithAndWithoutDrDs) {
     };
     for (const Case& c : cases) {
         const Attribute a = manual_attribute(c.attribute);
-        const WeightScalingInputs in = one_white_light(c.feelers, c.reflection);
-        EXPECT_NEAR(intensity_bound(a, in), c.bound, 1e-12) << "attribute " << c.attribute;
+        const ShadingSettings settings = switches(c.feelers, c.reflection);
+        EXPECT_NEAR(intensity_bound(a, settings, kOneWhiteLight), c.bound, 1e-12)
+            << "attribute " << c.attribute;
         const double expected = c.bound > 1.0 ? 1.0 / c.bound : 1.0;
-        EXPECT_NEAR(weight_scale(a, in), expected, 1e-12) << "attribute " << c.attribute;
+        EXPECT_NEAR(weight_scale(a, settings, kOneWhiteLight), expected, 1e-12)
+            << "attribute " << c.attribute;
     }
-    EXPECT_EQ(weight_scale(manual_attribute(0), one_white_light(false, false)), 1.0);  // 0.95
+    EXPECT_EQ(weight_scale(manual_attribute(0), switches(false, false), kOneWhiteLight),
+              1.0);  // 0.95
 }
 
 TEST(WeightScaling, LightsSumAndTheLargestChannelCounts) {
-    WeightScalingInputs in = one_white_light(true, true);
-    in.total_light = {1.5, 2.1, 0.9};
-    EXPECT_NEAR(intensity_bound(manual_attribute(0), in), 0.05 + 2.1 * (0.9 + 0.1) + 0.1, 1e-12);
+    EXPECT_NEAR(intensity_bound(manual_attribute(0), switches(true, true), {1.5, 2.1, 0.9}),
+                0.05 + 2.1 * (0.9 + 0.1) + 0.1, 1e-12);
 }
 
 TEST(WeightScaling, AttenuatedFeelersDivideByTheConstant) {
-    WeightScalingInputs in = one_white_light(true, true);
-    in.attenuation_constant = 2.0;
-    EXPECT_NEAR(intensity_bound(manual_attribute(0), in), 0.05 + 0.5 * 1.0 + 0.1, 1e-12);
-    EXPECT_EQ(weight_scale(manual_attribute(0), in), 1.0);
-    in.attenuate_feelers = false;  // -Dl
-    EXPECT_NEAR(intensity_bound(manual_attribute(0), in), 1.15, 1e-12);
+    ShadingSettings settings = switches(true, true);
+    settings.attenuation_constant = 2.0;
+    EXPECT_NEAR(intensity_bound(manual_attribute(0), settings, kOneWhiteLight),
+                0.05 + 0.5 * 1.0 + 0.1, 1e-12);
+    EXPECT_EQ(weight_scale(manual_attribute(0), settings, kOneWhiteLight), 1.0);
+    settings.attenuate_feelers = false;  // -Dl
+    EXPECT_NEAR(intensity_bound(manual_attribute(0), settings, kOneWhiteLight), 1.15, 1e-12);
 }
 
-TEST(WeightScaling, InputsFromSettingsAndLights) {
-    ShadingSettings settings;
-    settings.attenuation_constant = 4.0;
-    settings.reflection = false;
+TEST(WeightScaling, TotalLightSumsThePointLights) {
     const std::vector<PointLight> lights = {{{0, 0, 0}, {0.5, 0.5, 0.5}, 0},
                                             {{1, 0, 0}, {0.5, 1.0, 0.25}, 0}};
-    const WeightScalingInputs in = weight_scaling_inputs(settings, lights);
-    EXPECT_EQ(in.total_light, (Rgb{1.0, 1.5, 0.75}));
-    EXPECT_TRUE(in.shadow_feelers);
-    EXPECT_FALSE(in.reflection);
-    EXPECT_TRUE(in.attenuate_feelers);
-    EXPECT_EQ(in.attenuation_constant, 4.0);
-    EXPECT_EQ(in.ambient_light, 1.0);
+    EXPECT_EQ(total_light(lights), (Rgb{1.0, 1.5, 0.75}));
+    EXPECT_EQ(total_light({}), Rgb{});
+}
+
+TEST(WeightScaling, TheAmbientLightScalesTheAmbientWeight) {
+    ShadingSettings settings = switches(false, false);
+    settings.ambient_light = 0.5;
+    EXPECT_NEAR(intensity_bound(manual_attribute(0), settings, kOneWhiteLight), 0.05 * 0.5 + 0.9,
+                1e-12);
 }
 
 TEST(WeightScaling, ScaledWeightsReachTheBoundOne) {
     const Attribute a = manual_attribute(2);
-    const WeightScalingInputs in = one_white_light(true, true);
-    const Attribute scaled = scale_weights(a, weight_scale(a, in));
-    EXPECT_NEAR(intensity_bound(scaled, in), 1.0, 1e-12);
+    const ShadingSettings settings = switches(true, true);
+    const Attribute scaled = scale_weights(a, weight_scale(a, settings, kOneWhiteLight));
+    EXPECT_NEAR(intensity_bound(scaled, settings, kOneWhiteLight), 1.0, 1e-12);
     EXPECT_NEAR(scaled.transmission, 0.99 / 2.54, 1e-12);
     EXPECT_EQ(scaled.color, a.color);
     EXPECT_EQ(scaled.specular_exponent, a.specular_exponent);

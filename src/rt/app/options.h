@@ -10,7 +10,7 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/image/film.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/shading/shading_settings.h"
 
 namespace rt {

@@ -148,6 +148,12 @@ void read_pixels(GroHeader& /*h*/, std::string_view value, const SourceLocation&
     }
 }
 
+// Reads one provenance field.
+template <std::string FilmProvenance::*field>
+void read_text(GroHeader& h, std::string_view value, const SourceLocation& /*where*/) {
+    h.provenance.*field = value;
+}
+
 using KeyReader = void (*)(GroHeader&, std::string_view, const SourceLocation&);
 
 struct KeySpec {
@@ -164,18 +170,10 @@ constexpr std::array kKeys = {
     KeySpec{"pixels", true, read_pixels},
     KeySpec{"display_multiplier", false, read_multiplier},
     KeySpec{"display_clip", false, read_clip},
-    KeySpec{
-        "scene", false,
-        [](GroHeader& h, std::string_view v, const SourceLocation&) { h.provenance.scene = v; }},
-    KeySpec{
-        "switches", false,
-        [](GroHeader& h, std::string_view v, const SourceLocation&) { h.provenance.switches = v; }},
-    KeySpec{
-        "program", false,
-        [](GroHeader& h, std::string_view v, const SourceLocation&) { h.provenance.program = v; }},
-    KeySpec{
-        "created", false,
-        [](GroHeader& h, std::string_view v, const SourceLocation&) { h.provenance.created = v; }},
+    KeySpec{"scene", false, read_text<&FilmProvenance::scene>},
+    KeySpec{"switches", false, read_text<&FilmProvenance::switches>},
+    KeySpec{"program", false, read_text<&FilmProvenance::program>},
+    KeySpec{"created", false, read_text<&FilmProvenance::created>},
 };
 
 bool valid_key(std::string_view key) {

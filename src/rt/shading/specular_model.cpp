@@ -26,7 +26,7 @@ bool is_torrance_sparrow(SpecularLaw law) {
 // The law's value without Fresnel, tint or s.
 double law_value(const SpecularSettings& settings, const Attribute& attribute, const Vec3& n,
                  const Vec3& to_light, const Vec3& to_viewer) {
-    switch (settings.law) {
+    switch (settings.law()) {
         case SpecularLaw::Phong:
             return phong_lobe(n, to_light, to_viewer, attribute.specular_exponent);
         case SpecularLaw::PhongGeometric:
@@ -35,15 +35,11 @@ double law_value(const SpecularSettings& settings, const Attribute& attribute, c
         case SpecularLaw::TorranceSparrowGaussian:
         case SpecularLaw::TorranceSparrowBeckmann: {
             const double cos_beta = dot(n, normalize(to_light + to_viewer));
-            const double m = settings.slope_m;
-            double d = 0.0;
-            if (settings.law == SpecularLaw::TorranceSparrowBeckmann) {
-                d = beckmann_distribution(cos_beta, m);
-            } else {
-                const double c = settings.gaussian_normaliser > 0.0 ? settings.gaussian_normaliser
-                                                                    : gaussian_normaliser(m);
-                d = gaussian_distribution(cos_beta, m, c);
-            }
+            const double m = settings.slope_m();
+            const double d =
+                settings.law() == SpecularLaw::TorranceSparrowBeckmann
+                    ? beckmann_distribution(cos_beta, m)
+                    : gaussian_distribution(cos_beta, m, settings.gaussian_normaliser());
             const double g = geometric_attenuation(n, to_viewer, to_light);
             return d * g / (4.0 * dot(n, to_viewer));
         }
@@ -54,7 +50,10 @@ double law_value(const SpecularSettings& settings, const Attribute& attribute, c
 }  // namespace
 
 SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, HighlightTint tint) {
-    SpecularSettings settings{law, slope_m, tint, 0.0};
+    SpecularSettings settings;
+    settings.tint = tint;
+    settings.law_ = law;
+    settings.slope_m_ = slope_m;
     if (is_torrance_sparrow(law)) {
         if (!(slope_m > 0.0) || !std::isfinite(slope_m)) {
             throw SettingError("microfacet slope m",
@@ -62,7 +61,7 @@ SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, Highlig
                                "finite, not " +
                                    std::to_string(slope_m));
         }
-        settings.gaussian_normaliser = gaussian_normaliser(slope_m);
+        settings.gaussian_normaliser_ = gaussian_normaliser(slope_m);
     }
     return settings;
 }
@@ -87,7 +86,7 @@ Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attrib
         }
         return result;
     }
-    const double f = is_torrance_sparrow(settings.law)
+    const double f = is_torrance_sparrow(settings.law())
                          ? fresnel_dielectric(cos_vh, 1.0, attribute.refraction_index.g)
                          : 1.0;
     const Rgb grey{value * f, value * f, value * f};

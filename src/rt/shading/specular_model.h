@@ -24,18 +24,33 @@ enum class HighlightTint {
     Fresnel,      ///< -Cf: a Fresnel reflectance per RGB channel, the colour taken as F0
 };
 
-struct SpecularSettings {
-    SpecularLaw law = SpecularLaw::Phong;
-    double slope_m = 1.0;  ///< m, the rms slope of the microfacets (Torrance-Sparrow laws), > 0
-    HighlightTint tint = HighlightTint::LightColor;
-    /// The constant making the Gaussian distribution a distribution of facet normals for slope_m;
-    /// make_specular_settings fills it in. 0 means "not computed": specular_highlight then
-    /// computes it on every call (correct but slow).
-    double gaussian_normaliser = 0.0;
+/// The highlight's law and colour. The law, its slope m and the Gaussian normaliser that follows
+/// from m are set together, by make_specular_settings only, so a Gaussian law always carries its
+/// normaliser: there is no "not computed yet" state for specular_highlight to detect and repair
+/// by redoing the quadrature on every call.
+class SpecularSettings {
+public:
+    HighlightTint tint = HighlightTint::LightColor;  ///< -C, chosen apart from the law
+
+    SpecularLaw law() const { return law_; }
+    /// m, the rms slope of the microfacets; the Torrance-Sparrow laws require it positive and
+    /// finite, the Phong laws ignore it.
+    double slope_m() const { return slope_m_; }
+    /// The constant making the Gaussian distribution a distribution of facet normals for slope_m
+    /// (gaussian_normaliser(m)); 0 under the Phong laws, which have no m.
+    double gaussian_normaliser() const { return gaussian_normaliser_; }
+
+private:
+    friend SpecularSettings make_specular_settings(SpecularLaw law, double slope_m,
+                                                   HighlightTint tint);
+    SpecularLaw law_ = SpecularLaw::Phong;
+    double slope_m_ = 1.0;
+    double gaussian_normaliser_ = 0.0;
 };
 
-/// Settings with the Gaussian normaliser precomputed for `slope_m`. Throws rt::UsageError when a
-/// Torrance-Sparrow law is given a slope m that is not positive and finite.
+/// Settings for `law` with the Gaussian normaliser computed for `slope_m`. Throws
+/// rt::SettingError when a Torrance-Sparrow law is given a slope m that is not positive and
+/// finite.
 SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, HighlightTint tint);
 
 /// The factor (per channel) by which the intensity a light delivers at the point is multiplied to

@@ -4,36 +4,32 @@
 
 namespace rt {
 
-WeightScalingInputs weight_scaling_inputs(const ShadingSettings& settings,
-                                          std::span<const PointLight> lights) {
-    WeightScalingInputs inputs;
+Rgb total_light(std::span<const PointLight> lights) {
+    Rgb sum;
     for (const PointLight& light : lights) {
-        inputs.total_light += light.intensity;
+        sum += light.intensity;
     }
-    inputs.shadow_feelers = settings.shadow_feelers;
-    inputs.reflection = settings.reflection;
-    inputs.attenuate_feelers = settings.attenuate_feelers;
-    inputs.attenuation_constant = settings.attenuation_constant;
-    inputs.ambient_light = settings.ambient_light;
-    return inputs;
+    return sum;
 }
 
-double intensity_bound(const Attribute& a, const WeightScalingInputs& inputs) {
+double intensity_bound(const Attribute& a, const ShadingSettings& settings,
+                       const Rgb& total_light) {
     double light = 0.0;
-    if (inputs.shadow_feelers) {
-        light = max_component(inputs.total_light);
-        if (inputs.attenuate_feelers && inputs.attenuation_constant > 0.0) {
-            light /= inputs.attenuation_constant;
+    if (settings.shadow_feelers) {
+        light = max_component(total_light);
+        if (settings.attenuate_feelers && settings.attenuation_constant > 0.0) {
+            light /= settings.attenuation_constant;
         }
     }
-    const double diffuse_in = inputs.shadow_feelers ? light : 1.0;
-    const double reflected = inputs.reflection ? a.specular : 0.0;
-    return a.emission + a.ambient * inputs.ambient_light + a.diffuse * diffuse_in +
+    const double diffuse_in = settings.shadow_feelers ? light : 1.0;
+    const double reflected = settings.reflection ? a.specular : 0.0;
+    return a.emission + a.ambient * settings.ambient_light + a.diffuse * diffuse_in +
            a.specular * light + reflected + a.transmission;
 }
 
-double weight_scale(const Attribute& attribute, const WeightScalingInputs& inputs) {
-    const double bound = intensity_bound(attribute, inputs);
+double weight_scale(const Attribute& attribute, const ShadingSettings& settings,
+                    const Rgb& total_light) {
+    const double bound = intensity_bound(attribute, settings, total_light);
     return bound > 1.0 ? 1.0 / bound : 1.0;
 }
 
@@ -51,9 +47,9 @@ void scale_scene_weights(Scene& scene, const ShadingSettings& settings) {
         settings.shadow_feelers
             ? collect_point_lights(scene, scene.header.lghtick, settings.share_light_among_points)
             : std::vector<PointLight>{};
-    const WeightScalingInputs inputs = weight_scaling_inputs(settings, lights);
+    const Rgb light = total_light(lights);
     for (Attribute& a : scene.attributes) {
-        a = scale_weights(a, weight_scale(a, inputs));
+        a = scale_weights(a, weight_scale(a, settings, light));
     }
 }
 

@@ -29,24 +29,17 @@
 
 namespace rt {
 
-struct WeightScalingInputs {
-    Rgb total_light;                    ///< the sum of all point lights' intensities
-    bool shadow_feelers = true;         ///< off with -Ds
-    bool reflection = true;             ///< off with -Dr
-    bool attenuate_feelers = true;      ///< off with -Dl
-    double attenuation_constant = 1.0;  ///< c of -A d,c; ignored unless > 0
-    double ambient_light = 1.0;         ///< A, the ambient light the ambient weight reflects
-};
+/// L's sum before the maximum over channels: the sum of all point lights' intensities.
+Rgb total_light(std::span<const PointLight> lights);
 
-/// The inputs for a scene's lights under the given switches.
-WeightScalingInputs weight_scaling_inputs(const ShadingSettings& settings,
-                                          std::span<const PointLight> lights);
-
-/// The bound above on the outgoing intensity of a surface with this attribute.
-double intensity_bound(const Attribute& attribute, const WeightScalingInputs& inputs);
+/// The bound above on the outgoing intensity of a surface with this attribute, under the settings
+/// (-Ds, -Dr, -Dl, c of -A, the ambient light) and the lights' `total_light`.
+double intensity_bound(const Attribute& attribute, const ShadingSettings& settings,
+                       const Rgb& total_light);
 
 /// 1 / intensity_bound when it exceeds 1, else 1: the factor (<= 1) for e, a, d, s and t.
-double weight_scale(const Attribute& attribute, const WeightScalingInputs& inputs);
+double weight_scale(const Attribute& attribute, const ShadingSettings& settings,
+                    const Rgb& total_light);
 
 /// The attribute with e, a, d, s and t multiplied by `scale`.
 Attribute scale_weights(Attribute attribute, double scale);

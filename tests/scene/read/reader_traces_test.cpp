@@ -26,7 +26,9 @@ TEST(ReaderTraces, LinesAfterTheLastShapeAreIgnoredWithAWarning) {
         text_file("shapes", "$ 1\n$ 0 0 0 1 0 0 0\ncomment lines are not $ lines\n$ 9 9 9 9\n");
     const std::vector<Shape> shapes = read_shape_file(text, d);
     EXPECT_EQ(shapes.size(), 1U);
-    EXPECT_EQ(d.warnings(), std::vector<std::string>{"shapes:4: lines after the 1 shapes ignored"});
+    EXPECT_EQ(d.warnings(),
+              std::vector<std::string>{"shapes:4: 1 line after the 1 shapes ignored (is the count "
+                                       "on the first $ line right?)"});
 }
 
 TEST(ReaderTraces, PhigsFileTracesEveryFillArea) {

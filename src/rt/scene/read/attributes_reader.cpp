@@ -2,6 +2,7 @@
 
 #include <unordered_map>
 
+#include "rt/scene/read/counted_lines.h"
 #include "rt/scene/read/line_fields.h"
 #include "rt/scene/read/reader_limits.h"
 
@@ -110,32 +111,12 @@ Attribute read_attribute_line(const SourceText& source, const DollarLine& line,
 
 std::vector<Attribute> read_attributes_file(const SourceText& source, const ReaderDialect& dialect,
                                             Diagnostics& diagnostics) {
-    DollarLineReader reader(source);
-    DollarLine line;
-    if (!reader.next(line)) {
-        throw expected_found(source.at(source.last_line()), "the attribute count", "end of file");
+    CountedLines file(source, "attribute", "attributes");
+    AttributeList list(file.count());
+    for (std::int64_t k = 0; k < file.count(); ++k) {
+        list.add(read_attribute_line(source, file.next_item(), dialect, diagnostics));
     }
-    const std::int64_t count =
-        count_from(source, line.tokens.front(), "the attribute count", kMaxItemsPerFile);
-    AttributeList list(count);
-    for (std::int64_t k = 0; k < count; ++k) {
-        if (!reader.next(line)) {
-            throw InputError(source.at(source.last_line()),
-                             fmt::format("expected {} attributes, found {}", count, k));
-        }
-        list.add(read_attribute_line(source, line, dialect, diagnostics));
-    }
-    int extra = 0;
-    int first_extra = 0;
-    while (reader.next(line)) {
-        first_extra = extra++ == 0 ? line.line : first_extra;
-    }
-    if (extra > 0) {
-        diagnostics.warn(
-            fmt::format("{}: {} line{} after the {} attributes ignored (is the count "
-                        "on the first $ line right?)",
-                        source.at(first_extra).to_string(), extra, extra == 1 ? "" : "s", count));
-    }
+    file.skip_the_rest(diagnostics);
     return list.take();
 }
 

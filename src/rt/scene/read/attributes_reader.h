@@ -7,7 +7,7 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/scene/attribute.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/scene/read/item_stream.h"
 
 namespace rt {

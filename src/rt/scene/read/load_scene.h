@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "rt/core/diagnostics.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/scene/scene.h"
 
 namespace rt {

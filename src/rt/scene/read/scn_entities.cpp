@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "rt/core/text.h"
+#include "rt/scene/read/counted_lines.h"
 #include "rt/scene/read/reader_limits.h"
 
 #include <fmt/format.h>
@@ -105,17 +106,12 @@ void check_after_entities(ItemStream& scn, const ReaderDialect& dialect, Diagnos
         throw NotImplementedError("-V: texture-mapped optical surfaces are not implemented yet");
     }
     DollarLine line;
-    int count = 0;
-    int first = 0;
+    LinesLeftOver left;
     while (scn.take_line(line)) {
-        first = count++ == 0 ? line.line : first;
+        left.add(line.line);
     }
-    if (count > 0) {
-        diagnostics.warn(
-            fmt::format("{}: {} line{} after the entities ignored: texture-mapped "
-                        "surfaces are read only with -V",
-                        scn.source().at(first).to_string(), count, count == 1 ? "" : "s"));
-    }
+    left.warn(scn.source(), "entities", ": texture-mapped surfaces are read only with -V",
+              diagnostics);
 }
 
 }  // namespace rt

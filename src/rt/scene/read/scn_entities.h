@@ -3,7 +3,7 @@
 #pragma once
 
 #include "rt/core/diagnostics.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/scene/read/item_stream.h"
 #include "rt/scene/read/scn_reader.h"
 

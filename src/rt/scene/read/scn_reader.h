@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "rt/core/diagnostics.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/scene/read/source_text.h"
 #include "rt/scene/scene.h"
 

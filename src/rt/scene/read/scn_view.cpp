@@ -9,6 +9,19 @@ namespace rt {
 
 namespace {
 
+// An output matrix edge one past the last column or row (`size`) is taken as the last one, with
+// a warning.
+void pull_onto_last(int& edge, int size, std::string_view edge_name, std::string_view line,
+                    const SourceLocation& at, Diagnostics& diagnostics) {
+    if (edge == size) {
+        edge = size - 1;
+        diagnostics.warn(
+            fmt::format("{}: the output matrix's {} {} is one past the last {}; "
+                        "using {}",
+                        at.to_string(), edge_name, size, line, edge));
+    }
+}
+
 int small_integer(ItemStream& scn, std::string_view what, int lo, int hi) {
     return static_cast<int>(integer_in(scn.source(), scn.take(what), what, lo, hi));
 }
@@ -129,20 +142,8 @@ SceneView read_view(ItemStream& scn, const SceneHeader& header, SourceLocation& 
 PixelRect checked_window(PixelRect w, int width, int height, const SourceLocation& at,
                          Diagnostics& diagnostics) {
     const std::string given = fmt::format("{} {} {} {}", w.left, w.top, w.right, w.bottom);
-    if (w.right == width) {
-        w.right = width - 1;
-        diagnostics.warn(
-            fmt::format("{}: the output matrix's right edge {} is one past the last "
-                        "column; using {}",
-                        at.to_string(), width, w.right));
-    }
-    if (w.bottom == height) {
-        w.bottom = height - 1;
-        diagnostics.warn(
-            fmt::format("{}: the output matrix's bottom edge {} is one past the last "
-                        "row; using {}",
-                        at.to_string(), height, w.bottom));
-    }
+    pull_onto_last(w.right, width, "right edge", "column", at, diagnostics);
+    pull_onto_last(w.bottom, height, "bottom edge", "row", at, diagnostics);
     const bool inside = w.left >= 0 && w.top >= 0 && w.right < width && w.bottom < height;
     if (!inside) {
         throw InputError(at, fmt::format("the output matrix {} is outside the {} x {} view area "

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 
-#include "rt/scene/read/dollar_lines.h"
+#include "rt/scene/read/counted_lines.h"
 #include "rt/scene/read/line_fields.h"
-#include "rt/scene/read/reader_limits.h"
 
 #include <fmt/format.h>
 
@@ -32,21 +31,11 @@ Shape read_shape_line(const SourceText& source, const DollarLine& line, long ind
 }  // namespace
 
 std::vector<Shape> read_shape_file(const SourceText& source, Diagnostics& diagnostics) {
-    DollarLineReader reader(source);
-    DollarLine line;
-    if (!reader.next(line)) {
-        throw expected_found(source.at(source.last_line()), "the shape count", "end of file");
-    }
-    const std::int64_t count =
-        count_from(source, line.tokens.front(), "the shape count", kMaxItemsPerFile);
+    CountedLines file(source, "shape", "shapes");
     std::vector<Shape> shapes;
-    shapes.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 4096)));
-    for (std::int64_t k = 0; k < count; ++k) {
-        if (!reader.next(line)) {
-            throw InputError(source.at(source.last_line()),
-                             fmt::format("expected {} shapes, found {}", count, k));
-        }
-        shapes.push_back(read_shape_line(source, line, static_cast<long>(k)));
+    shapes.reserve(static_cast<std::size_t>(std::min<std::int64_t>(file.count(), 4096)));
+    for (std::int64_t k = 0; k < file.count(); ++k) {
+        shapes.push_back(read_shape_line(source, file.next_item(), static_cast<long>(k)));
         const Shape& s = shapes.back();
         if (diagnostics.tracing()) {
             diagnostics.trace(fmt::format("{}: shape {}: {} {} {}", s.where.to_string(), s.index,
@@ -55,10 +44,7 @@ std::vector<Shape> read_shape_file(const SourceText& source, Diagnostics& diagno
                                           show_point(s.second.x, s.second.y, s.second.z)));
         }
     }
-    if (reader.next(line)) {
-        diagnostics.warn(fmt::format("{}: lines after the {} shapes ignored",
-                                     source.at(line.line).to_string(), count));
-    }
+    file.skip_the_rest(diagnostics);
     return shapes;
 }
 

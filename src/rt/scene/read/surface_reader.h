@@ -2,7 +2,7 @@
 #pragma once
 
 #include "rt/core/diagnostics.h"
-#include "rt/scene/dialect.h"
+#include "rt/scene/read/dialect.h"
 #include "rt/scene/read/source_text.h"
 #include "rt/scene/read/surface_mesh.h"
 
