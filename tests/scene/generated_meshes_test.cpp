@@ -52,12 +52,10 @@ TEST(GeneratedMeshes, SoupIsReproducibleInsideTheUnitCubeAndShrinksWithCount) {
     ASSERT_EQ(a.polygons.size(), 2000u);
     expect_unit_outward_triangles(a);
     EXPECT_EQ(a.positions, b.positions);
-    Vec3 lo;
-    Vec3 hi;
-    a.bounds(lo, hi);
+    const Box3 box = a.bounds();
     for (int k = 0; k < 3; ++k) {
-        EXPECT_GE(lo[k], 0.0);
-        EXPECT_LE(hi[k], 1.0);
+        EXPECT_GE(box.lo[k], 0.0);
+        EXPECT_LE(box.hi[k], 1.0);
     }
     const auto mean_edge = [](const Scene& s) {
         double sum = 0.0;
