@@ -160,9 +160,15 @@ struct Answer {
     bool occluded = false;
 };
 
-/// closest_hit and occluded for the ray.
-inline Answer answer_of(const Accelerator& accel, const SurfaceRay& r, TraceCounters& counters) {
-    return {accel.closest_hit(r.ray, r.t, counters), accel.occluded(r.ray, r.t, counters)};
+/// How a ray's nearest hit is asked for: as any ray's, or through the eye-ray entry point.
+enum class AskedAs { AnyRay, EyeRay };
+
+/// closest_hit (or eye_ray_closest_hit) and occluded for the ray.
+inline Answer answer_of(const Accelerator& accel, const SurfaceRay& r, TraceCounters& counters,
+                        AskedAs asked = AskedAs::AnyRay) {
+    return {asked == AskedAs::EyeRay ? accel.eye_ray_closest_hit(r.ray, r.t, counters)
+                                     : accel.closest_hit(r.ray, r.t, counters),
+            accel.occluded(r.ray, r.t, counters)};
 }
 
 /// The answers for every ray, in order.
@@ -213,11 +219,11 @@ inline bool agrees(const Scene& scene, const SurfaceRay& r, const Answer& want, 
 /// `exact` false as -on may (see agrees). Reports the first few differences.
 inline void expect_answers(const Scene& scene, const Accelerator& accel,
                            const std::vector<SurfaceRay>& rays, const std::vector<Answer>& want,
-                           bool exact = true) {
+                           bool exact = true, AskedAs asked = AskedAs::AnyRay) {
     TraceCounters counters;
     int differences = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
-        const Answer got = answer_of(accel, rays[i], counters);
+        const Answer got = answer_of(accel, rays[i], counters, asked);
         if (!agrees(scene, rays[i], want[i], got, exact) && ++differences <= 3) {
             ADD_FAILURE() << accel.name() << " differs " << describe(rays[i], want[i], got);
         }

@@ -14,7 +14,8 @@
 namespace rt::test {
 namespace {
 
-// Passes every call to brute force and counts it, to show which rays the z-buffer answered.
+// Passes every call to brute force and counts the nearest-hit queries, to show which rays the
+// z-buffer answered.
 class CountingFallback : public Accelerator {
 public:
     explicit CountingFallback(const Scene& scene) : brute_(scene) {}
@@ -25,7 +26,6 @@ public:
         return brute_.closest_hit(ray, t, counters);
     }
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override {
-        ++calls;
         return brute_.occluded(ray, t, counters);
     }
     mutable int calls = 0;
@@ -77,7 +77,8 @@ void expect_brute_force_answers(const Scene& scene, int step = 1) {
                     const Ray ray = view.primary_ray(px, py);
                     for (const Interval t : {Interval{1e-9, kBeyondAnyScene}, Interval{0.0, 7.5}}) {
                         const std::optional<Hit> expected = brute.closest_hit(ray, t, counters);
-                        const std::optional<Hit> got = zbuffer->closest_hit(ray, t, counters);
+                        const std::optional<Hit> got =
+                            zbuffer->eye_ray_closest_hit(ray, t, counters);
                         ASSERT_EQ(expected.has_value(), got.has_value()) << px << ", " << py;
                         if (expected) {
                             ++hits;
@@ -170,12 +171,16 @@ TEST(ZBufferFirstHits, OtherRaysGoToTheFallback) {
         ++calls;
     }
     EXPECT_EQ(fallback.calls, calls);
-    // An eye ray asked with t.min < 0, or moved off the screen, is not the z-buffer's either.
-    zbuffer->closest_hit(view.primary_ray(10, 10), {-1.0, kBeyondAnyScene}, counters);
+    // Only the eye-ray entry point consults the buffer: an eye ray asked as any other ray goes
+    // to the fallback; so does one asked as an eye ray with t.min < 0, or moved off the screen.
+    zbuffer->closest_hit(view.primary_ray(10, 10), {1e-9, kBeyondAnyScene}, counters);
+    zbuffer->eye_ray_closest_hit(view.primary_ray(10, 10), {-1.0, kBeyondAnyScene}, counters);
     Ray moved = view.primary_ray(10, 10);
     moved.origin = moved.at(0.5);
-    zbuffer->closest_hit(moved, {1e-9, kBeyondAnyScene}, counters);
-    EXPECT_EQ(fallback.calls, calls + 2);
+    zbuffer->eye_ray_closest_hit(moved, {1e-9, kBeyondAnyScene}, counters);
+    EXPECT_EQ(fallback.calls, calls + 3);
+    zbuffer->eye_ray_closest_hit(view.primary_ray(10, 10), {1e-9, kBeyondAnyScene}, counters);
+    EXPECT_EQ(fallback.calls, calls + 3);
 }
 
 TEST(ZBufferFirstHits, OverTheMemoryLimitEveryRayGoesToTheFallback) {
@@ -194,7 +199,7 @@ TEST(ZBufferFirstHits, OverTheMemoryLimitEveryRayGoesToTheFallback) {
     const BruteForce brute(scene);
     const Ray ray = view.primary_ray(256, 200);
     EXPECT_EQ(brute.closest_hit(ray, {1e-9, kBeyondAnyScene}, counters)->polygon,
-              zbuffer->closest_hit(ray, {1e-9, kBeyondAnyScene}, counters)->polygon);
+              zbuffer->eye_ray_closest_hit(ray, {1e-9, kBeyondAnyScene}, counters)->polygon);
     EXPECT_EQ(fallback.calls, 1);
 }
 

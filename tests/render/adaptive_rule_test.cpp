@@ -41,7 +41,7 @@ Traced trace_once(const Scene& scene, const ShadingSettings& settings, const Ray
     SampleContext sample{stream, counters, out.tree, {}};
     tracer.trace(ray, RayKind::Eye, 1, false, sample);
     out.seen = sample.last_seen;
-    out.probed = tracer.first_surface(ray, true, sample);
+    out.probed = tracer.first_surface(ray, RayStart::Eye, true, sample);
     return out;
 }
 

@@ -1,5 +1,6 @@
 // The renderer's camera and the z-buffer share PinholeView; this checks that every eye ray the
-// renderer makes is recognised by the z-buffer and answered from its pixel as brute force would.
+// renderer makes, asked as an eye ray, is vouched for by the z-buffer and answered from its pixel
+// as brute force would.
 #include "rt/accel/brute_force.h"
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
 #include "rt/core/diagnostics.h"
@@ -29,7 +30,7 @@ TEST(ZBufferCameraAgreement, EveryCameraRayIsAnsweredByTheItemBufferAsBruteForce
             const std::optional<Hit> expected =
                 brute.closest_hit(ray, {1e-9, kBeyondAnyScene}, brute_counters);
             const std::optional<Hit> got =
-                zbuffer->closest_hit(ray, {1e-9, kBeyondAnyScene}, zbuffer_counters);
+                zbuffer->eye_ray_closest_hit(ray, {1e-9, kBeyondAnyScene}, zbuffer_counters);
             ASSERT_EQ(expected.has_value(), got.has_value());
             if (expected) {
                 ASSERT_EQ(expected->t, got->t);

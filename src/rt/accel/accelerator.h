@@ -43,6 +43,13 @@ public:
     /// The nearest hit with t strictly inside the interval; equal t goes to the lowest polygon id.
     virtual std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                            TraceCounters& counters) const = 0;
+    /// closest_hit for an eye ray: one the renderer sends from the eye through the screen. A
+    /// method that keeps something for eye rays alone (the z-buffer) answers it from that; the
+    /// others, and the layers that only pass rays on, answer as closest_hit.
+    virtual std::optional<Hit> eye_ray_closest_hit(const Ray& ray, Interval t,
+                                                   TraceCounters& counters) const {
+        return closest_hit(ray, t, counters);
+    }
     /// Whether any polygon is hit with t inside the interval (shadow feelers that stop dead).
     virtual bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const = 0;
     /// Bytes held by the structure (not the scene), for -p and the lab.

@@ -15,7 +15,7 @@ AccelSettings method_for_scene(const Scene& scene, AccelSettings settings);
 
 /// Builds the method of method_for_scene(scene, settings). The scene must outlive the result.
 /// Throws NotImplementedError for a method not built in (an Embree backend without Embree) and
-/// UsageError for settings it cannot honour.
+/// SettingError for settings it cannot honour.
 std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& settings);
 
 }  // namespace rt

@@ -62,11 +62,19 @@ RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const Shading
     diffuse_rays_ = !settings_.shadow_feelers || scene.header.lghtick == 0;
 }
 
+std::optional<Hit> RayTracer::nearest_hit(const Ray& ray, RayStart start,
+                                          TraceCounters& counters) const {
+    const Interval t{epsilon_, kBeyondAnyScene};
+    return start == RayStart::Eye ? accel_.eye_ray_closest_hit(ray, t, counters)
+                                  : accel_.closest_hit(ray, t, counters);
+}
+
 Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
                      SampleContext& sample) const {
     TraceCounters& counters = sample.counters[kind];
     ++counters.rays;
-    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, kBeyondAnyScene}, counters);
+    const std::optional<Hit> hit =
+        nearest_hit(ray, kind == RayKind::Eye ? RayStart::Eye : RayStart::Elsewhere, counters);
     if (!hit) {
         sample.last_seen = {};
         return {};  // the background is black
@@ -92,10 +100,11 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
     return result;
 }
 
-SurfaceSeen RayTracer::first_surface(const Ray& ray, bool full, SampleContext& sample) const {
+SurfaceSeen RayTracer::first_surface(const Ray& ray, RayStart start, bool full,
+                                     SampleContext& sample) const {
     TraceCounters& counters = sample.counters[RayKind::Probe];
     ++counters.rays;
-    const std::optional<Hit> hit = accel_.closest_hit(ray, {epsilon_, kBeyondAnyScene}, counters);
+    const std::optional<Hit> hit = nearest_hit(ray, start, counters);
     if (!hit) {
         return {};
     }
@@ -222,7 +231,7 @@ bool RayTracer::rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceS
         Vec3 direction = sample_cone(lobe.cone, lobe.axis, 1.0, quarter / 4.0);  // u1 = 1: rim
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
         ++sample.tree.probes;
-        if (!(first_surface({s.position, direction}, full, sample) == seen)) {
+        if (!(first_surface({s.position, direction}, RayStart::Elsewhere, full, sample) == seen)) {
             return false;
         }
     }

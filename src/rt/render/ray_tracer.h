@@ -45,6 +45,10 @@ struct SampleContext {
     SurfaceSeen last_seen;  ///< what the last traced ray met
 };
 
+/// Where a ray starts: from the eye, through the screen (the eye rays and the adaptive rule's
+/// probes of neighbouring pixels, which a z-buffer may answer), or anywhere else.
+enum class RayStart { Eye, Elsewhere };
+
 class RayTracer {
 public:
     RayTracer(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings);
@@ -59,10 +63,13 @@ public:
     /// What a ray meets first: its polygon, and its hit's shadow feelers, without shading it or
     /// tracing further (the adaptive rule's probes). `full` as for a ray that is not distributed
     /// (the full model's feelers, -T).
-    SurfaceSeen first_surface(const Ray& ray, bool full, SampleContext& sample) const;
+    SurfaceSeen first_surface(const Ray& ray, RayStart start, bool full,
+                              SampleContext& sample) const;
 
 private:
     struct Lobe;
+    /// The accelerator's nearest hit beyond epsilon: eye rays through its eye-ray entry point.
+    std::optional<Hit> nearest_hit(const Ray& ray, RayStart start, TraceCounters& counters) const;
     /// How the lobes at one hit send their rays.
     enum class LobeRays {
         Distributed,  ///< a distribution in each cone, as many rays as -Xr asks for

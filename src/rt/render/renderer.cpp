@@ -53,7 +53,7 @@ bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, Sampl
         const int nx = std::clamp(x + offset[0], 0, job.scene.view.width - 1);
         const int ny = std::clamp(y + offset[1], 0, job.scene.view.height - 1);
         const Ray ray = job.camera.primary_ray(nx + 0.5, ny + 0.5);
-        if (!(job.tracer.first_surface(ray, true, probe) == seen)) {
+        if (!(job.tracer.first_surface(ray, RayStart::Eye, true, probe) == seen)) {
             return false;
         }
     }

@@ -20,25 +20,24 @@ inline bool is_leaf(std::uint32_t child) {
     return (child & kLeafBit) != 0;
 }
 
-/// 128 bytes on a 64-byte boundary: exactly two cache lines. Boxes are rounded outward from
-/// double, so each contains its polygons' corners.
-struct alignas(64) Node {
-    float lo[3][4];  ///< [axis][child]
-    float hi[3][4];
-    std::uint32_t child[4];
+/// A node of `Width` children's boxes and child words, on a 64-byte boundary. Boxes are rounded
+/// outward from double, so each contains its polygons' corners.
+template <int Width>
+struct alignas(64) NodeOf {
+    float lo[3][Width];  ///< [axis][child]
+    float hi[3][Width];
+    std::uint32_t child[Width];
 };
-static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float),
-              "BoxRay's plane offsets count on hi following lo");
 
-/// 256 bytes on a 64-byte boundary: the node traversal reads, two levels of Node collapsed into
-/// up to eight children (collapse.cpp); the same conservative boxes, the same child words.
-struct alignas(64) WideNode {
-    float lo[3][8];  ///< [axis][child]
-    float hi[3][8];
-    std::uint32_t child[8];
-};
-static_assert(offsetof(WideNode, hi) == offsetof(WideNode, lo) + 24 * sizeof(float),
+/// 128 bytes: exactly two cache lines.
+using Node = NodeOf<4>;
+/// 256 bytes: the node traversal reads, two levels of Node collapsed into up to eight children
+/// (collapse.cpp); the same conservative boxes, the same child words.
+using WideNode = NodeOf<8>;
+static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float) &&
+                  offsetof(WideNode, hi) == offsetof(WideNode, lo) + 24 * sizeof(float),
               "BoxRay's plane offsets count on hi following lo");
+static_assert(sizeof(Node) == 128 && sizeof(WideNode) == 256);
 
 /// In TrianglePacket::position, lane not a triangle polygon: the exact test reads the Scene.
 constexpr std::uint32_t kNotTriangle = 0xffffffffu;

@@ -117,24 +117,12 @@ DirectionBins::FaceRect DirectionBins::face_rect(const Box3& box, int face) cons
             cell_of(std::max(u.lo, -1.0)), cell_of(std::min(u.hi, 1.0))};
 }
 
-bool DirectionBins::add_directions_of(const Box3& box, std::span<std::uint16_t> set) const {
-    bool added = false;
-    for (int face = 0; face < 6; ++face) {
-        const FaceRect r = face_rect(box, face);
-        if (r.row0 > r.row1 || r.column0 > r.column1) {
-            continue;
-        }
-        const std::uint16_t mask = row_mask(r);
-        for (int row = r.row0; row <= r.row1; ++row) {
-            std::uint16_t& bits = set[face * side_ + row];
-            added = added || (bits | mask) != bits;
-            bits |= mask;
-        }
-    }
-    return added;
+std::uint16_t DirectionBins::row_mask(const FaceRect& r) const {
+    return static_cast<std::uint16_t>(((1u << (r.column1 + 1)) - 1u) & ~((1u << r.column0) - 1u));
 }
 
-bool DirectionBins::holds_directions_of(const Box3& box, std::span<const std::uint16_t> set) const {
+template <class Visit>
+bool DirectionBins::for_each_row_of(const Box3& box, Visit&& visit) const {
     for (int face = 0; face < 6; ++face) {
         const FaceRect r = face_rect(box, face);
         if (r.row0 > r.row1 || r.column0 > r.column1) {
@@ -142,7 +130,7 @@ bool DirectionBins::holds_directions_of(const Box3& box, std::span<const std::ui
         }
         const std::uint16_t mask = row_mask(r);
         for (int row = r.row0; row <= r.row1; ++row) {
-            if ((set[face * side_ + row] & mask) != mask) {
+            if (!visit(static_cast<std::size_t>(face * side_ + row), mask)) {
                 return false;
             }
         }
@@ -150,26 +138,28 @@ bool DirectionBins::holds_directions_of(const Box3& box, std::span<const std::ui
     return true;
 }
 
-}  // namespace rt
+bool DirectionBins::add_directions_of(const Box3& box, std::span<std::uint16_t> set) const {
+    bool added = false;
+    for_each_row_of(box, [&](std::size_t row, std::uint16_t mask) {
+        std::uint16_t& bits = set[row];
+        added = added || (bits | mask) != bits;
+        bits |= mask;
+        return true;
+    });
+    return added;
+}
 
-namespace rt {
-
-std::uint16_t DirectionBins::row_mask(const FaceRect& r) const {
-    return static_cast<std::uint16_t>(((1u << (r.column1 + 1)) - 1u) & ~((1u << r.column0) - 1u));
+bool DirectionBins::holds_directions_of(const Box3& box, std::span<const std::uint16_t> set) const {
+    return for_each_row_of(
+        box, [&](std::size_t row, std::uint16_t mask) { return (set[row] & mask) == mask; });
 }
 
 void DirectionBins::add_directions_of(const Box3& box, std::span<std::uint16_t> set,
                                       std::span<const std::uint16_t> only) const {
-    for (int face = 0; face < 6; ++face) {
-        const FaceRect r = face_rect(box, face);
-        if (r.row0 > r.row1 || r.column0 > r.column1) {
-            continue;
-        }
-        const std::uint16_t mask = row_mask(r);
-        for (int row = r.row0; row <= r.row1; ++row) {
-            set[face * side_ + row] |= mask & only[face * side_ + row];
-        }
-    }
+    for_each_row_of(box, [&](std::size_t row, std::uint16_t mask) {
+        set[row] |= mask & only[row];
+        return true;
+    });
 }
 
 void DirectionBins::band_of(const Vec3& unit_normal, double cosine,

@@ -57,6 +57,10 @@ private:
     FaceRect face_rect(const Box3& box, int face) const;
     int cell_of(double coordinate) const;
     std::uint16_t row_mask(const FaceRect& r) const;
+    /// Calls visit(index of a row in a set, mask of the box's bins in it) for every row the
+    /// box's directions reach, until visit returns false; returns whether none did.
+    template <class Visit>
+    bool for_each_row_of(const Box3& box, Visit&& visit) const;
 
     int side_;
     std::uint16_t full_row_;

@@ -17,7 +17,7 @@ struct VoxelSearchParts;
 class Octree : public Accelerator, public DescribesWalk {
 public:
     /// Keeps a reference to the scene, which must outlive it. Uses settings.octree (its depth
-    /// must be set), -of, -on and -tv; throws UsageError for a depth outside 0..20 or a tree that
+    /// must be set), -of, -on and -tv; throws SettingError for a depth outside 0..20 or a tree that
     /// does not fit in 2^ol nodes.
     Octree(const Scene& scene, const AccelSettings& settings);
     std::string_view name() const override { return "octree"; }

@@ -22,7 +22,7 @@ struct OctreeCell {
 /// Everything a fill needs besides the recursion itself.
 class OctreeFill {
 public:
-    /// Checks the depth and -ol, sets up the world box; throws UsageError for bad settings.
+    /// Checks the depth and -ol, sets up the world box; throws SettingError for bad settings.
     OctreeFill(const Scene& scene, const OctreeBuildSettings& settings, bool no_fudge);
 
     OctreeTree& tree() { return tree_; }
@@ -32,7 +32,7 @@ public:
     bool splits(int level, std::size_t count) const {
         return count > kMaxLeafPolygons && level < tree_.depth;
     }
-    /// Appends 8 children, each a leaf for now; returns the first's index. Throws UsageError
+    /// Appends 8 children, each a leaf for now; returns the first's index. Throws SettingError
     /// naming -ol when the pool is full.
     std::uint32_t allocate_children() { return allocate_children(tree_); }
     /// The same on another tree (a subtree built apart, to be spliced into tree()).
@@ -43,7 +43,7 @@ public:
     }
     void make_leaf(OctreeTree& tree, std::uint32_t index,
                    const std::vector<std::uint32_t>& polygons) const;
-    /// Throws the UsageError allocate_children() gives when the pool holds `nodes` > -ol nodes.
+    /// Throws the SettingError allocate_children() gives when the pool holds `nodes` > -ol nodes.
     void check_node_count(std::size_t nodes) const;
     /// Sends each of the node's polygons to every child it touches (each grown by the fudge).
     void split(const OctreeCell& cell, const std::vector<std::uint32_t>& polygons,

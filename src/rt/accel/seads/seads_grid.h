@@ -55,7 +55,7 @@ struct SeadsGrid {
 };
 
 /// Files every polygon in each voxel it touches, each voxel grown by the fudge for the test.
-/// Throws UsageError for a side below 1 or a grid above kMaxSeadsVoxels, before allocating.
+/// Throws SettingError for a side below 1 or a grid above kMaxSeadsVoxels, before allocating.
 SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge);
 
 }  // namespace rt

@@ -50,61 +50,81 @@ inline bool voxel_may_hold_hit(std::span<const std::uint32_t> polygons, std::uin
            (bounds_slots == 0 || line_may_meet_box(line, bounds_before(polygons).data()));
 }
 
-/// The nearest hit over every polygon tested so far along one ray, in brute force's order
-/// (hit.h): the same rule as brute force, so the same answer.
-class NearestHitSearch {
+/// What both searches share: the ray's box probes and the polygons it has tested, so that each
+/// polygon along the ray is tested once, and only when its boxes may meet the ray.
+class PolygonSieve {
 public:
-    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
-                     Interval t, TraceCounters& counters)
-        : scene_(scene),
-          boxes_(boxes),
-          line_(space.ray()),
-          triangle_(space.ray(), boxes.scale()),
-          space_(space),
-          nearest_(t),
-          counters_(counters) {}
-
-    void test(std::span<const std::uint32_t> polygons);
-    const std::optional<Hit>& nearest() const { return nearest_.best(); }
-    const LineProbe& line() const { return line_; }
-
-private:
-    const Scene& scene_;
-    const PolygonBoxes& boxes_;
-    LineProbe line_;
-    TriangleProbe triangle_;
-    const RaySpace& space_;
-    ClosestHitSoFar nearest_;
-    TraceCounters& counters_;
-    TestedPolygons tested_;
-};
-
-/// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).
-class AnyHitSearch {
-public:
-    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space, Interval t,
+    PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
                  TraceCounters& counters)
         : scene_(scene),
           boxes_(boxes),
           line_(space.ray()),
           triangle_(space.ray(), boxes.scale()),
           space_(space),
-          t_(t),
           counters_(counters) {}
 
-    /// True as soon as one of them is hit.
-    bool test(std::span<const std::uint32_t> polygons);
     const LineProbe& line() const { return line_; }
 
-private:
+protected:
+    /// Calls test(id) for each of the polygons that passes the sieve, counting the test, until
+    /// test returns true; returns whether one did.
+    template <class Test>
+    bool test_each(std::span<const std::uint32_t> polygons, Test&& test) {
+        // Every box this voxel needs, and every polygon record, asked for at once: their cache
+        // misses then overlap instead of each waiting for the one before.
+        for (const std::uint32_t id : polygons) {
+            boxes_.prefetch(id);
+            __builtin_prefetch(scene_.polygons.data() + id);
+        }
+        for (const std::uint32_t id : polygons) {
+            if (tested_.seen(id) || !boxes_.line_may_meet(line_, id) ||
+                !boxes_.triangle_may_be_hit(triangle_, id)) {
+                continue;
+            }
+            ++counters_.polygon_tests;
+            if (test(id)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     const Scene& scene_;
     const PolygonBoxes& boxes_;
     LineProbe line_;
     TriangleProbe triangle_;
     const RaySpace& space_;
-    Interval t_;
     TraceCounters& counters_;
     TestedPolygons tested_;
+};
+
+/// The nearest hit over every polygon tested so far along one ray, in brute force's order
+/// (hit.h): the same rule as brute force, so the same answer.
+class NearestHitSearch : public PolygonSieve {
+public:
+    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
+                     Interval t, TraceCounters& counters)
+        : PolygonSieve(scene, boxes, space, counters), nearest_(t) {}
+
+    void test(std::span<const std::uint32_t> polygons);
+    const std::optional<Hit>& nearest() const { return nearest_.best(); }
+
+private:
+    ClosestHitSoFar nearest_;
+};
+
+/// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).
+class AnyHitSearch : public PolygonSieve {
+public:
+    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space, Interval t,
+                 TraceCounters& counters)
+        : PolygonSieve(scene, boxes, space, counters), t_(t) {}
+
+    /// True as soon as one of them is hit.
+    bool test(std::span<const std::uint32_t> polygons);
+
+private:
+    Interval t_;
 };
 
 }  // namespace rt

@@ -34,12 +34,12 @@ ZBufferFirstHits::ZBufferFirstHits(const Scene& scene, const PinholeView& view,
       buffer_(timed_buffer(scene, view, settings, build_seconds_)),
       name_("z-buffer first hits over " + std::string(fallback.name())) {}
 
-std::optional<Hit> ZBufferFirstHits::closest_hit(const Ray& ray, Interval t,
-                                                 TraceCounters& counters) const {
+std::optional<Hit> ZBufferFirstHits::eye_ray_closest_hit(const Ray& ray, Interval t,
+                                                         TraceCounters& counters) const {
     const std::optional<EyeRayPixel> pixel = t.min >= 0.0 ? buffer_.pixel_of(ray) : std::nullopt;
     const RaySpace space(ray);
     if (!pixel || !space.valid()) {
-        return fallback_.closest_hit(ray, t, counters);
+        return fallback_.eye_ray_closest_hit(ray, t, counters);
     }
     const double direction_length = length(ray.direction);
     ClosestHitSoFar nearest(t);
@@ -58,21 +58,6 @@ std::optional<Hit> ZBufferFirstHits::closest_hit(const Ray& ray, Interval t,
         }
     }
     return nearest.best();
-}
-
-bool ZBufferFirstHits::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const std::optional<EyeRayPixel> pixel = t.min >= 0.0 ? buffer_.pixel_of(ray) : std::nullopt;
-    const RaySpace space(ray);
-    if (!pixel || !space.valid()) {
-        return fallback_.occluded(ray, t, counters);
-    }
-    for (const std::uint32_t rank : buffer_.candidates(pixel->x, pixel->y)) {
-        ++counters.polygon_tests;
-        if (intersect_polygon(space, scene_, buffer_.polygon(rank), t)) {
-            return true;
-        }
-    }
-    return false;
 }
 
 std::size_t ZBufferFirstHits::memory_bytes() const {

@@ -1,6 +1,7 @@
 // Z-buffer first hits (manual part one: rt "compares octree, spatial enumeration and z-buffer
-// performance"; the --zbuffer switch): eye rays find their first polygon in a rasterised item
-// buffer; every other ray, and every eye ray the buffer cannot answer, goes to the fallback.
+// performance"; the --zbuffer switch): eye rays, which the renderer sends through
+// eye_ray_closest_hit, find their first polygon in a rasterised item buffer; every other ray, and
+// every eye ray the buffer cannot answer, goes to the fallback.
 // The answer is brute force's exactly: same t, same polygon, ties to the lowest id.
 #pragma once
 
@@ -34,11 +35,19 @@ public:
                      const ZBufferSettings& settings = {});
 
     std::string_view name() const override { return name_; }
-    /// An eye ray of the view (origin on the screen, line through the eye, t.min >= 0) is
-    /// answered from its pixel's candidates; anything else by the fallback.
+    /// Every ray but the eye rays: the fallback's answer.
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
-                                   TraceCounters& counters) const override;
-    bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+                                   TraceCounters& counters) const override {
+        return fallback_.closest_hit(ray, t, counters);
+    }
+    bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override {
+        return fallback_.occluded(ray, t, counters);
+    }
+    /// Answered from the pixel's candidates. The buffer vouches only for rays of its own view
+    /// (origin on the screen, line through the eye, within rounding, and t.min >= 0): any other
+    /// ray sent here, and every ray while the buffer is off, goes to the fallback.
+    std::optional<Hit> eye_ray_closest_hit(const Ray& ray, Interval t,
+                                           TraceCounters& counters) const override;
     /// The item buffer plus the fallback.
     std::size_t memory_bytes() const override;
 
