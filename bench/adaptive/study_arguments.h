@@ -23,9 +23,9 @@ struct StudyArguments {
     std::vector<std::string> rt_args;     ///< SCENE and rt's switches
 };
 
-/// Declares the study's options on app, writing into arguments (--name VALUE or --name=VALUE;
+/// Declares the study's options on app, writing into out (--name VALUE or --name=VALUE;
 /// --uniform and --adaptive add up when repeated), and lets app keep every other argument, in
 /// order, for rt::parse_command_line (take them with app.remaining() after parsing).
-void add_study_options(CLI::App& app, StudyArguments& arguments);
+void add_study_options(CLI::App& app, StudyArguments& out);
 
 }  // namespace rt::bench

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <exception>
+#include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -109,20 +111,8 @@ void measure(const rt::Scene& scene, const rt::AccelSettings& settings, int ray_
         static_cast<double>(counters.voxels_stepped) / ray_count, hits);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app(
-        "Build time, memory and single-thread rays per second of SEADS and the octree\n"
-        "on cube spheres of min_triangles to max_triangles triangles.",
-        "rt_voxel_bench");
-    rt::cli::configure(app);
-    VoxelBenchArguments a;
-    add_options(app, a);
-    if (const std::optional<int> stop =
-            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::Runs)) {
-        return *stop;
-    }
+// Both methods on each sphere from min_triangles up, ten times more triangles each time.
+void run(const VoxelBenchArguments& a) {
     for (int triangles = a.min_triangles; triangles <= a.max_triangles; triangles *= 10) {
         const rt::Scene scene = rt::test::make_cube_sphere(static_cast<std::uint32_t>(triangles));
         rt::AccelSettings seads;
@@ -140,5 +130,27 @@ int main(int argc, char** argv) {
             measure(scene, octree, a.ray_count);
         }
     }
-    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        CLI::App app(
+            "Build time, memory and single-thread rays per second of SEADS and the octree\n"
+            "on cube spheres of min_triangles to max_triangles triangles.",
+            "rt_voxel_bench");
+        rt::cli::configure(app);
+        VoxelBenchArguments a;
+        add_options(app, a);
+        if (const std::optional<int> stop =
+                rt::cli::parse(app, argc, argv, rt::cli::BareCommand::Runs)) {
+            return *stop;
+        }
+        run(a);
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "rt_voxel_bench: " << e.what() << '\n';
+        return 1;
+    }
 }

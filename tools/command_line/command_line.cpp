@@ -13,6 +13,8 @@ namespace rt::cli {
 
 namespace {
 
+// CLI11's help, with the usage line given by the program when CLI11 cannot know it: the programs
+// that pass arguments on to rt have a SCENE and switches that CLI11 never declares.
 class Formatter : public CLI::Formatter {
 public:
     explicit Formatter(std::string usage) : usage_(std::move(usage)) { column_width(26); }

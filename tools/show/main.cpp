@@ -89,19 +89,19 @@ void print_error(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app(
-        "Looks at a .gro picture written by rt (manual 1.2): prints what it holds, or\n"
-        "converts it to PNG, PPM or .gro. Exit codes: 0 ok, 1 bad picture, 2 usage,\n"
-        "3 I/O, 4 internal.",
-        "show");
-    rt::cli::configure(app);
-    ShowArgs args;
-    add_options(app, args);
-    if (const std::optional<int> stop =
-            rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
-        return *stop;
-    }
     try {
+        CLI::App app(
+            "Looks at a .gro picture written by rt (manual 1.2): prints what it holds, or\n"
+            "converts it to PNG, PPM or .gro. Exit codes: 0 ok, 1 bad picture, 2 usage,\n"
+            "3 I/O, 4 internal.",
+            "show");
+        rt::cli::configure(app);
+        ShowArgs args;
+        add_options(app, args);
+        if (const std::optional<int> stop =
+                rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
+            return *stop;
+        }
         return run(args);
     } catch (const rt::InputError& e) {
         print_error(e.what());
