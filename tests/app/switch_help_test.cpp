@@ -82,7 +82,7 @@ TEST(SwitchHelp, Synopses) {
         return std::string("missing");
     };
     EXPECT_EQ(of("-Dd"), "-Dd | ");
-    EXPECT_EQ(of("-Stg"), "-Stg<m> | m > 0, attached or separate");
+    EXPECT_EQ(of("-Stg"), "-Stg<m> | m >= 0.000001, attached or separate");
     EXPECT_EQ(of("-A"),
               "-A<distance>,<constant> | distance > 0, constant > 0, attached or separate");
     EXPECT_EQ(of("-Wc"), "-Wc <angle> | angle in (0, pi], attached or separate");

@@ -202,7 +202,9 @@ TEST(SwitchParser, Ranges) {
     EXPECT_EQ(usage_error({"s", "-Xr0.1,0"}), "-Xr: the variance must be > 0, found '0'");
     EXPECT_EQ(usage_error({"s", "-Wc0"}), "-Wc: the angle must be in (0, pi], found '0'");
     EXPECT_EQ(usage_error({"s", "-Wc3.2"}), "-Wc: the angle must be in (0, pi], found '3.2'");
-    EXPECT_EQ(usage_error({"s", "-Stg0"}), "-Stg: m must be > 0, found '0'");
+    EXPECT_EQ(usage_error({"s", "-Stg0"}), "-Stg: m must be >= 0.000001, found '0'");
+    // Below this the highlight's formulas overflow and the picture would be NaN.
+    EXPECT_EQ(usage_error({"s", "-Stb1e-200"}), "-Stb: m must be >= 0.000001, found '1e-200'");
     EXPECT_EQ(parse_command_line({"s", "-L0"}).start_line, 0);
 }
 

@@ -339,5 +339,32 @@ TEST(SpecularSettings, SlopeMustBePositiveForTorranceSparrow) {
     EXPECT_NO_THROW(make_specular_settings(SpecularLaw::Phong, 0.0, HighlightTint::LightColor));
 }
 
+// Every slope the laws accept gives a finite highlight, up to the narrowest: below it the
+// formulas overflow (1e-200 used to give NaN pixels), so it is refused.
+TEST(SpecularSettings, EveryAcceptedSlopeGivesAFiniteHighlight) {
+    const Vec3 normal{0, 0, 1};
+    const Vec3 to_light = normalize(Vec3{0.2, 0, 1});
+    const Vec3 to_viewer = normalize(Vec3{-0.2, 0, 1});
+    Attribute attribute;
+    attribute.specular = 1.0;
+    for (const SpecularLaw law :
+         {SpecularLaw::TorranceSparrowGaussian, SpecularLaw::TorranceSparrowBeckmann}) {
+        for (const double m : {kLeastMicrofacetSlope, 1e-3, 1.0, 1e200}) {
+            const SpecularSettings s = make_specular_settings(law, m, HighlightTint::LightColor);
+            const Rgb head_on = specular_highlight(s, attribute, normal, to_light, to_viewer);
+            EXPECT_TRUE(std::isfinite(head_on.r)) << "m = " << m;
+        }
+        try {
+            (void)make_specular_settings(law, 1e-200, HighlightTint::LightColor);
+            FAIL() << "a slope below the least was accepted";
+        } catch (const SettingError& error) {
+            EXPECT_EQ(error.setting(), "microfacet slope m");
+            EXPECT_STREQ(error.what(),
+                         "the microfacet slope m of Torrance-Sparrow must be finite and at least "
+                         "1e-06, not 1e-200");
+        }
+    }
+}
+
 }  // namespace
 }  // namespace rt

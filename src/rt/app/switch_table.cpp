@@ -28,6 +28,7 @@ constexpr Range kPositive{0.0, 0.0, true, false, false};
 constexpr Range kNonNegative{0.0, 0.0, false, false, false};
 constexpr Range kProbability{0.0, 1.0, true, true, true};
 constexpr Range kAngle{0.0, std::numbers::pi, true, false, true};
+constexpr Range kMicrofacetSlope{kLeastMicrofacetSlope, 0.0, false, false, false};
 
 // --accel NAME: its row has no range, so the name is checked here, once.
 void set_accel_kind(Options& o, A a) {
@@ -149,7 +150,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A) { set_specular_law(o, SpecularLaw::PhongGeometric, 1.0); },
      .summary = "Phong with geometric attenuation factor", .section = "App.", .example = "-Sg"},
     {.spelling = "-Stg", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
-     .first = {"m", kPositive},
+     .first = {"m", kMicrofacetSlope},
      .apply = [](Options& o, A a) {
          set_specular_law(o, SpecularLaw::TorranceSparrowGaussian, a.first);
      },
@@ -157,7 +158,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "m is the root mean square slope of the microfacets.", .section = "App.",
      .example = "-Stg1.0", .setting = "microfacet slope m"},
     {.spelling = "-Stb", .form = Number, .group = Exclusive::SpecularModel, .topic = Specular,
-     .first = {"m", kPositive},
+     .first = {"m", kMicrofacetSlope},
      .apply = [](Options& o, A a) {
          set_specular_law(o, SpecularLaw::TorranceSparrowBeckmann, a.first);
      },

@@ -1,6 +1,7 @@
 #include "rt/shading/specular_model.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -47,6 +48,13 @@ double law_value(const SpecularSettings& settings, const Attribute& attribute, c
     return 0.0;
 }
 
+// The shortest text that reads back as `value` ("1e-06", "0.3"), for messages.
+std::string shortest(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
 }  // namespace
 
 SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, HighlightTint tint) {
@@ -55,11 +63,11 @@ SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, Highlig
     settings.law_ = law;
     settings.slope_m_ = slope_m;
     if (is_torrance_sparrow(law)) {
-        if (!(slope_m > 0.0) || !std::isfinite(slope_m)) {
+        if (!(slope_m >= kLeastMicrofacetSlope) || !std::isfinite(slope_m)) {
             throw SettingError("microfacet slope m",
-                               "the microfacet slope m of Torrance-Sparrow must be positive and "
-                               "finite, not " +
-                                   std::to_string(slope_m));
+                               "the microfacet slope m of Torrance-Sparrow must be finite and at "
+                               "least " +
+                                   shortest(kLeastMicrofacetSlope) + ", not " + shortest(slope_m));
         }
         settings.gaussian_normaliser_ = gaussian_normaliser(slope_m);
     }

@@ -24,6 +24,11 @@ enum class HighlightTint {
     Fresnel,      ///< -Cf: a Fresnel reflectance per RGB channel, the colour taken as F0
 };
 
+/// The smallest microfacet slope m the Torrance-Sparrow laws take. Below about 1e-77 the
+/// Beckmann law's m^4 and below about 1e-154 the Gaussian normaliser overflow, and a picture of
+/// NaNs would follow; a highlight of slope 1e-6 is already far narrower than any sample spacing.
+inline constexpr double kLeastMicrofacetSlope = 1e-6;
+
 /// The highlight's law and colour. The law, its slope m and the Gaussian normaliser that follows
 /// from m are set together, by make_specular_settings only, so a Gaussian law always carries its
 /// normaliser: there is no "not computed yet" state for specular_highlight to detect and repair
@@ -33,8 +38,8 @@ public:
     HighlightTint tint = HighlightTint::LightColor;  ///< -C, chosen apart from the law
 
     SpecularLaw law() const { return law_; }
-    /// m, the rms slope of the microfacets; the Torrance-Sparrow laws require it positive and
-    /// finite, the Phong laws ignore it.
+    /// m, the rms slope of the microfacets; the Torrance-Sparrow laws require it finite and at
+    /// least kLeastMicrofacetSlope, the Phong laws ignore it.
     double slope_m() const { return slope_m_; }
     /// The constant making the Gaussian distribution a distribution of facet normals for slope_m
     /// (gaussian_normaliser(m)); 0 under the Phong laws, which have no m.
@@ -49,8 +54,8 @@ private:
 };
 
 /// Settings for `law` with the Gaussian normaliser computed for `slope_m`. Throws
-/// rt::SettingError when a Torrance-Sparrow law is given a slope m that is not positive and
-/// finite.
+/// rt::SettingError when a Torrance-Sparrow law is given a slope m below kLeastMicrofacetSlope or
+/// not finite.
 SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, HighlightTint tint);
 
 /// The factor (per channel) by which the intensity a light delivers at the point is multiplied to
