@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accel_test_scenes.h"
+#include "accel/accel_test_scenes.h"
 
 namespace rt {
 namespace {

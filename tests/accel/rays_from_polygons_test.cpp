@@ -19,10 +19,10 @@
 
 #include <gtest/gtest.h>
 
-#include "accel_test_scenes.h"
-#include "grid_test_support.h"
+#include "accel/accel_test_scenes.h"
+#include "accel/grid_test_support.h"
+#include "accel/surface_rays.h"
 #include "support/meshes/generated_meshes.h"
-#include "surface_rays.h"
 
 namespace rt::test {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accel_compare.h"
+#include "accel/accel_compare.h"
 #include "support/meshes/generated_meshes.h"
 #include "support/scene_builder.h"
 #include "support/temp_dir.h"

@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "accel/surface_rays.h"
 #include "support/scene_builder.h"
-#include "surface_rays.h"
 
 namespace rt::test {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grid_test_support.h"
+#include "accel/grid_test_support.h"
 #include "support/temp_dir.h"
 
 namespace rt::test {

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "accel_test_scenes.h"
+#include "accel/accel_test_scenes.h"
 
 namespace rt::test {
 namespace {
@@ -28,7 +28,8 @@ TEST(ZBufferMeasure, DISABLED_TwocubesEyeRays) {
             const Ray ray = view.primary_ray(x + 0.5, y + 0.5);
             ++rays;
             const auto expected = brute.closest_hit(ray, {1e-9, kBeyondAnyScene}, brute_counters);
-            const auto got = zbuffer->eye_ray_closest_hit(ray, {1e-9, kBeyondAnyScene}, zbuffer_counters);
+            const auto got =
+                zbuffer->eye_ray_closest_hit(ray, {1e-9, kBeyondAnyScene}, zbuffer_counters);
             EXPECT_EQ(expected.has_value(), got.has_value());
         }
     }

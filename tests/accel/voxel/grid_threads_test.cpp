@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grid_test_support.h"
+#include "accel/grid_test_support.h"
 
 namespace rt::test {
 namespace {

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "accel_test_scenes.h"
+#include "accel/accel_test_scenes.h"
 
 namespace rt::test {
 namespace {
