@@ -71,7 +71,7 @@ AcceleratorStack::AcceleratorStack(const Scene& scene, const Options& options,
     }
     top_ = base_.get();
     if (options.zbuffer_first_hits) {
-        zbuffer_ = make_zbuffer_first_hits(scene, PinholeView::from_view(scene.view), *base_);
+        zbuffer_ = make_zbuffer_first_hits(scene, scene.view.camera(), *base_);
         const ZBufferStatistics z = zbuffer_->statistics();
         if (!z.active) {
             console.warning("z-buffer off: " + z.inactive_reason +

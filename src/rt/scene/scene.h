@@ -10,6 +10,7 @@
 #include "rt/core/bounds.h"
 #include "rt/core/error.h"
 #include "rt/core/vec3.h"
+#include "rt/geometry/camera.h"
 #include "rt/scene/attribute.h"
 
 namespace rt {
@@ -37,6 +38,9 @@ struct SceneView {
     int width = 0;  ///< view area in pixels
     int height = 0;
     PixelRect window;  ///< the output matrix: the part of the view area to render
+
+    /// The pinhole camera this view describes.
+    Camera camera() const;
 };
 
 /// Polygon marks of -M (manual 2.5).
