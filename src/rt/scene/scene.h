@@ -11,6 +11,7 @@
 #include "rt/core/error.h"
 #include "rt/core/vec3.h"
 #include "rt/geometry/camera.h"
+#include "rt/geometry/polygon_view.h"
 #include "rt/scene/attribute.h"
 
 namespace rt {
@@ -106,6 +107,14 @@ struct Scene {
     Vec3 corner_position(const Polygon& p, std::uint32_t k) const {
         return positions[corners[p.first_corner + k]];
     }
+    /// Polygon `polygon` as the geometry routines take it (ray_polygon.h).
+    PolygonView polygon_view(std::uint32_t polygon) const {
+        const Polygon& p = polygons[polygon];
+        return {positions, {corners.data() + p.first_corner, p.corner_count}, p.normal};
+    }
+    /// The normals at polygon `polygon`'s corners (geometry/normals.h): its own with -E, else the
+    /// vertex normals; none when the scene has fewer vertex normals than positions.
+    CornerNormals normals_of(std::uint32_t polygon) const;
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
     SourceLocation origin_of(std::uint32_t polygon) const;
     /// Smallest box around every position; a box of no size at the origin for an empty scene

@@ -17,7 +17,7 @@ void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
         ++counters_.polygon_tests;
         // Polygons arrive in voxel order, not id order: the tie rule picks among equal t.
         if (const std::optional<double> t =
-                intersect_polygon(space_, scene_, id, nearest_.search_interval())) {
+                intersect_polygon(space_, scene_.polygon_view(id), nearest_.search_interval())) {
             nearest_.offer(*t, id);
         }
     }
@@ -34,7 +34,7 @@ bool AnyHitSearch::test(std::span<const std::uint32_t> polygons) {
             continue;
         }
         ++counters_.polygon_tests;
-        if (intersect_polygon(space_, scene_, id, t_)) {
+        if (intersect_polygon(space_, scene_.polygon_view(id), t_)) {
             return true;
         }
     }

@@ -53,7 +53,7 @@ std::optional<Hit> ZBufferFirstHits::closest_hit(const Ray& ray, Interval t,
         ++counters.polygon_tests;
         // The same t brute force computes: the interval only decides whether it counts.
         if (const std::optional<double> hit =
-                intersect_polygon(space, scene_, id, nearest.search_interval())) {
+                intersect_polygon(space, scene_.polygon_view(id), nearest.search_interval())) {
             nearest.offer(*hit, id);
         }
     }
@@ -68,7 +68,7 @@ bool ZBufferFirstHits::occluded(const Ray& ray, Interval t, TraceCounters& count
     }
     for (const std::uint32_t rank : buffer_.candidates(pixel->x, pixel->y)) {
         ++counters.polygon_tests;
-        if (intersect_polygon(space, scene_, buffer_.polygon(rank), t)) {
+        if (intersect_polygon(space, scene_.polygon_view(buffer_.polygon(rank)), t)) {
             return true;
         }
     }
