@@ -20,8 +20,8 @@ struct LabOptions {
     double brute_force_tests = 2e8;  ///< ray-polygon tests brute force may spend per measurement
     std::string csv_file;
     std::string svg_file;
-    int seads_side = 0;    ///< SEADS voxels a side; 0: suggested_seads_resolution
-    int octree_depth = 0;  ///< octree depth; 0: suggested_octree_depth
+    int seads_side = 0;            ///< SEADS voxels a side; 0: suggested_seads_resolution
+    int octree_depth = 0;          ///< octree depth; 0: suggested_octree_depth
     std::string source_dir = ".";  ///< where scenes/twocubes.scn is
     bool show_help = false;
 };

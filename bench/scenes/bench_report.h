@@ -12,7 +12,7 @@ struct BenchRun {
     std::string scene;        ///< as given on the command line
     std::string accelerator;  ///< its name()
     std::size_t polygons = 0;
-    int width = 0;    ///< of the rendered window
+    int width = 0;  ///< of the rendered window
     int height = 0;
     double load_seconds = 0.0;
     double build_seconds = 0.0;
