@@ -15,8 +15,8 @@ struct CameraPlacement {
     double screen_distance = 1.0;
     double view_angle_x_degrees = 30.0;  ///< full angle subtended horizontally
     double view_angle_y_degrees = 30.0;  ///< full angle subtended vertically
-    int width = 1;                       ///< view area in pixels
-    int height = 1;
+    int width = 0;                       ///< view area in pixels
+    int height = 0;
 };
 
 struct Camera {

@@ -2,16 +2,6 @@
 
 namespace rt {
 
-Camera SceneView::camera() const {
-    return Camera::placed({.eye = eye,
-                           .look = look,
-                           .screen_distance = screen_distance,
-                           .view_angle_x_degrees = view_angle_x_degrees,
-                           .view_angle_y_degrees = view_angle_y_degrees,
-                           .width = width,
-                           .height = height});
-}
-
 SourceLocation Scene::origin_of(std::uint32_t polygon) const {
     const SourceRef& ref = polygon_origin.at(polygon);
     return {source_files.at(ref.file), static_cast<int>(ref.line), 0};

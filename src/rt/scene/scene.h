@@ -28,20 +28,15 @@ struct SceneHeader {
     double maxdist = 0.0;       ///< depth down to which rays are distributed
 };
 
-struct SceneView {
-    Vec3 eye;
-    Vec3 look;
-    double screen_distance = 1.0;
-    double view_angle_x_degrees = 30.0;  ///< full angle subtended horizontally
-    double view_angle_y_degrees = 30.0;  ///< full angle subtended vertically
-    int sample_resolution_x = 1;         ///< at most x*y samples per pixel
+/// The view of the .scn file (manual 2.2): where the camera stands and what it sees, the samples
+/// per pixel and the output matrix.
+struct SceneView : CameraPlacement {
+    int sample_resolution_x = 1;  ///< at most x*y samples per pixel
     int sample_resolution_y = 1;
-    int width = 0;  ///< view area in pixels
-    int height = 0;
     PixelRect window;  ///< the output matrix: the part of the view area to render
 
     /// The pinhole camera this view describes.
-    Camera camera() const;
+    Camera camera() const { return Camera::placed(*this); }
 };
 
 /// Polygon marks of -M (manual 2.5).
