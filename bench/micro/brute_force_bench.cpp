@@ -4,7 +4,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/core/diagnostics.h"
-#include "rt/render/camera.h"
+#include "rt/geometry/camera.h"
 #include "rt/scene/read/load_scene.h"
 
 #include <benchmark/benchmark.h>
@@ -21,7 +21,7 @@ Scene load_twocubes() {
 
 // Eye rays through the centres of a columns x rows grid over the whole view area.
 std::vector<Ray> eye_rays(const Scene& scene, int columns, int rows) {
-    const Camera camera = Camera::from_view(scene.view);
+    const Camera camera = scene.view.camera();
     std::vector<Ray> rays;
     for (int j = 0; j < rows; ++j) {
         for (int i = 0; i < columns; ++i) {

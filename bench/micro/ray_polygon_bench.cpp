@@ -23,7 +23,7 @@ void intersect_polygon_prepared_ray(benchmark::State& state) {
     std::int64_t hits = 0;
     for (auto _ : state) {
         for (const RaySpace& space : spaces) {
-            const std::optional<double> t = intersect_polygon(space, scene, 0, kAhead);
+            const std::optional<double> t = intersect_polygon(space, scene.polygon_view(0), kAhead);
             hits += t.has_value() ? 1 : 0;
             benchmark::DoNotOptimize(t);
         }
@@ -38,7 +38,7 @@ void intersect_polygon_fresh_ray(benchmark::State& state) {
     const std::vector<Ray> rays = rays_around_unit_polygon(kRays);
     for (auto _ : state) {
         for (const Ray& ray : rays) {
-            benchmark::DoNotOptimize(intersect_polygon(ray, scene, 0, kAhead));
+            benchmark::DoNotOptimize(intersect_polygon(ray, scene.polygon_view(0), kAhead));
         }
     }
     state.SetItemsProcessed(state.iterations() * kRays);

@@ -212,7 +212,7 @@ inline bool agrees(const Scene& scene, const SurfaceRay& r, const Answer& want, 
     }
     // A real hit on the polygon named, never nearer than the nearest.
     return got.hit->t >= want.hit->t &&
-           intersect_polygon(r.ray, scene, got.hit->polygon, r.t) == got.hit->t;
+           intersect_polygon(r.ray, scene.polygon_view(got.hit->polygon), r.t) == got.hit->t;
 }
 
 /// Expects `accel` to give the answers brute force gave (`want`, one per ray): exactly, or with

@@ -211,7 +211,8 @@ TEST(InterpolatedNormal, EqualsTheVertexNormalAtACornerAndBlendsBetween) {
         const Polygon& p = smooth.polygons[id];
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
             const Vec3 corner = smooth.corner_position(p, k);
-            const Vec3 n = interpolated_normal(smooth, id, corner);
+            const Vec3 n =
+                interpolated_normal(smooth.polygon_view(id), smooth.normals_of(id), corner);
             EXPECT_NEAR(length(n - smooth.vertex_normals[smooth.corners[p.first_corner + k]]), 0.0,
                         1e-12);
         }
@@ -220,7 +221,7 @@ TEST(InterpolatedNormal, EqualsTheVertexNormalAtACornerAndBlendsBetween) {
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
             middle += smooth.corner_position(p, k) / p.corner_count;
         }
-        const Vec3 n = interpolated_normal(smooth, id, middle);
+        const Vec3 n = interpolated_normal(smooth.polygon_view(id), smooth.normals_of(id), middle);
         EXPECT_NEAR(length(n), 1.0, 1e-12);
         EXPECT_GT(dot(n, normalize(middle)), 0.97);
     }
@@ -234,16 +235,19 @@ TEST(InterpolatedNormal, NeighboursAgreeOnTheirSharedEdge) {
     b.smooth_vertex_normals();
     for (const double y : {0.1, 0.7, 1.3, 1.9}) {
         const Vec3 on_edge{0, y, 0};
-        EXPECT_NEAR(length(interpolated_normal(b.scene(), 0, on_edge) -
-                           interpolated_normal(b.scene(), 1, on_edge)),
-                    0.0, 1e-12);
+        EXPECT_NEAR(
+            length(
+                interpolated_normal(b.scene().polygon_view(0), b.scene().normals_of(0), on_edge) -
+                interpolated_normal(b.scene().polygon_view(1), b.scene().normals_of(1), on_edge)),
+            0.0, 1e-12);
     }
 }
 
 TEST(InterpolatedNormal, PolygonNormalWithoutVertexNormals) {
     Scene box = test::make_box({0, 0, 0}, {1, 1, 1}, false);
     box.vertex_normals.clear();
-    EXPECT_EQ(interpolated_normal(box, 0, {0.5, 0.5, 0}), box.polygons[0].normal);
+    EXPECT_EQ(interpolated_normal(box.polygon_view(0), box.normals_of(0), {0.5, 0.5, 0}),
+              box.polygons[0].normal);
 }
 
 TEST(InterpolatedNormal, PolygonNormalWhereVertexNormalsCancel) {
@@ -251,7 +255,8 @@ TEST(InterpolatedNormal, PolygonNormalWhereVertexNormalsCancel) {
     b.add_polygon({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, kUp);
     Scene& s = b.scene();
     s.vertex_normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {0, 0, -1}};  // cancel at the centre
-    EXPECT_EQ(interpolated_normal(s, 0, {1, 1, 0}), s.polygons[0].normal);
+    EXPECT_EQ(interpolated_normal(s.polygon_view(0), s.normals_of(0), {1, 1, 0}),
+              s.polygons[0].normal);
 }
 
 TEST(PolygonWeights, MatchTheSpanForm) {
@@ -263,7 +268,7 @@ TEST(PolygonWeights, MatchTheSpanForm) {
     }
     const Vec3 point = (loop[0] * 0.2 + loop[1] * 0.3 + loop[2] * 0.5);
     std::vector<double> from_scene(4), from_span(4);
-    polygon_weights(box, 2, point, from_scene);
+    polygon_weights(box.polygon_view(2), point, from_scene);
     mean_value_weights(loop, p.normal, point, from_span);
     EXPECT_EQ(from_scene, from_span);
 }

@@ -1,10 +1,10 @@
-// The renderer's camera and the z-buffer share PinholeView; this checks that every eye ray the
+// The renderer and the z-buffer share the scene's Camera; this checks that every eye ray the
 // renderer makes, asked as an eye ray, is vouched for by the z-buffer and answered from its pixel
 // as brute force would.
 #include "rt/accel/brute_force.h"
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
 #include "rt/core/diagnostics.h"
-#include "rt/render/camera.h"
+#include "rt/geometry/camera.h"
 #include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
@@ -18,10 +18,9 @@ TEST(ZBufferCameraAgreement, EveryCameraRayIsAnsweredByTheItemBufferAsBruteForce
     Diagnostics diagnostics;
     const Scene scene = load_scene(source_dir() / "tests/data/scene/manual/twocubes.scn",
                                    ReaderDialect{}, diagnostics);
-    const Camera camera = Camera::from_view(scene.view);
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera camera = scene.view.camera();
     const BruteForce brute(scene);
-    const auto zbuffer = make_zbuffer_first_hits(scene, view, brute);
+    const auto zbuffer = make_zbuffer_first_hits(scene, camera, brute);
     TraceCounters brute_counters;
     TraceCounters zbuffer_counters;
     for (int y = 0; y <= scene.view.height; y += 3) {

@@ -3,9 +3,10 @@
 
 #include <cmath>
 
+#include "rt/accel/brute_force.h"
+
 #include <gtest/gtest.h>
 
-#include "rt/accel/brute_force.h"
 #include "support/scene_builder.h"
 
 namespace rt {

@@ -22,8 +22,9 @@ LineHits hits_along(const Scene& scene, const Ray& ray) {
     const RaySpace space(ray);
     LineHits result;
     for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
-        const std::optional<double> t = intersect_polygon(space, scene, id, kWholeLine);
-        const int winding = winding_number(space, scene, id);
+        const std::optional<double> t =
+            intersect_polygon(space, scene.polygon_view(id), kWholeLine);
+        const int winding = winding_number(space, scene.polygon_view(id));
         EXPECT_EQ(t.has_value(), winding != 0) << "hit and winding disagree on polygon " << id;
         if (t) {
             ++result.count;

@@ -1,9 +1,9 @@
 #include "support/run_program.h"
 
 #include <cstdlib>
-#include <sys/wait.h>
 
 #include "support/temp_dir.h"
+#include <sys/wait.h>
 
 namespace rt::test {
 
@@ -22,8 +22,8 @@ std::string shell_quote(const std::string& word) {
 ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
                           const std::filesystem::path& cwd) {
     const TempDir capture;
-    std::string command = "cd " + shell_quote(cwd.string()) + " && " +
-                          shell_quote((bin_dir() / program).string());
+    std::string command =
+        "cd " + shell_quote(cwd.string()) + " && " + shell_quote((bin_dir() / program).string());
     for (const std::string& a : args) {
         command += " " + shell_quote(a);
     }

@@ -73,7 +73,7 @@ AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSet
     }
     top_ = base_.get();
     if (s.zbuffer_first_hits) {
-        zbuffer_ = make_zbuffer_first_hits(scene, PinholeView::from_view(scene.view), *base_);
+        zbuffer_ = make_zbuffer_first_hits(scene, scene.view.camera(), *base_);
         const ZBufferStatistics z = zbuffer_->statistics();
         if (!z.active) {
             send(m.warning,

@@ -15,7 +15,8 @@ std::optional<Hit> BruteForce::closest_hit(const Ray& ray, Interval t,
     for (std::uint32_t id = 0; id < count; ++id) {
         // The interval shrinks to the nearest hit so far, open at both ends: a later polygon at
         // the same t is not nearer, so ties go to the lowest id.
-        if (const std::optional<double> hit = intersect_polygon(space, scene_, id, t)) {
+        if (const std::optional<double> hit =
+                intersect_polygon(space, scene_.polygon_view(id), t)) {
             nearest = Hit{*hit, id};
             t.max = *hit;
         }
@@ -32,7 +33,7 @@ bool BruteForce::occluded(const Ray& ray, Interval t, TraceCounters& counters) c
     const auto count = static_cast<std::uint32_t>(scene_.polygons.size());
     for (std::uint32_t id = 0; id < count; ++id) {
         ++counters.polygon_tests;
-        if (intersect_polygon(space, scene_, id, t)) {
+        if (intersect_polygon(space, scene_.polygon_view(id), t)) {
             return true;
         }
     }

@@ -3,9 +3,10 @@
 #include <fstream>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 #include "rt/core/error.h"
+
+#include <unistd.h>
 
 namespace rt {
 

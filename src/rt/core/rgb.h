@@ -25,11 +25,19 @@ struct Rgb {
     friend constexpr bool operator==(const Rgb&, const Rgb&) = default;
 };
 
-constexpr Rgb operator+(Rgb a, const Rgb& b) { return a += b; }
-constexpr Rgb operator*(Rgb a, double s) { return a *= s; }
-constexpr Rgb operator*(double s, Rgb a) { return a *= s; }
+constexpr Rgb operator+(Rgb a, const Rgb& b) {
+    return a += b;
+}
+constexpr Rgb operator*(Rgb a, double s) {
+    return a *= s;
+}
+constexpr Rgb operator*(double s, Rgb a) {
+    return a *= s;
+}
 /// Component-wise product: a surface colour filtering light.
-constexpr Rgb operator*(const Rgb& a, const Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
+constexpr Rgb operator*(const Rgb& a, const Rgb& b) {
+    return {a.r * b.r, a.g * b.g, a.b * b.b};
+}
 constexpr double max_component(const Rgb& c) {
     double m = c.r > c.g ? c.r : c.g;
     return m > c.b ? m : c.b;

@@ -35,19 +35,35 @@ struct Vec3 {
     friend constexpr bool operator==(const Vec3&, const Vec3&) = default;
 };
 
-constexpr Vec3 operator+(Vec3 a, const Vec3& b) { return a += b; }
-constexpr Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
-constexpr Vec3 operator*(Vec3 a, double s) { return a *= s; }
-constexpr Vec3 operator*(double s, Vec3 a) { return a *= s; }
-constexpr Vec3 operator/(Vec3 a, double s) { return a *= (1.0 / s); }
+constexpr Vec3 operator+(Vec3 a, const Vec3& b) {
+    return a += b;
+}
+constexpr Vec3 operator-(Vec3 a, const Vec3& b) {
+    return a -= b;
+}
+constexpr Vec3 operator*(Vec3 a, double s) {
+    return a *= s;
+}
+constexpr Vec3 operator*(double s, Vec3 a) {
+    return a *= s;
+}
+constexpr Vec3 operator/(Vec3 a, double s) {
+    return a *= (1.0 / s);
+}
 
-constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr double dot(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
+inline double length(const Vec3& v) {
+    return std::sqrt(dot(v, v));
+}
 /// Unit vector along v; v must not be zero.
-inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+inline Vec3 normalize(const Vec3& v) {
+    return v / length(v);
+}
 inline bool is_finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }

@@ -117,36 +117,33 @@ void mean_value_weights(std::span<const Vec3> corners, const Vec3& normal, const
     }
 }
 
-void polygon_weights(const Scene& scene, std::uint32_t polygon, const Vec3& point,
-                     std::span<double> weights) {
-    const Polygon& p = scene.polygons[polygon];
-    Scratch<Vec3> corner_space(p.corner_count);
+void polygon_weights(const PolygonView& polygon, const Vec3& point, std::span<double> weights) {
+    Scratch<Vec3> corner_space(polygon.corner_count());
     const std::span<Vec3> corners = corner_space.get();
-    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-        corners[k] = scene.corner_position(p, k);
+    for (std::uint32_t k = 0; k < polygon.corner_count(); ++k) {
+        corners[k] = polygon.corner(k);
     }
-    mean_value_weights(corners, p.normal, point, weights);
+    mean_value_weights(corners, polygon.normal, point, weights);
 }
 
-Vec3 interpolated_normal(const Scene& scene, std::uint32_t polygon, const Vec3& point) {
-    const Polygon& p = scene.polygons[polygon];
-    if (scene.vertex_normals.size() < scene.positions.size() || p.corner_count == 0) {
-        return p.normal;
+Vec3 interpolated_normal(const PolygonView& polygon, const CornerNormals& normals,
+                         const Vec3& point) {
+    if (normals.empty() || polygon.corner_count() == 0) {
+        return polygon.normal;
     }
-    Scratch<double> weight_space(p.corner_count);
+    Scratch<double> weight_space(polygon.corner_count());
     const std::span<double> weights = weight_space.get();
-    polygon_weights(scene, polygon, point, weights);
-    const bool per_corner = scene.corner_normals.size() == scene.corners.size();
+    polygon_weights(polygon, point, weights);
+    const bool per_corner = !normals.per_corner.empty();
     Vec3 blended;
-    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-        const std::uint32_t corner = p.first_corner + k;
+    for (std::uint32_t k = 0; k < polygon.corner_count(); ++k) {
         const Vec3& n =
-            per_corner ? scene.corner_normals[corner] : scene.vertex_normals[scene.corners[corner]];
+            per_corner ? normals.per_corner[k] : normals.per_vertex[polygon.corner_ids[k]];
         blended += n * weights[k];
     }
     const double len = length(blended);
     if (!(len > kTiny) || !std::isfinite(len)) {
-        return p.normal;
+        return polygon.normal;
     }
     return blended / len;
 }

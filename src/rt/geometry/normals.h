@@ -1,13 +1,13 @@
-// Shading normals: interpolated over polygons of any number of corners (the manual's "fast
-// normal interpolation scheme for polygons of any number of edges"), and inferred from the
-// sphere, cylinder and cone shapes of -M (manual 2.4).
+// Shading normals interpolated over polygons of any number of corners (the manual's "fast normal
+// interpolation scheme for polygons of any number of edges"). The normals inferred from the -M
+// shapes are the scene's (rt/scene/shape_normal.h).
 #pragma once
 
 #include <cstdint>
 #include <span>
 
 #include "rt/core/vec3.h"
-#include "rt/scene/scene.h"
+#include "rt/geometry/polygon_view.h"
 
 namespace rt {
 
@@ -20,21 +20,13 @@ namespace rt {
 void mean_value_weights(std::span<const Vec3> corners, const Vec3& normal, const Vec3& point,
                         std::span<double> weights);
 
-/// The mean value coordinates of `point` in scene polygon `polygon`, one per corner in loop
-/// order; weights.size() must be at least the polygon's corner count.
-void polygon_weights(const Scene& scene, std::uint32_t polygon, const Vec3& point,
-                     std::span<double> weights);
+/// The mean value coordinates of `point` in the polygon, one per corner in loop order;
+/// weights.size() must be at least the polygon's corner count.
+void polygon_weights(const PolygonView& polygon, const Vec3& point, std::span<double> weights);
 
-/// The unit vertex normals of the polygon's corners blended by its mean value coordinates at
-/// `point`; the polygon's own normal where they cancel out or the scene has no vertex normals.
-Vec3 interpolated_normal(const Scene& scene, std::uint32_t polygon, const Vec3& point);
-
-/// The outward normal of the shape at `point` for a polygon of mark Sphere (point - centre),
-/// Cylinder (the part of point - axis point perpendicular to the axis) or Cone (the normal of the
-/// infinite cone, half-angle in degrees, along the line from the apex through the point), turned
-/// to agree with the polygon's outward normal. The polygon's normal for the other marks and
-/// wherever the shape gives none (the point on the axis, a zero axis, ...).
-Vec3 shape_normal(const Shape& shape, PolygonMark mark, const Vec3& point,
-                  const Vec3& polygon_normal);
+/// The unit normals at the polygon's corners blended by its mean value coordinates at `point`;
+/// the polygon's own normal where they cancel out or there are none.
+Vec3 interpolated_normal(const PolygonView& polygon, const CornerNormals& normals,
+                         const Vec3& point);
 
 }  // namespace rt

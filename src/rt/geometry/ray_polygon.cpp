@@ -68,8 +68,8 @@ constexpr double kEdgeErrorBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 // Below this the products may have lost bits to underflow and the bound no longer holds.
 constexpr double kSmallestTrusted = 0x1p-900;
 
-// Sunday's winding number over any source of corners, so the span and the Scene forms share one
-// loop (and therefore one decision).
+// Sunday's winding number over any source of corners, so the span and the PolygonView forms share
+// one loop (and therefore one decision).
 template <class CornerAt>
 int winding_of(const RaySpace& space, std::uint32_t count, CornerAt corner_at) {
     if (!space.valid() || count < 3) {
@@ -262,11 +262,9 @@ int winding_number(const RaySpace& space, std::span<const Vec3> corners) {
                       [&](std::uint32_t k) -> const Vec3& { return corners[k]; });
 }
 
-int winding_number(const RaySpace& space, const Scene& scene, std::uint32_t polygon) {
-    const Polygon& p = scene.polygons[polygon];
-    const std::uint32_t* ids = scene.corners.data() + p.first_corner;
-    return winding_of(space, p.corner_count,
-                      [&](std::uint32_t k) -> const Vec3& { return scene.positions[ids[k]]; });
+int winding_number(const RaySpace& space, const PolygonView& polygon) {
+    return winding_of(space, polygon.corner_count(),
+                      [&](std::uint32_t k) -> const Vec3& { return polygon.corner(k); });
 }
 
 bool ray_passes_through(const RaySpace& space, std::span<const Vec3> corners) {
@@ -292,23 +290,15 @@ std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> co
         [&](std::uint32_t k) -> const Vec3& { return corners[k]; }, t);
 }
 
-std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
-                                        std::uint32_t polygon, Interval t) {
-    const Polygon& p = scene.polygons[polygon];
-    return intersect_polygon(space, scene.positions, scene.corners.data() + p.first_corner,
-                             p.corner_count, p.normal, t);
-}
-
-std::optional<double> intersect_polygon(const RaySpace& space, std::span<const Vec3> positions,
-                                        const std::uint32_t* ids, std::uint32_t count,
-                                        const Vec3& normal, Interval t) {
-    return hit_of(
-        space, normal, count, [&](std::uint32_t k) -> const Vec3& { return positions[ids[k]]; }, t);
-}
-
-std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,
+std::optional<double> intersect_polygon(const RaySpace& space, const PolygonView& polygon,
                                         Interval t) {
-    return intersect_polygon(RaySpace(ray), scene, polygon, t);
+    return hit_of(
+        space, polygon.normal, polygon.corner_count(),
+        [&](std::uint32_t k) -> const Vec3& { return polygon.corner(k); }, t);
+}
+
+std::optional<double> intersect_polygon(const Ray& ray, const PolygonView& polygon, Interval t) {
+    return intersect_polygon(RaySpace(ray), polygon, t);
 }
 
 }  // namespace rt

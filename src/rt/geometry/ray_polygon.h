@@ -11,7 +11,7 @@
 
 #include "rt/core/ray.h"
 #include "rt/core/vec3.h"
-#include "rt/scene/scene.h"
+#include "rt/geometry/polygon_view.h"
 
 namespace rt {
 
@@ -56,7 +56,7 @@ int edge_sign(double xa, double ya, double xb, double yb);
 /// by one consistent infinitesimal displacement so that it never meets an edge or a corner.
 /// 0 for an invalid RaySpace or fewer than 3 corners.
 int winding_number(const RaySpace& space, std::span<const Vec3> corners);
-int winding_number(const RaySpace& space, const Scene& scene, std::uint32_t polygon);
+int winding_number(const RaySpace& space, const PolygonView& polygon);
 
 /// Whether the ray's line passes through the polygon: a nonzero winding number (so the middle of a
 /// self-crossing star counts as inside).
@@ -74,20 +74,14 @@ std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& n
 std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> corners,
                                         const Vec3& normal, Interval t);
 
-/// The t of the ray's hit on scene polygon `polygon`, strictly inside the interval. The form to
-/// call in a loop over polygons: the RaySpace is computed once per ray.
-std::optional<double> intersect_polygon(const RaySpace& space, const Scene& scene,
-                                        std::uint32_t polygon, Interval t);
-
-/// The same test for a polygon given by its corners' indices into `positions` (Scene::corners
-/// order) and its normal: the Scene form calls this, so an accelerator keeping its own copy of
-/// the indices gets the same answer bit for bit without reading the Scene's polygon records.
-std::optional<double> intersect_polygon(const RaySpace& space, std::span<const Vec3> positions,
-                                        const std::uint32_t* ids, std::uint32_t count,
-                                        const Vec3& normal, Interval t);
+/// The t of the ray's hit on the polygon, strictly inside the interval. The form to call in a loop
+/// over polygons: the RaySpace is computed once per ray. Corners are read through their indices,
+/// so an accelerator keeping its own copy of the indices (PolygonView over them) gets the same
+/// answer bit for bit.
+std::optional<double> intersect_polygon(const RaySpace& space, const PolygonView& polygon,
+                                        Interval t);
 
 /// As above, preparing the ray itself.
-std::optional<double> intersect_polygon(const Ray& ray, const Scene& scene, std::uint32_t polygon,
-                                        Interval t);
+std::optional<double> intersect_polygon(const Ray& ray, const PolygonView& polygon, Interval t);
 
 }  // namespace rt

@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "rt/render/camera.h"
+#include "rt/geometry/camera.h"
 #include "rt/render/ray_tracer.h"
 #include "rt/sampling/adaptive_mean.h"
 #include "rt/sampling/sample_stream.h"
@@ -36,7 +36,7 @@ struct RenderJob {
               Film& f)
         : scene(s),
           settings(rs),
-          camera(Camera::from_view(s.view)),
+          camera(s.view.camera()),
           tracer(s, accel, rs.shading),
           pixel_strata(s.view.sample_resolution_x, s.view.sample_resolution_y),
           observer(o),

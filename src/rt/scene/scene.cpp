@@ -7,6 +7,17 @@ SourceLocation Scene::origin_of(std::uint32_t polygon) const {
     return {source_files.at(ref.file), static_cast<int>(ref.line), 0};
 }
 
+CornerNormals Scene::normals_of(std::uint32_t polygon) const {
+    if (vertex_normals.size() < positions.size()) {
+        return {};
+    }
+    if (corner_normals.size() != corners.size()) {
+        return {vertex_normals, {}};
+    }
+    const Polygon& p = polygons[polygon];
+    return {vertex_normals, {corner_normals.data() + p.first_corner, p.corner_count}};
+}
+
 Box3 Scene::bounds() const {
     if (positions.empty()) {
         return Box3::around(Vec3{});

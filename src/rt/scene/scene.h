@@ -10,6 +10,8 @@
 #include "rt/core/bounds.h"
 #include "rt/core/error.h"
 #include "rt/core/vec3.h"
+#include "rt/geometry/camera.h"
+#include "rt/geometry/polygon_view.h"
 #include "rt/scene/attribute.h"
 
 namespace rt {
@@ -26,17 +28,15 @@ struct SceneHeader {
     double maxdist = 0.0;       ///< depth down to which rays are distributed
 };
 
-struct SceneView {
-    Vec3 eye;
-    Vec3 look;
-    double screen_distance = 1.0;
-    double view_angle_x_degrees = 30.0;  ///< full angle subtended horizontally
-    double view_angle_y_degrees = 30.0;  ///< full angle subtended vertically
-    int sample_resolution_x = 1;         ///< at most x*y samples per pixel
+/// The view of the .scn file (manual 2.2): where the camera stands and what it sees, the samples
+/// per pixel and the output matrix.
+struct SceneView : CameraPlacement {
+    int sample_resolution_x = 1;  ///< at most x*y samples per pixel
     int sample_resolution_y = 1;
-    int width = 0;  ///< view area in pixels
-    int height = 0;
     PixelRect window;  ///< the output matrix: the part of the view area to render
+
+    /// The pinhole camera this view describes.
+    Camera camera() const { return Camera::placed(*this); }
 };
 
 /// Polygon marks of -M (manual 2.5).
@@ -104,6 +104,14 @@ struct Scene {
     Vec3 corner_position(const Polygon& p, std::uint32_t k) const {
         return positions[corners[p.first_corner + k]];
     }
+    /// Polygon `polygon` as the geometry routines take it (ray_polygon.h).
+    PolygonView polygon_view(std::uint32_t polygon) const {
+        const Polygon& p = polygons[polygon];
+        return {positions, {corners.data() + p.first_corner, p.corner_count}, p.normal};
+    }
+    /// The normals at polygon `polygon`'s corners (geometry/normals.h): its own with -E, else the
+    /// vertex normals; none when the scene has fewer vertex normals than positions.
+    CornerNormals normals_of(std::uint32_t polygon) const;
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
     SourceLocation origin_of(std::uint32_t polygon) const;
     /// Smallest box around every position; a box of no size at the origin for an empty scene

@@ -68,7 +68,8 @@ Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight&
         target = warn_feeler_target(settings.warn, emitter, light.position, from);
         const bool crosses =
             settings.warn.mode == WarnMode::Thibadeau &&
-            intersect_polygon(Ray{from, target - from}, context.scene, light.polygon, {0.0, 1.0})
+            intersect_polygon(Ray{from, target - from}, context.scene.polygon_view(light.polygon),
+                              {0.0, 1.0})
                 .has_value();
         warn = warn_factor(settings.warn, emitter, normalize(from - target), crosses);
         if (!(warn > 0.0)) {

@@ -1,6 +1,7 @@
 #include "rt/shading/surface_point.h"
 
 #include "rt/geometry/normals.h"
+#include "rt/scene/shape_normal.h"
 
 namespace rt {
 
@@ -14,7 +15,7 @@ Vec3 outward_shading_normal(const Scene& scene, std::uint32_t id, const Vec3& po
                             p.normal);
     }
     if (p.smooth) {
-        return interpolated_normal(scene, id, point);
+        return interpolated_normal(scene.polygon_view(id), scene.normals_of(id), point);
     }
     return p.normal;
 }

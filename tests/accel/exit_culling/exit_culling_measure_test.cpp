@@ -7,7 +7,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/exit_culling/exit_culling.h"
-#include "rt/scene/pinhole_view.h"
+#include "rt/geometry/camera.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -48,7 +48,7 @@ TEST(ExitCullingMeasure, DISABLED_TwocubesEyeRays) {
     const Scene scene = load_twocubes();
     const BruteForce brute(scene);
     const ExitCulling culling(scene, make_brute_force(scene));
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera view = scene.view.camera();
     Tally tally;
     for (int y = 0; y < view.height; ++y) {
         for (int x = 0; x < view.width; ++x) {

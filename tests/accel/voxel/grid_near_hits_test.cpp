@@ -112,7 +112,8 @@ TEST(NearHitsAcceptedAtOnce, AndNoFudgeReturnOnlyRealHits) {
                 const std::optional<Hit> got = accel->closest_hit(c.ray, c.t, counters);
                 ASSERT_EQ(want.has_value(), got.has_value()) << describe(c);
                 if (got) {
-                    EXPECT_EQ(intersect_polygon(c.ray, scene, got->polygon, c.t), got->t);
+                    EXPECT_EQ(intersect_polygon(c.ray, scene.polygon_view(got->polygon), c.t),
+                              got->t);
                     EXPECT_GE(got->t, want->t);
                     farther += got->t > want->t ? 1 : 0;
                 }

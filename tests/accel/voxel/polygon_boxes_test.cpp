@@ -143,9 +143,9 @@ TEST(TriangleLook, NeverSkipsATriangleTheExactTestHits) {
         Ray ray = random_ray(rng);
         ray.direction = target - ray.origin;
         TriangleProbe probe(ray, boxes.scale());
-        const bool hit =
-            intersect_polygon(ray, scene, id, Interval{-kBeyondAnyScene, kBeyondAnyScene})
-                .has_value();
+        const bool hit = intersect_polygon(ray, scene.polygon_view(id),
+                                           Interval{-kBeyondAnyScene, kBeyondAnyScene})
+                             .has_value();
         const bool kept = boxes.triangle_may_be_hit(probe, id);
         if (hit) {
             ASSERT_TRUE(kept) << "case " << i << ", polygon " << id;

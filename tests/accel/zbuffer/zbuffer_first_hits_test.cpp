@@ -34,7 +34,7 @@ private:
     BruteForce brute_;
 };
 
-struct Camera {
+struct CameraCase {
     std::string name;
     Vec3 eye;
     Vec3 look;
@@ -45,7 +45,7 @@ struct Camera {
     int height = 36;
 };
 
-void set_view(Scene& scene, const Camera& c) {
+void set_view(Scene& scene, const CameraCase& c) {
     scene.view.eye = c.eye;
     scene.view.look = c.look;
     scene.view.screen_distance = c.screen_distance;
@@ -61,7 +61,7 @@ constexpr double kOffsets[] = {0.0, 0.5, 1e-12, 1.0 - 1e-12};
 
 // Compares every sample of every pixel (and the view area's far edges) with brute force.
 void expect_brute_force_answers(const Scene& scene, int step = 1) {
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera view = scene.view.camera();
     const BruteForce brute(scene);
     const CountingFallback fallback(scene);
     const auto zbuffer = make_zbuffer_first_hits(scene, view, fallback);
@@ -103,11 +103,12 @@ TEST(ZBufferFirstHits, TwocubesAsTheManualViewsIt) {
 
 TEST(ZBufferFirstHits, TwocubesFromCloseByAndWide) {
     Scene scene = load_twocubes();
-    for (const Camera& c : {Camera{"close", {3, 1, -6}, {0, 0, 0}, 2.0, 90.0, 70.0},
-                            Camera{"down", {0.5, 30, 0.5}, {0.5, 0, 0.5}, 5.0, 60.0, 60.0},
-                            Camera{"straight down", {0, 30, 0}, {0, 0, 0}, 5.0, 60.0, 60.0},
-                            Camera{"very wide", {1, 0, -4}, {0, 0, 0}, 0.5, 170.0, 160.0},
-                            Camera{"on the floor", {-1, -3, -9}, {0, -3, 0}, 1.0, 60.0, 40.0}}) {
+    for (const CameraCase& c :
+         {CameraCase{"close", {3, 1, -6}, {0, 0, 0}, 2.0, 90.0, 70.0},
+          CameraCase{"down", {0.5, 30, 0.5}, {0.5, 0, 0.5}, 5.0, 60.0, 60.0},
+          CameraCase{"straight down", {0, 30, 0}, {0, 0, 0}, 5.0, 60.0, 60.0},
+          CameraCase{"very wide", {1, 0, -4}, {0, 0, 0}, 0.5, 170.0, 160.0},
+          CameraCase{"on the floor", {-1, -3, -9}, {0, -3, 0}, 1.0, 60.0, 40.0}}) {
         SCOPED_TRACE(c.name);
         set_view(scene, c);
         expect_brute_force_answers(scene);
@@ -154,7 +155,7 @@ TEST(ZBufferFirstHits, EyeInThePlaneOfAPolygon) {
 
 TEST(ZBufferFirstHits, OtherRaysGoToTheFallback) {
     const Scene scene = load_twocubes();
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera view = scene.view.camera();
     const CountingFallback fallback(scene);
     const BruteForce brute(scene);
     const auto zbuffer = make_zbuffer_first_hits(scene, view, fallback);
@@ -185,7 +186,7 @@ TEST(ZBufferFirstHits, OtherRaysGoToTheFallback) {
 
 TEST(ZBufferFirstHits, OverTheMemoryLimitEveryRayGoesToTheFallback) {
     const Scene scene = load_twocubes();
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera view = scene.view.camera();
     const CountingFallback fallback(scene);
     ZBufferSettings settings;
     settings.max_bytes = 1000;
@@ -206,7 +207,7 @@ TEST(ZBufferFirstHits, OverTheMemoryLimitEveryRayGoesToTheFallback) {
 TEST(ZBufferFirstHits, StatisticsDescribeTheBuffer) {
     const Scene scene = load_twocubes();
     const BruteForce brute(scene);
-    const auto zbuffer = make_zbuffer_first_hits(scene, PinholeView::from_view(scene.view), brute);
+    const auto zbuffer = make_zbuffer_first_hits(scene, scene.view.camera(), brute);
     const ZBufferStatistics statistics = zbuffer->statistics();
     EXPECT_TRUE(statistics.active);
     EXPECT_EQ(statistics.polygons_in_view, scene.polygons.size());

@@ -17,7 +17,7 @@ namespace {
 
 TEST(ZBufferMeasure, DISABLED_TwocubesEyeRays) {
     const Scene scene = load_twocubes();
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera view = scene.view.camera();
     const BruteForce brute(scene);
     const auto zbuffer = make_zbuffer_first_hits(scene, view, brute);
     TraceCounters brute_counters;

@@ -11,7 +11,7 @@
 #include "rt/accel/bvh/bvh.h"
 #include "rt/accel/exit_culling/exit_culling.h"
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
-#include "rt/scene/pinhole_view.h"
+#include "rt/geometry/camera.h"
 
 #include <gtest/gtest.h>
 
@@ -75,7 +75,7 @@ Scene tube_in_a_box() {
 // the tube's walls, eye rays from the screen, and rays from polygons anywhere.
 TEST(ZBufferRaysFromPolygons, ZBufferOverExitCullingGivesBruteForceAnswers) {
     const Scene scene = tube_in_a_box();
-    const PinholeView view = PinholeView::from_view(scene.view);
+    const Camera view = scene.view.camera();
     const Counting below(std::make_unique<ExitCulling>(scene, make_bvh(scene)));
     const auto zbuffer = make_zbuffer_first_hits(scene, view, below);
     ASSERT_TRUE(zbuffer->statistics().active) << zbuffer->statistics().inactive_reason;

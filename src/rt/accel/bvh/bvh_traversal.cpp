@@ -30,16 +30,17 @@ struct StackEntry {
 };
 
 // The exact test of the polygon of a packet's lane: a triangle's corners come from the packet's
-// copy of its indices (one memory access fewer than the Scene form, the same arithmetic).
+// copy of its indices (one memory access fewer than Scene::polygon_view, the same arithmetic).
 std::optional<double> exact_hit(const RaySpace& space, const Scene& scene,
                                 const bvh::TrianglePacket& packet, int lane, std::uint32_t id,
                                 Interval t) {
     if (packet.position[0][lane] != bvh::kNotTriangle) {
         const std::uint32_t ids[3] = {packet.position[0][lane], packet.position[1][lane],
                                       packet.position[2][lane]};
-        return intersect_polygon(space, scene.positions, ids, 3, scene.polygons[id].normal, t);
+        return intersect_polygon(space,
+                                 PolygonView{scene.positions, ids, scene.polygons[id].normal}, t);
     }
-    return intersect_polygon(space, scene, id, t);
+    return intersect_polygon(space, scene.polygon_view(id), t);
 }
 
 // The nearest hit so far, in brute force's order (hit.h). The ray's exact RaySpace is prepared on
@@ -58,9 +59,9 @@ public:
             space_.emplace(ray_);
         }
         const Interval search = best_.search_interval();
-        const std::optional<double> hit = packet != nullptr
-                                              ? exact_hit(*space_, scene, *packet, lane, id, search)
-                                              : intersect_polygon(*space_, scene, id, search);
+        const std::optional<double> hit =
+            packet != nullptr ? exact_hit(*space_, scene, *packet, lane, id, search)
+                              : intersect_polygon(*space_, scene.polygon_view(id), search);
         if (hit) {
             best_.offer(*hit, id);
         }
@@ -413,7 +414,7 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         if (!space) {
             space.emplace(ray);
         }
-        return intersect_polygon(*space, scene_, id, t).has_value();
+        return intersect_polygon(*space, scene_.polygon_view(id), t).has_value();
     };
     if (!fray.usable) {
         if (!RaySpace(ray).valid()) {

@@ -35,7 +35,7 @@ constexpr double kOnScreen = 1e-6;        ///< pixels an origin may lie outside 
 
 }  // namespace
 
-ItemBuffer::ItemBuffer(const Scene& scene, const PinholeView& view, const ZBufferSettings& settings)
+ItemBuffer::ItemBuffer(const Scene& scene, const Camera& view, const ZBufferSettings& settings)
     : view_(view), max_bytes_(settings.max_bytes) {
     const double s = view.screen_distance;
     if (!(view.width > 0 && view.height > 0 && s > 0.0 && view.half_width > 0.0 &&

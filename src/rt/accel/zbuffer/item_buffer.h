@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/scene/pinhole_view.h"
+#include "rt/geometry/camera.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
@@ -30,7 +30,7 @@ struct EyeRayPixel {
 
 class ItemBuffer {
 public:
-    ItemBuffer(const Scene& scene, const PinholeView& view, const ZBufferSettings& settings);
+    ItemBuffer(const Scene& scene, const Camera& view, const ZBufferSettings& settings);
 
     /// False when the buffer would not fit (see inactive_reason()).
     bool active() const { return active_; }
@@ -64,7 +64,7 @@ private:
     bool fits(std::size_t polygons, std::uint64_t entries);
     void fill(const std::vector<Footprint>& footprints);
 
-    PinholeView view_;
+    Camera view_;
     double near_depth_ = 0.0;       ///< polygons' parts nearer than this are never seen
     double angle_tolerance_ = 0.0;  ///< how far off the eye an eye ray's line may pass, as an angle
     double eye_slack_ = 0.0;        ///< ... and as a distance

@@ -10,8 +10,8 @@ namespace rt {
 
 namespace {
 
-ItemBuffer timed_buffer(const Scene& scene, const PinholeView& view,
-                        const ZBufferSettings& settings, double& seconds) {
+ItemBuffer timed_buffer(const Scene& scene, const Camera& view, const ZBufferSettings& settings,
+                        double& seconds) {
     const auto start = std::chrono::steady_clock::now();
     ItemBuffer buffer(scene, view, settings);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -27,7 +27,7 @@ double lowest_t(double nearest, double from_eye, double direction_length) {
 
 }  // namespace
 
-ZBufferFirstHits::ZBufferFirstHits(const Scene& scene, const PinholeView& view,
+ZBufferFirstHits::ZBufferFirstHits(const Scene& scene, const Camera& view,
                                    const Accelerator& fallback, const ZBufferSettings& settings)
     : scene_(scene),
       fallback_(fallback),
@@ -53,7 +53,7 @@ std::optional<Hit> ZBufferFirstHits::eye_ray_closest_hit(const Ray& ray, Interva
         ++counters.polygon_tests;
         // The same t brute force computes: the interval only decides whether it counts.
         if (const std::optional<double> hit =
-                intersect_polygon(space, scene_, id, nearest.search_interval())) {
+                intersect_polygon(space, scene_.polygon_view(id), nearest.search_interval())) {
             nearest.offer(*hit, id);
         }
     }
@@ -86,8 +86,7 @@ std::vector<std::string> describe(const ZBufferStatistics& s) {
         s.polygons_in_view, s.entries, s.longest_list, s.memory_bytes, 1e3 * s.build_seconds)};
 }
 
-std::unique_ptr<ZBufferFirstHits> make_zbuffer_first_hits(const Scene& scene,
-                                                          const PinholeView& view,
+std::unique_ptr<ZBufferFirstHits> make_zbuffer_first_hits(const Scene& scene, const Camera& view,
                                                           const Accelerator& fallback,
                                                           const ZBufferSettings& settings) {
     return std::make_unique<ZBufferFirstHits>(scene, view, fallback, settings);

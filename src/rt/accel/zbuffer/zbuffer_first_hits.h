@@ -10,7 +10,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/zbuffer/item_buffer.h"
-#include "rt/scene/pinhole_view.h"
+#include "rt/geometry/camera.h"
 
 namespace rt {
 
@@ -31,7 +31,7 @@ std::vector<std::string> describe(const ZBufferStatistics& statistics);
 class ZBufferFirstHits : public Accelerator {
 public:
     /// The scene and the fallback must outlive this.
-    ZBufferFirstHits(const Scene& scene, const PinholeView& view, const Accelerator& fallback,
+    ZBufferFirstHits(const Scene& scene, const Camera& view, const Accelerator& fallback,
                      const ZBufferSettings& settings = {});
 
     std::string_view name() const override { return name_; }
@@ -62,9 +62,8 @@ private:
 };
 
 /// The form the lead wires to --zbuffer: make_zbuffer_first_hits(scene,
-/// PinholeView::from_view(scene.view), *accelerator).
-std::unique_ptr<ZBufferFirstHits> make_zbuffer_first_hits(const Scene& scene,
-                                                          const PinholeView& view,
+/// scene.view.camera(), *accelerator).
+std::unique_ptr<ZBufferFirstHits> make_zbuffer_first_hits(const Scene& scene, const Camera& view,
                                                           const Accelerator& fallback,
                                                           const ZBufferSettings& settings = {});
 

@@ -2,10 +2,10 @@
 // the normal as calculated from the shape's parameters (radius etc.) instead of the normal to the
 // polygon." The shape file does not say which way is out, so each normal is turned to agree with
 // the polygon's outward normal; the radius is not needed for the direction.
+#include "rt/scene/shape_normal.h"
+
 #include <cmath>
 #include <numbers>
-
-#include "rt/geometry/normals.h"
 
 namespace rt {
 

@@ -1,8 +1,8 @@
 // The normals inferred from the -M shapes: sphere, cylinder and cone (manual 2.4).
+#include "rt/scene/shape_normal.h"
+
 #include <cmath>
 #include <numbers>
-
-#include "rt/geometry/normals.h"
 
 #include <gtest/gtest.h>
 

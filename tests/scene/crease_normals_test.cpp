@@ -27,14 +27,17 @@ TEST(CreaseNormals, ABoxKeepsItsEdgesBelowTheAngleAndRoundsThemAbove) {
         }
     }
     // Plain smooth shading: the corner's normal leans toward the diagonal.
-    EXPECT_LT(interpolated_normal(scene, top, near_corner).z, 0.9);
+    EXPECT_LT(interpolated_normal(scene.polygon_view(top), scene.normals_of(top), near_corner).z,
+              0.9);
     // -E below 90 degrees: every corner of the top face keeps the face's normal.
     compute_crease_normals(scene, std::numbers::pi / 4);
-    const Vec3 sharp = interpolated_normal(scene, top, near_corner);
+    const Vec3 sharp =
+        interpolated_normal(scene.polygon_view(top), scene.normals_of(top), near_corner);
     EXPECT_NEAR(sharp.z, 1.0, 1e-12);
     // -E above 90 degrees: the neighbours count again, as without -E.
     compute_crease_normals(scene, std::numbers::pi * 0.6);
-    EXPECT_LT(interpolated_normal(scene, top, near_corner).z, 0.9);
+    EXPECT_LT(interpolated_normal(scene.polygon_view(top), scene.normals_of(top), near_corner).z,
+              0.9);
 }
 
 }  // namespace
