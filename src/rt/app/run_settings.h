@@ -1,6 +1,6 @@
 // What a run derives from the command line and the loaded scene together: the shading settings
-// with -Oi/-O1 applied, and the switches' changes to the scene itself (-E, -K). Shared with programs that drive the renderer
-// themselves (bench/).
+// with -Oi/-O1 applied, and the switches' changes to the scene itself (-E, -K). Shared with
+// programs that drive the renderer themselves (bench/).
 #pragma once
 
 #include "rt/app/options.h"

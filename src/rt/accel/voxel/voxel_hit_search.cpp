@@ -14,8 +14,9 @@ void NearestHitSearch::test(std::span<const std::uint32_t> polygons) {
 }
 
 bool AnyHitSearch::test(std::span<const std::uint32_t> polygons) {
-    return test_each(polygons,
-                     [&](std::uint32_t id) { return intersect_polygon(space_, scene_.polygon_view(id), t_); });
+    return test_each(polygons, [&](std::uint32_t id) {
+        return intersect_polygon(space_, scene_.polygon_view(id), t_);
+    });
 }
 
 }  // namespace rt
