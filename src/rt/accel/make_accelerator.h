@@ -13,9 +13,9 @@ namespace rt {
 /// a method the header does not name, the sizes suggested for the scene's polygon count.
 AccelSettings method_for_scene(const Scene& scene, AccelSettings settings);
 
-/// Builds the method of method_for_scene(scene, settings). The scene must outlive the result.
+/// Builds the method of method_for_scene(scene, asked). The scene must outlive the result.
 /// Throws NotImplementedError for a method not built in (an Embree backend without Embree) and
 /// SettingError for settings it cannot honour.
-std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& settings);
+std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& asked);
 
 }  // namespace rt
