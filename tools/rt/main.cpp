@@ -19,7 +19,13 @@
 
 namespace {
 
-enum ExitCode { kOk = 0, kBadInput = 1, kUsage = 2, kIo = 3, kInternal = 4, kInterrupted = 130 };
+// The exit status, one per kind of failure (the README lists them).
+constexpr int kOk = 0;
+constexpr int kBadInput = 1;
+constexpr int kUsage = 2;
+constexpr int kIo = 3;
+constexpr int kInternal = 4;
+constexpr int kInterrupted = 130;
 
 void print_line(const std::string& line) {
     std::cerr << line << '\n';

@@ -106,7 +106,7 @@ std::filesystem::path resolve_scene_path(const std::string& scene_argument) {
     if (ends_with_scn(scene_argument)) {
         return scene_argument;
     }
-    const std::filesystem::path with_suffix = scene_argument + ".scn";
+    std::filesystem::path with_suffix = scene_argument + ".scn";
     if (std::filesystem::exists(with_suffix)) {
         return with_suffix;
     }

@@ -30,7 +30,7 @@ struct Range {
 // within the margin.
 Range ratio_range(double b0, double b1, double inverse_z0, double inverse_z1) {
     constexpr double kInf = Box3::kInfinity;
-    Range r;
+    Range r{};
     r.lo = b0 >= 0.0 ? b0 * inverse_z1 : (inverse_z0 < kInf ? b0 * inverse_z0 : -kInf);
     r.hi = b1 <= 0.0 ? b1 * inverse_z1 : (inverse_z0 < kInf ? b1 * inverse_z0 : kInf);
     r.lo -= kMargin + kMargin * std::fabs(r.lo);
@@ -66,7 +66,9 @@ DirectionBins::DirectionBins(int side)
                 const Vec3 centre = direction(u0 + 0.5 * step, v0 + 0.5 * step);
                 double radius = 0.0;
                 for (int corner = 0; corner < 4; ++corner) {
-                    const Vec3 c = direction(u0 + (corner & 1) * step, v0 + (corner / 2) * step);
+                    const int corner_column = corner & 1;
+                    const int corner_row = corner >> 1;  // the corners (0,0) (1,0) (0,1) (1,1)
+                    const Vec3 c = direction(u0 + corner_column * step, v0 + corner_row * step);
                     radius = std::max(radius, std::acos(std::clamp(dot(c, centre), -1.0, 1.0)));
                 }
                 centres_.push_back(centre);
@@ -130,7 +132,9 @@ bool DirectionBins::for_each_row_of(const Box3& box, Visit&& visit) const {
         }
         const std::uint16_t mask = row_mask(r);
         for (int row = r.row0; row <= r.row1; ++row) {
-            if (!visit(static_cast<std::size_t>(face * side_ + row), mask)) {
+            if (!visit(static_cast<std::size_t>(face) * static_cast<std::size_t>(side_) +
+                           static_cast<std::size_t>(row),
+                       mask)) {
                 return false;
             }
         }

@@ -69,6 +69,7 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
     }
     std::sort(order.begin(), order.end(), [&](auto a, auto b) { return codes[a] < codes[b]; });
     std::vector<Box3> sorted;
+    sorted.reserve(order.size());
     for (const std::size_t i : order) {
         sorted.push_back(leaves[i]);
     }

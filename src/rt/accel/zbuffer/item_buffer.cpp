@@ -93,7 +93,8 @@ ItemBuffer::ItemBuffer(const Scene& scene, const Camera& view, const ZBufferSett
 bool ItemBuffer::fits(std::size_t polygons, std::uint64_t entries) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(view_.width) * view_.height;
     // Offsets and their fill cursors, the entries, and per polygon its footprint, depth and rank.
-    const double bytes = 8.0 * (static_cast<double>(pixels) + 1.0) + 4.0 * entries +
+    const double bytes = 8.0 * (static_cast<double>(pixels) + 1.0) +
+                         4.0 * static_cast<double>(entries) +
                          static_cast<double>(polygons) * (sizeof(Footprint) + 8.0 + 8.0);
     if (bytes <= static_cast<double>(max_bytes_) && entries < (std::uint64_t{1} << 32)) {
         return true;
