@@ -90,20 +90,24 @@ void OccupiedCells::cell_range(const Box3& box, int first[3], int last[3]) const
 
 void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const {
     for (const PolygonReach& reach : reaches) {
-        if (reach.box.empty()) {
-            continue;
+        if (!reach.box.empty()) {
+            add_reach(reach, cells);
         }
-        int first[3];
-        int last[3];
-        cell_range(reach.box, first, last);
-        for (int z = first[2]; z <= last[2]; ++z) {
-            for (int y = first[1]; y <= last[1]; ++y) {
-                for (int x = first[0]; x <= last[0]; ++x) {
-                    const int cell = x + resolution_ * (y + resolution_ * z);
-                    const Box3 piece = intersection(reach.box, cell_box(cell));
-                    if (!piece.empty() && slab_meets_box(reach, piece)) {
-                        cells[cell].add(piece);
-                    }
+    }
+}
+
+// Grows each cell the reach's slab meets by the part of the reach's box inside that cell.
+void OccupiedCells::add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const {
+    int first[3];
+    int last[3];
+    cell_range(reach.box, first, last);
+    for (int z = first[2]; z <= last[2]; ++z) {
+        for (int y = first[1]; y <= last[1]; ++y) {
+            for (int x = first[0]; x <= last[0]; ++x) {
+                const int cell = x + resolution_ * (y + resolution_ * z);
+                const Box3 piece = intersection(reach.box, cell_box(cell));
+                if (!piece.empty() && slab_meets_box(reach, piece)) {
+                    cells[cell].add(piece);
                 }
             }
         }

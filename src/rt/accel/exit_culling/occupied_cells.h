@@ -55,6 +55,7 @@ private:
     int axis_cell(int axis, double coordinate) const;
     double boundary(int axis, int index) const;
     void fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const;
+    void add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const;
     void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);
 
