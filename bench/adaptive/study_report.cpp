@@ -155,46 +155,44 @@ void print_plans(std::ostream& out, const std::vector<Measured>& runs, double pi
     }
 }
 
+// One row per adaptive plan, one column per seed: ratio(run, uniform's envelope for its seed),
+// empty where the ratio cannot be told.
+template <typename Ratio>
+void print_adaptive_ratios(std::ostream& out, const std::vector<Measured>& runs,
+                           const std::vector<std::uint64_t>& seeds, Ratio ratio) {
+    for (const std::string& plan : plans_of(runs)) {
+        std::vector<std::optional<double>> ratios;
+        for (const std::uint64_t s : seeds) {
+            const Measured* m = find(runs, plan, s);
+            if (!m->plan.adaptive) {
+                break;
+            }
+            ratios.push_back(ratio(*m, envelope(runs, s)));
+        }
+        if (!ratios.empty()) {
+            print_ratio_row(out, plan, ratios);
+        }
+    }
+}
+
 void print_comparisons(std::ostream& out, const std::vector<Measured>& runs) {
     const std::vector<std::uint64_t> seeds = seeds_of(runs);
     print_seed_header(out,
                       "\nAt equal rays: adaptive's error / uniform's (uniform's interpolated on "
                       "log-log axes between its resolutions)",
                       seeds);
-    for (const std::string& plan : plans_of(runs)) {
-        std::vector<std::optional<double>> ratios;
-        for (const std::uint64_t s : seeds) {
-            const Measured* m = find(runs, plan, s);
-            if (!m->plan.adaptive) {
-                break;
-            }
-            const std::optional<double> u =
-                error_at_cost(envelope(runs, s), static_cast<double>(m->spent.rays));
-            ratios.push_back(u ? std::optional<double>(m->error / *u) : std::nullopt);
-        }
-        if (!ratios.empty()) {
-            print_ratio_row(out, plan, ratios);
-        }
-    }
+    print_adaptive_ratios(out, runs, seeds, [](const Measured& m, const auto& uniform) {
+        const std::optional<double> u = error_at_cost(uniform, static_cast<double>(m.spent.rays));
+        return u ? std::optional<double>(m.error / *u) : std::nullopt;
+    });
     print_seed_header(out,
                       "\nAt equal error: adaptive's rays / the rays uniform needs for adaptive's "
                       "error",
                       seeds);
-    for (const std::string& plan : plans_of(runs)) {
-        std::vector<std::optional<double>> ratios;
-        for (const std::uint64_t s : seeds) {
-            const Measured* m = find(runs, plan, s);
-            if (!m->plan.adaptive) {
-                break;
-            }
-            const std::optional<double> u = cost_for_error(envelope(runs, s), m->error);
-            ratios.push_back(u ? std::optional<double>(static_cast<double>(m->spent.rays) / *u)
-                               : std::nullopt);
-        }
-        if (!ratios.empty()) {
-            print_ratio_row(out, plan, ratios);
-        }
-    }
+    print_adaptive_ratios(out, runs, seeds, [](const Measured& m, const auto& uniform) {
+        const std::optional<double> u = cost_for_error(uniform, m.error);
+        return u ? std::optional<double>(static_cast<double>(m.spent.rays) / *u) : std::nullopt;
+    });
     std::vector<std::string> rules;  // the stop rules run at two resolutions or more
     std::map<std::string, int> resolutions;
     for (const std::string& plan : plans_of(runs)) {
