@@ -128,7 +128,8 @@ void add_study_options(CLI::App& app, StudyArguments& out) {
            },
            "-Dx plans NxM,... (default 2x2 to 6x6); repeats add up")
         ->type_name("LIST")
-        ->delimiter(',');
+        ->delimiter(',')
+        ->allow_extra_args(false);
     app.add_option_function<std::vector<std::string>>(
            "--adaptive",
            [&out](const std::vector<std::string>& texts) {
@@ -139,7 +140,8 @@ void add_study_options(CLI::App& app, StudyArguments& out) {
            "adaptive plans NxM@var,... with -Xp and -Xr var (prob 0.2), or\n"
            "NxM@pvar/rvar:prob (default 4x4 at var 0.8 to 0.025); repeats add up")
         ->type_name("LIST")
-        ->delimiter(',');
+        ->delimiter(',')
+        ->allow_extra_args(false);
     app.add_option("--csv", out.csv, "one row per plan and seed")->type_name("FILE");
 }
 

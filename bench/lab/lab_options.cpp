@@ -59,11 +59,13 @@ void add_lab_options(CLI::App& app, LabOptions& o) {
     app.add_option("--sizes", o.sizes, "triangle counts, e.g. 1k,10k,100k,1M (the default)")
         ->type_name("LIST")
         ->delimiter(',')
+        ->allow_extra_args(false)
         ->transform(count())
         ->trigger_on_parse();
     app.add_option("--meshes", o.meshes, "sphere,soup,twocubes (the default)")
         ->type_name("LIST")
         ->delimiter(',')
+        ->allow_extra_args(false)
         ->check(CLI::IsMember({"sphere", "soup", "twocubes"}).description(""))
         ->trigger_on_parse();
     app.add_option_function<std::vector<std::string>>(
@@ -77,6 +79,7 @@ void add_lab_options(CLI::App& app, LabOptions& o) {
            "brute,octree,seads,bvh,embree (the default; missing ones are skipped)")
         ->type_name("LIST")
         ->delimiter(',')
+        ->allow_extra_args(false)
         ->check(accel_name())
         ->trigger_on_parse();
     app.add_option("--threads", o.threads, "threads for the all-cores runs (default: all)")

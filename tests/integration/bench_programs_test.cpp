@@ -176,6 +176,16 @@ TEST_F(BenchProgram, AdaptiveStudyReadsEveryOption) {
     EXPECT_TRUE(csv[4].starts_with("adaptive 2x2 @0.1/0.2:0.3,2,2,1,0.1,0.2,0.3,1,")) << csv[4];
 }
 
+// A list is one word, so the scene may follow it at once (bench/README.md's example does).
+TEST_F(BenchProgram, AdaptiveStudyListTakesOneWordBeforeTheScene) {
+    const ProgramResult r =
+        run("rt_adaptive_study",
+            {"--seeds", "1", "--reference", "2x2", "--reference-renders", "2", "--window",
+             "100,100,101,100", "--uniform", "1x1", "--adaptive", "2x2@0.5", twocubes()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(contains(r.out, "adaptive 2x2 @0.5")) << r.out;
+}
+
 TEST_F(BenchProgram, AdaptiveStudyRefusesBadCommandLines) {
     const std::string study = "rt_adaptive_study";
     const auto refused = [&](const std::vector<std::string>& args, const std::string& message) {
