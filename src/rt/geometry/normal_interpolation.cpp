@@ -135,10 +135,14 @@ Vec3 interpolated_normal(const PolygonView& polygon, const CornerNormals& normal
     const std::span<double> weights = weight_space.get();
     polygon_weights(polygon, point, weights);
     const bool per_corner = !normals.per_corner.empty();
+    const bool per_vertex = !normals.per_vertex.empty();
     Vec3 blended;
     for (std::uint32_t k = 0; k < polygon.corner_count(); ++k) {
-        const Vec3& n =
-            per_corner ? normals.per_corner[k] : normals.per_vertex[polygon.corner_ids[k]];
+        // A zero corner normal is "none given": the vertex normal stands in.
+        const bool own = per_corner && normals.per_corner[k] != Vec3{};
+        const Vec3 n = own          ? normals.per_corner[k]
+                       : per_vertex ? normals.per_vertex[polygon.corner_ids[k]]
+                                    : Vec3{};
         blended += n * weights[k];
     }
     const double len = length(blended);

@@ -20,9 +20,9 @@ struct PolygonView {
     const Vec3& corner(std::uint32_t k) const { return positions[corner_ids[k]]; }
 };
 
-/// The normals at a polygon's corners: its own, one per corner in loop order (`per_corner`), or
-/// else the ones shared per vertex, indexed like the positions (`per_vertex`); both empty when
-/// there are none.
+/// The normals at a polygon's corners: its own, one per corner in loop order (`per_corner`), where
+/// they are not zero, else the ones shared per vertex, indexed like the positions (`per_vertex`);
+/// both empty when there are none.
 struct CornerNormals {
     std::span<const Vec3> per_vertex;
     std::span<const Vec3> per_corner;

@@ -36,6 +36,8 @@ void compute_crease_normals(Scene& scene, double angle) {
         }
     }
     const double cos_limit = std::cos(angle);
+    // A model file's normals stay: the file has decided its creases itself.
+    const std::vector<Vec3>& given = scene.model_normals;
     scene.corner_normals.assign(scene.corners.size(), Vec3{});
     for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
         const Polygon& p = scene.polygons[id];
@@ -43,6 +45,10 @@ void compute_crease_normals(Scene& scene, double angle) {
             continue;
         }
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+            if (!given.empty() && given[p.first_corner + k] != Vec3{}) {
+                scene.corner_normals[p.first_corner + k] = given[p.first_corner + k];
+                continue;
+            }
             const std::uint32_t position = scene.corners[p.first_corner + k];
             Vec3 sum;
             for (std::uint32_t i = first[position]; i < first[position + 1]; ++i) {

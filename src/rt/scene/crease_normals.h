@@ -10,7 +10,7 @@
 namespace rt {
 
 /// Fills scene.corner_normals (one per entry of scene.corners; zero for corners of polygons that
-/// are not smooth). `angle` in radians.
+/// are not smooth). Where scene.model_normals has a normal, it is kept. `angle` in radians.
 void compute_crease_normals(Scene& scene, double angle);
 
 }  // namespace rt

@@ -93,9 +93,14 @@ struct Scene {
     std::vector<Attribute> attributes;
     std::vector<Shape> shapes;
     std::vector<OpticalSurface> surfaces;
-    std::vector<Vec3> positions;         ///< world-space vertices, shared by neighbours
-    std::vector<Vec3> vertex_normals;    ///< per position: averaged over its smooth polygons
-    std::vector<Vec3> corner_normals;    ///< per corner, with -E only: overrides vertex_normals
+    std::vector<Vec3> positions;       ///< world-space vertices, shared by neighbours
+    std::vector<Vec3> vertex_normals;  ///< per position: averaged over its smooth polygons
+    /// Per corner, or empty: model_normals, and with -E the crease normals of the other corners of
+    /// smooth polygons. A non-zero entry overrides vertex_normals at that corner.
+    std::vector<Vec3> corner_normals;
+    /// Per corner, or empty: the normals a model file (filetype 3) gives its smooth polygons,
+    /// placed in the world; zero where it gives none.
+    std::vector<Vec3> model_normals;
     std::vector<std::uint32_t> corners;  ///< polygon corners in loop order, into positions
     std::vector<Polygon> polygons;
     std::vector<SourceRef> polygon_origin;  ///< per polygon
@@ -109,8 +114,9 @@ struct Scene {
         const Polygon& p = polygons[polygon];
         return {positions, {corners.data() + p.first_corner, p.corner_count}, p.normal};
     }
-    /// The normals at polygon `polygon`'s corners (geometry/normals.h): its own with -E, else the
-    /// vertex normals; none when the scene has fewer vertex normals than positions.
+    /// The normals at polygon `polygon`'s corners (geometry/normals.h): its own where it has them
+    /// (a model file's, -E's), else the vertex normals; none when the scene has fewer vertex
+    /// normals than positions.
     CornerNormals normals_of(std::uint32_t polygon) const;
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
     SourceLocation origin_of(std::uint32_t polygon) const;

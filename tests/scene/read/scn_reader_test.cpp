@@ -278,8 +278,8 @@ TEST(ScnReader, EntityErrors) {
               "s.scn:18: expected the entity count (a whole number), found 'three'");
     EXPECT_EQ(entities("$ 2\n$ 1\n$ 1 12 0 cube 3 2 0 2 0 20 0\n"),
               "s.scn:20: expected the optical surface count of entity 2, found end of file");
-    EXPECT_EQ(entities("$ 1\n$ 1\n$ 1 12 3 cube 3 2 0 2 0 20 0\n"),
-              "s.scn:20: expected the filetype (0 to 2), found '3'");
+    EXPECT_EQ(entities("$ 1\n$ 1\n$ 1 12 4 cube 3 2 0 2 0 20 0\n"),
+              "s.scn:20: expected the filetype (0 to 3), found '4'");
     EXPECT_EQ(entities("$ 1\n$ 1\n$ 1 12 0 cube 0 2 0 2 0 20 0\n"),
               "s.scn:20: the scale of optical surface 'cube' must not be 0");
     EXPECT_EQ(entities("$ 1\n$ 1\n$ 1 12 0 cube 3 2 0 2 0 20\n"),

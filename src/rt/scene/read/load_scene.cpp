@@ -91,8 +91,7 @@ void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path&
                                   s.file + "' (" + path.string() + "), filetype " +
                                   std::to_string(s.filetype));
             }
-            const SourceText text = read_named_file(path, "optical surface file", s.file, s.where);
-            return read_optical_surface(text, s.filetype, dialect, diagnostics);
+            return read_optical_surface(path, s, dialect, diagnostics);
         });
         builder.add_surface(entry, mesh, file);
         cache.done_with(s);

@@ -112,8 +112,24 @@ void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
     for (const std::uint32_t vertex : loop) {
         scene_.corners.push_back(position_index(placing, vertex));
     }
+    if (out.smooth && !placing.mesh.corner_normals.empty()) {
+        add_corner_normals(placing, polygon, out.first_corner);
+    }
     scene_.polygons.push_back(out);
     scene_.polygon_origin.push_back({placing.file, static_cast<std::uint32_t>(polygon.line)});
+}
+
+// A model file's normals, placed like the polygon; the corners before them that have none get
+// zero, which defers to the vertex normals (Scene::model_normals).
+void SceneBuilder::add_corner_normals(const Placing& placing, const MeshPolygon& polygon,
+                                      std::uint32_t first_corner) {
+    scene_.model_normals.resize(first_corner, Vec3{});
+    for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
+        const Vec3 n =
+            placing.transform.normal(placing.mesh.corner_normals[polygon.first_corner + k]);
+        const double l = length(n);
+        scene_.model_normals.push_back(l > 0 ? n / l : Vec3{});
+    }
 }
 
 std::uint32_t SceneBuilder::attribute_index(const Placing& placing,

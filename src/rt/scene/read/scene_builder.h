@@ -32,6 +32,8 @@ private:
     struct Placing;  // the state of one add_surface call
 
     void add_polygon(Placing& placing, const MeshPolygon& polygon);
+    void add_corner_normals(const Placing& placing, const MeshPolygon& polygon,
+                            std::uint32_t first_corner);
     std::uint32_t attribute_index(const Placing& placing, const MeshPolygon& polygon) const;
     std::int32_t shape_index(Placing& placing, const MeshPolygon& polygon);
     std::uint32_t position_index(Placing& placing, std::uint32_t vertex);

@@ -29,6 +29,10 @@ void compute_vertex_normals(Scene& scene) {
 
 void SceneBuilder::finish(const SourceLocation& eye_at) {
     compute_vertex_normals(scene_);
+    if (!scene_.model_normals.empty()) {
+        scene_.model_normals.resize(scene_.corners.size(), Vec3{});  // the last corners' zeros
+        scene_.corner_normals = scene_.model_normals;
+    }
     SceneView& view = scene_.view;
     if (scene_.polygons.empty()) {
         diagnostics_.warn(scene_.source_files.front() + ": the scene has no polygons");

@@ -49,7 +49,7 @@ void read_surface_fields(ItemStream& scn, const ReaderDialect& dialect, ScnSurfa
     integer_from(scn.source(), first, "the optical surface's index number");  // read, ignored
     o.attribute_number = static_cast<long>(scn.integer("the optical surface's attribute number"));
     o.filetype =
-        static_cast<int>(integer_in(scn.source(), scn.take("the filetype"), "the filetype", 0, 2));
+        static_cast<int>(integer_in(scn.source(), scn.take("the filetype"), "the filetype", 0, 3));
     if (dialect.smooth_shade_field) {
         const std::string what = "the smooth-shade field of -Po/-Pt";
         o.smooth_shaded = integer_in(scn.source(), scn.take(what), what, 0, 1) == 1;

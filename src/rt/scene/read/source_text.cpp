@@ -51,6 +51,21 @@ bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::stri
     return true;
 }
 
+// Whether the file can be opened, or why not.
+bool can_open(const std::filesystem::path& path, std::string& reason) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        reason = errno_reason(EISDIR);
+        return false;
+    }
+    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) {
+        reason = errno_reason(errno);
+        return false;
+    }
+    return true;
+}
+
 bool is_forbidden_control(unsigned char c) {
     const bool blank = c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
     return (c < 0x20 && !blank) || c == 0x7f;
@@ -108,6 +123,15 @@ SourceText read_named_file(const std::filesystem::path& path, const std::string&
     }
     check_is_text(text);
     return text;
+}
+
+void check_named_file(const std::filesystem::path& path, const std::string& kind,
+                      const std::string& written, const SourceLocation& named_at) {
+    std::string reason = "larger than the 1 GiB limit for input files";
+    if (oversized(path) || !can_open(path, reason)) {
+        throw InputError(named_at, "cannot open " + kind + " '" + written + "' (" + path.string() +
+                                       "): " + reason);
+    }
 }
 
 }  // namespace rt

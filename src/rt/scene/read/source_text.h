@@ -26,4 +26,9 @@ SourceText read_scene_file(const std::filesystem::path& path);
 SourceText read_named_file(const std::filesystem::path& path, const std::string& kind,
                            const std::string& written, const SourceLocation& named_at);
 
+/// Checks, with read_named_file's message, that a file the .scn names can be opened and is within
+/// the size limit, without reading it: for the binary formats a library reads (model files).
+void check_named_file(const std::filesystem::path& path, const std::string& kind,
+                      const std::string& written, const SourceLocation& named_at);
+
 }  // namespace rt

@@ -1,10 +1,13 @@
-// An optical surface file as read, before placement: what the three filetypes (manual 2.5) have
-// in common. Object-space coordinates; polygons are loops of vertex indices.
+// An optical surface file as read, before placement: what the filetypes (manual 2.5, and model
+// files) have in common. Object-space coordinates; polygons are loops of vertex indices.
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "rt/core/rgb.h"
 #include "rt/core/vec3.h"
 #include "rt/scene/scene.h"
 
@@ -21,10 +24,20 @@ struct MeshPolygon {
     int line = 0;            ///< where it is defined
 };
 
+/// A material a model file defines; its place in SurfaceMesh::materials is its attribute offset.
+struct MeshMaterial {
+    std::string name;
+    std::optional<Rgb> diffuse;  ///< the file's diffuse colour, if it gives one
+};
+
 struct SurfaceMesh {
     std::vector<Vec3> vertices;
     std::vector<std::uint32_t> corners;  ///< into vertices, loop order
     std::vector<MeshPolygon> polygons;
+    /// Model files only: the file's normal at each entry of `corners` (zero where it gives none),
+    /// or empty when it gives none at all.
+    std::vector<Vec3> corner_normals;
+    std::vector<MeshMaterial> materials;  ///< model files only
 
     /// Appends a polygon whose corners are the given vertex indices.
     void add_polygon(MeshPolygon polygon, const std::vector<std::uint32_t>& loop) {

@@ -1,0 +1,20 @@
+// Assimp's PLY and OFF readers reserve memory for the element counts their headers promise: a
+// 200-byte file claiming 400 million vertices makes them take gigabytes and a minute before they
+// fail. These checks refuse such a header first, against the file's size and the reader limits.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace rt {
+
+/// Checks the header of a PLY file (`bytes` is its start, at least up to end_header if the file
+/// has one; `file_size` its whole size). Throws InputError "name:line: ..." at the element line
+/// whose count cannot fit. A header it cannot make sense of is left to Assimp to refuse.
+void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name);
+
+/// The same for an OFF file: the vertex and face counts after the optional OFF keyword.
+void check_off_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name);
+
+}  // namespace rt

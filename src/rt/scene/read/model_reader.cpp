@@ -1,0 +1,334 @@
+#include "rt/scene/read/model_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+
+#include "rt/scene/read/field_reader.h"
+#include "rt/scene/read/model_header_check.h"
+#include "rt/scene/read/model_mesh_check.h"
+#include "rt/scene/read/reader_limits.h"
+#include "rt/scene/read/source_text.h"
+
+#include <fmt/format.h>
+
+#include <assimp/DefaultLogger.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
+#include <assimp/material.h>
+#include <assimp/scene.h>
+
+namespace rt {
+
+namespace {
+
+// Assimp's logger is one per process: model files are read one at a time.
+std::mutex assimp_mutex;
+
+// Keeps what Assimp logs (errors and warnings) instead of letting it print, so that its
+// complaints about a file it still reads (OFF: "Vertex index is out of range") become warnings.
+class AssimpLog {
+public:
+    AssimpLog() {
+        Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+        // The logger owns and deletes the stream.
+        Assimp::DefaultLogger::get()->attachStream(new Stream(messages_),
+                                                   Assimp::Logger::Err | Assimp::Logger::Warn);
+    }
+    ~AssimpLog() { Assimp::DefaultLogger::kill(); }
+    AssimpLog(const AssimpLog&) = delete;
+    AssimpLog& operator=(const AssimpLog&) = delete;
+    const std::vector<std::string>& messages() const { return messages_; }
+
+private:
+    class Stream : public Assimp::LogStream {
+    public:
+        explicit Stream(std::vector<std::string>& out) : out_(out) {}
+        void write(const char* message) override {
+            std::string m(message);
+            // "Error, T0: OFF: Vertex index is out of range\n" -> "OFF: Vertex index ..."
+            if (const std::size_t at = m.find(": "); at != std::string::npos && at < 20) {
+                m.erase(0, at + 2);
+            }
+            while (!m.empty() && (m.back() == '\n' || m.back() == '\r')) {
+                m.pop_back();
+            }
+            if (std::find(out_.begin(), out_.end(), m) == out_.end()) {
+                out_.push_back(m);
+            }
+        }
+
+    private:
+        std::vector<std::string>& out_;
+    };
+    std::vector<std::string> messages_;
+};
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+// PLY and OFF headers are checked before Assimp trusts their counts.
+void check_header(const std::filesystem::path& path, const std::string& ext,
+                  const std::string& name) {
+    if (ext != ".ply" && ext != ".off") {
+        return;
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::string head(64 * 1024, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    const std::uintmax_t size = std::filesystem::file_size(path);
+    if (ext == ".ply") {
+        check_ply_header(head, size, name);
+    } else {
+        check_off_header(head, size, name);
+    }
+}
+
+// Attribute offsets per Assimp material: the file's own materials count from 0 in Assimp's order;
+// the stand-in Assimp adds for faces that name none takes offset 0 and no place (OBJ and STL call
+// it DefaultMaterial, PLY and OFF leave it unnamed, glTF appends it unnamed after the others).
+std::vector<long> material_offsets(const aiScene& scene, bool gltf, SurfaceMesh& mesh) {
+    std::vector<long> offsets(scene.mNumMaterials, 0);
+    for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
+        const aiMaterial& m = *scene.mMaterials[i];
+        const std::string name = m.GetName().C_Str();
+        const bool stand_in =
+            gltf ? i + 1 == scene.mNumMaterials : name.empty() || name == AI_DEFAULT_MATERIAL_NAME;
+        if (stand_in) {
+            continue;
+        }
+        offsets[i] = static_cast<long>(mesh.materials.size());
+        MeshMaterial material{name, std::nullopt};
+        if (aiColor3D c; m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == aiReturn_SUCCESS) {
+            material.diffuse = Rgb{c.r, c.g, c.b};
+        }
+        mesh.materials.push_back(material);
+    }
+    return offsets;
+}
+
+// A node's transform in double precision (Assimp's are float): points and normals.
+struct NodeTransform {
+    double m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    double normal[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // inverse transpose of the 3x3
+    bool mirrors = false;                                     // determinant < 0: loops reverse
+
+    NodeTransform then(const aiMatrix4x4& local) const {
+        NodeTransform out;
+        const double l[3][4] = {{local.a1, local.a2, local.a3, local.a4},
+                                {local.b1, local.b2, local.b3, local.b4},
+                                {local.c1, local.c2, local.c3, local.c4}};
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 4; ++c) {
+                out.m[r][c] = m[r][0] * l[0][c] + m[r][1] * l[1][c] + m[r][2] * l[2][c] +
+                              (c == 3 ? m[r][3] : 0.0);
+            }
+        }
+        const auto& a = out.m;
+        const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+        out.mirrors = det < 0;
+        // The cofactor matrix is the inverse transpose times the determinant; the normal is
+        // normalised later, so only the determinant's sign matters.
+        const double s = det < 0 ? -1.0 : 1.0;
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) {
+                const int r1 = (r + 1) % 3;
+                const int r2 = (r + 2) % 3;
+                const int c1 = (c + 1) % 3;
+                const int c2 = (c + 2) % 3;
+                out.normal[r][c] = s * (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]);
+            }
+        }
+        return out;
+    }
+    Vec3 point(const aiVector3D& p) const {
+        return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+                m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+                m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+    }
+    Vec3 direction(const aiVector3D& n) const {
+        const Vec3 v{normal[0][0] * n.x + normal[0][1] * n.y + normal[0][2] * n.z,
+                     normal[1][0] * n.x + normal[1][1] * n.y + normal[1][2] * n.z,
+                     normal[2][0] * n.x + normal[2][1] * n.y + normal[2][2] * n.z};
+        const double l = length(v);
+        return l > 0 && std::isfinite(l) ? v / l : Vec3{};
+    }
+};
+
+// Walks Assimp's node tree, placing each mesh a node names with the node's accumulated transform
+// (glTF places meshes by nodes; OBJ, PLY, STL and OFF have one identity node).
+class ModelFlattener {
+public:
+    ModelFlattener(const aiScene& scene, std::string name, bool gltf)
+        : scene_(scene), name_(std::move(name)) {
+        offsets_ = material_offsets(scene, gltf, mesh_);
+    }
+
+    SurfaceMesh flatten() {
+        add_node(*scene_.mRootNode, NodeTransform{}, 0);
+        return std::move(mesh_);
+    }
+    /// Faces of fewer than 3 corners (points and lines) are not optical surfaces.
+    long short_faces() const { return short_faces_; }
+
+private:
+    void add_node(const aiNode& node, const NodeTransform& parent, int depth);
+    void add_mesh(const aiMesh& m, const NodeTransform& t);
+    InputError error(const std::string& message) const { return {{name_, 0, 0}, message}; }
+
+    const aiScene& scene_;
+    std::string name_;
+    SurfaceMesh mesh_;
+    std::vector<long> offsets_;
+    long faces_seen_ = 0;
+    long short_faces_ = 0;
+    bool any_normals_ = false;
+};
+
+void ModelFlattener::add_node(const aiNode& node, const NodeTransform& parent, int depth) {
+    if (depth > 1000) {
+        throw error("the model's nodes nest more than 1000 deep");
+    }
+    const NodeTransform t = parent.then(node.mTransformation);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+        if (node.mMeshes[i] >= scene_.mNumMeshes) {
+            throw error(fmt::format("node '{}' names mesh {}, but the model has {}",
+                                    node.mName.C_Str(), node.mMeshes[i], scene_.mNumMeshes));
+        }
+        add_mesh(*scene_.mMeshes[node.mMeshes[i]], t);
+    }
+    for (unsigned i = 0; i < node.mNumChildren; ++i) {
+        add_node(*node.mChildren[i], t, depth + 1);
+    }
+}
+
+void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
+    if (mesh_.vertices.size() + m.mNumVertices > static_cast<std::size_t>(kMaxItemsPerFile) ||
+        static_cast<std::int64_t>(mesh_.polygons.size()) + m.mNumFaces > kMaxItemsPerFile) {
+        throw error(
+            fmt::format("the model has more than {} vertices or polygons", kMaxItemsPerFile));
+    }
+    if (m.mMaterialIndex >= offsets_.size()) {
+        throw error(fmt::format("mesh '{}' uses material {}, but the model has {}", m.mName.C_Str(),
+                                m.mMaterialIndex, offsets_.size()));
+    }
+    const auto base = static_cast<std::uint32_t>(mesh_.vertices.size());
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+        mesh_.vertices.push_back(t.point(m.mVertices[v]));
+    }
+    const bool normals = m.HasNormals();
+    std::vector<std::uint32_t> loop;
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+        const aiFace& face = m.mFaces[f];
+        const long number = faces_seen_++;
+        if (face.mNumIndices < 3) {
+            ++short_faces_;
+            continue;
+        }
+        if (face.mNumIndices > kMaxEdgesPerPolygon) {
+            throw error(fmt::format("polygon {} has {} corners, more than the limit of {}", number,
+                                    face.mNumIndices, kMaxEdgesPerPolygon));
+        }
+        MeshPolygon p;
+        p.number = number;
+        p.attribute_offset = offsets_[m.mMaterialIndex];
+        loop.clear();
+        for (unsigned k = 0; k < face.mNumIndices; ++k) {
+            // A mirroring transform turns the loop's sense round; reversing keeps it outward.
+            const unsigned i = face.mIndices[t.mirrors ? face.mNumIndices - 1 - k : k];
+            if (i >= m.mNumVertices) {
+                throw error(
+                    fmt::format("polygon {} refers to vertex {}, but its mesh has {} "
+                                "vertices (numbered from 0)",
+                                number, i, m.mNumVertices));
+            }
+            loop.push_back(base + i);
+            const Vec3 n = normals ? t.direction(m.mNormals[i]) : Vec3{};
+            p.outward += n;  // the side the file's normals point to is outside
+            if (normals && !any_normals_) {
+                any_normals_ = true;
+                mesh_.corner_normals.assign(mesh_.corners.size(), Vec3{});
+            }
+            if (any_normals_) {
+                mesh_.corner_normals.push_back(n);
+            }
+        }
+        mesh_.add_polygon(p, loop);
+    }
+}
+
+const aiScene* import_model(Assimp::Importer& importer, const std::filesystem::path& path,
+                            const std::string& name) {
+    try {
+        // No post-processing: no triangulation (n-gons keep their normal interpolation), and
+        // joining and node transforms are done here (Assimp's joining keeps vertices apart that
+        // differ in normal, and reads out of bounds on an index out of range).
+        const aiScene* scene = importer.ReadFile(path.string(), 0);
+        if (scene == nullptr) {
+            std::string why = importer.GetErrorString();
+            while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())) != 0) {
+                why.pop_back();
+            }
+            throw InputError({name, 0, 0}, "cannot read the model: " + why);
+        }
+        return scene;
+    } catch (const std::bad_alloc&) {
+        throw InputError({name, 0, 0}, "cannot read the model: out of memory");
+    }
+}
+
+}  // namespace
+
+SurfaceMesh read_model_file(const std::filesystem::path& path, const std::string& written,
+                            const SourceLocation& named_at, Diagnostics& diagnostics) {
+    check_named_file(path, "optical surface file", written, named_at);
+    const std::string name = path.string();
+    const std::string ext = lower_extension(path);
+    const std::lock_guard<std::mutex> lock(assimp_mutex);
+    Assimp::Importer importer;
+    if (ext.empty() || !importer.IsExtensionSupported(ext)) {
+        throw InputError(
+            named_at,
+            fmt::format("optical surface file '{}' has filetype 3 (a model file), "
+                        "but {} is no model format Assimp reads (.obj, .ply, .stl, "
+                        ".gltf, .glb, .off, ...)",
+                        written, ext.empty() ? "a name without an extension" : "'" + ext + "'"));
+    }
+    check_header(path, ext, name);
+    SurfaceMesh mesh;
+    {
+        const AssimpLog log;
+        const aiScene* scene = import_model(importer, path, name);
+        if (scene->mRootNode == nullptr) {
+            throw InputError({name, 0, 0}, "the model has no node tree");
+        }
+        ModelFlattener flattener(*scene, name, ext == ".gltf" || ext == ".glb");
+        mesh = flattener.flatten();
+        for (const std::string& m : log.messages()) {
+            diagnostics.warn(name + ": " + m);
+        }
+        if (flattener.short_faces() > 0) {
+            diagnostics.warn(
+                fmt::format("{}: {} with fewer than 3 corners (points or lines) "
+                            "skipped",
+                            name, count_of(flattener.short_faces(), "face")));
+        }
+    }
+    if (mesh.polygons.empty()) {
+        throw InputError({name, 0, 0}, "the model holds no polygons");
+    }
+    weld_vertices(mesh, name, diagnostics);
+    warn_if_not_watertight(mesh, name, diagnostics);
+    return mesh;
+}
+
+}  // namespace rt

@@ -1,0 +1,70 @@
+// Small model files for the filetype-3 tests, written as their tools would write them.
+#pragma once
+
+#include <string>
+
+namespace rt::test {
+
+/// A unit quad (z = 0, normal +z) and a pentagon beside it, as OBJ.
+inline const std::string kQuadPentagonObj = R"(# a quad and a pentagon
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 2 0 0
+v 3 0 0
+v 3.5 0.5 0
+v 3 1 0
+v 2 1 0
+f 1 2 3 4
+f 5 6 7 8 9
+)";
+
+/// The same two polygons as ASCII PLY.
+inline const std::string kQuadPentagonPly = R"(ply
+format ascii 1.0
+comment a quad and a pentagon
+element vertex 9
+property float x
+property float y
+property float z
+element face 2
+property list uchar int vertex_indices
+end_header
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+2 0 0
+3 0 0
+3.5 0.5 0
+3 1 0
+2 1 0
+4 0 1 2 3
+5 4 5 6 7 8
+)";
+
+/// A unit cube with one normal per face (so 24 vertices as the file lists them, 8 positions).
+inline const std::string kFaceNormalCubeObj = R"(v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+vn 0 0 -1
+vn 0 0 1
+vn 0 -1 0
+vn 0 1 0
+vn -1 0 0
+vn 1 0 0
+f 1//1 4//1 3//1 2//1
+f 5//2 6//2 7//2 8//2
+f 1//3 2//3 6//3 5//3
+f 4//4 8//4 7//4 3//4
+f 1//5 5//5 8//5 4//5
+f 2//6 3//6 7//6 6//6
+)";
+
+}  // namespace rt::test

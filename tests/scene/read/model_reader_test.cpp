@@ -1,0 +1,215 @@
+// Filetype 3: model files read through Assimp keep their polygons whole, join vertices, give
+// their normals and materials, and refuse broken files with one clear message.
+#include "rt/scene/read/model_reader.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "model_files.h"
+#include "reader_test_support.h"
+
+namespace rt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ModelReader : public ::testing::Test {
+protected:
+    SurfaceMesh read(const std::string& name, const std::string& text) {
+        const fs::path path = dir_.write(name, text);
+        return read_model_file(path, name, {"s.scn", 21, 0}, diagnostics_);
+    }
+    std::string error(const std::string& name, const std::string& text) {
+        return local(input_error([&] { read(name, text); }));
+    }
+    std::string local(const std::string& message) const {
+        return without(message, dir_.path().string() + "/");
+    }
+    std::vector<std::string> warnings() const {
+        std::vector<std::string> out;
+        for (const std::string& w : diagnostics_.warnings()) {
+            out.push_back(local(w));
+        }
+        return out;
+    }
+    static std::vector<std::uint32_t> corner_counts(const SurfaceMesh& m) {
+        std::vector<std::uint32_t> counts;
+        for (const MeshPolygon& p : m.polygons) {
+            counts.push_back(p.corner_count);
+        }
+        return counts;
+    }
+
+    TempDir dir_;
+    Diagnostics diagnostics_;
+};
+
+TEST_F(ModelReader, AQuadAndAPentagonStayWholeInObjAndPly) {
+    for (const auto& [name, text] :
+         {std::pair{"m.obj", kQuadPentagonObj}, std::pair{"m.ply", kQuadPentagonPly}}) {
+        SCOPED_TRACE(name);
+        const SurfaceMesh m = read(name, text);
+        EXPECT_EQ(corner_counts(m), (std::vector<std::uint32_t>{4, 5}));
+        ASSERT_EQ(m.vertices.size(), 9u);
+        EXPECT_EQ(m.vertices[m.corners[6]], (Vec3{3.5, 0.5, 0}));  // the pentagon's third corner
+        EXPECT_TRUE(m.corner_normals.empty());
+    }
+}
+
+TEST_F(ModelReader, VerticesAtOnePositionAreJoinedWhateverTheirNormals) {
+    const SurfaceMesh m = read("cube.obj", kFaceNormalCubeObj);
+    EXPECT_EQ(m.vertices.size(), 8u);  // not the 24 the file's (position, normal) pairs make
+    EXPECT_EQ(corner_counts(m), (std::vector<std::uint32_t>(6, 4)));
+    EXPECT_TRUE(warnings().empty()) << warnings().front();  // a closed cube is watertight
+}
+
+TEST_F(ModelReader, TheFilesNormalsAreCornerNormalsAndDecideTheOutside) {
+    const SurfaceMesh m = read("cube.obj", kFaceNormalCubeObj);
+    ASSERT_EQ(m.corner_normals.size(), m.corners.size());
+    EXPECT_EQ(m.corner_normals[0], (Vec3{0, 0, -1}));
+    EXPECT_EQ(m.polygons[0].outward, (Vec3{0, 0, -4}));  // the sum of its corners' normals
+    EXPECT_EQ(m.corner_normals[4 * 5], (Vec3{1, 0, 0}));
+}
+
+TEST_F(ModelReader, CornersWithoutNormalsGetZeroBesideCornersWithThem) {
+    const SurfaceMesh m = read("m.obj",
+                               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 5 0 0\nv 6 0 0\nv 6 1 0\n"
+                               "vn 0 0.6 0.8\nf 1 2 3\nf 4//1 5//1 6//1\n");
+    ASSERT_EQ(m.corner_normals.size(), 6u);
+    EXPECT_EQ(m.corner_normals[0], Vec3{});
+    EXPECT_NEAR(m.corner_normals[3].y, 0.6, 1e-7);
+    EXPECT_NEAR(m.corner_normals[3].z, 0.8, 1e-7);
+}
+
+TEST_F(ModelReader, MaterialsAreOffsetsInTheMtlsOrder) {
+    dir_.write("m.mtl", "newmtl white\nKd 1 1 1\nnewmtl red\nKd 1 0 0\nnewmtl green\nKd 0 1 0\n");
+    const SurfaceMesh m = read("m.obj",
+                               "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                               "usemtl green\nf 1 3 4\nusemtl white\nf 1 2 4\n"
+                               "usemtl red\nf 2 3 4\n");
+    ASSERT_EQ(m.materials.size(), 3u);
+    EXPECT_EQ(m.materials[0].name, "white");
+    EXPECT_EQ(m.materials[2].name, "green");
+    ASSERT_TRUE(m.materials[1].diffuse.has_value());
+    EXPECT_EQ(m.materials[1].diffuse->r, 1.0);
+    EXPECT_EQ(m.materials[1].diffuse->g, 0.0);
+    std::vector<long> offsets;
+    for (const MeshPolygon& p : m.polygons) {
+        offsets.push_back(p.attribute_offset);
+    }
+    EXPECT_EQ(offsets, (std::vector<long>{2, 0, 1}));
+}
+
+TEST_F(ModelReader, WithoutMaterialsEveryOffsetIs0) {
+    for (const auto& [name, text] :
+         {std::pair{"m.obj", kQuadPentagonObj}, std::pair{"m.ply", kQuadPentagonPly}}) {
+        SCOPED_TRACE(name);
+        const SurfaceMesh m = read(name, text);
+        EXPECT_TRUE(m.materials.empty());  // Assimp's stand-in material is not the file's
+        for (const MeshPolygon& p : m.polygons) {
+            EXPECT_EQ(p.attribute_offset, 0);
+        }
+    }
+}
+
+TEST_F(ModelReader, AnOpenModelIsWarnedAbout) {
+    read("m.obj", kQuadPentagonObj);
+    EXPECT_EQ(warnings(), (std::vector<std::string>{
+                              "m.obj: the model is not watertight: 9 edges border one polygon "
+                              "only"}));
+}
+
+TEST_F(ModelReader, PointsAndLinesAreSkippedWithAWarning) {
+    const SurfaceMesh m = read("m.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nl 1 2\np 3\n");
+    EXPECT_EQ(m.polygons.size(), 1u);
+    const std::vector<std::string> w = warnings();
+    EXPECT_NE(std::find(w.begin(), w.end(),
+                        "m.obj: 2 faces with fewer than 3 corners (points or lines) skipped"),
+              w.end());
+}
+
+TEST_F(ModelReader, ARepeatedCornerIsDroppedAndALoopThroughOneCornerTwiceSkipped) {
+    const SurfaceMesh m = read("m.obj",
+                               "v 0 0 0\nv 1 0 0\nv 1 0 0\nv 1 1 0\nv 2 2 0\nv 0 2 0\n"
+                               "f 1 2 3 4\nf 1 2 4 5 4 6\n");
+    ASSERT_EQ(m.polygons.size(), 1u);  // vertices 2 and 3 are one position: a triangle
+    EXPECT_EQ(m.polygons[0].corner_count, 3u);
+    const std::vector<std::string> w = warnings();
+    EXPECT_EQ(w.front(), "m.obj: polygon 1 passes through one corner twice; skipped");
+}
+
+TEST_F(ModelReader, GltfNodeTransformsPlaceTheMesh) {
+    // One triangle, placed twice: moved by 10 in x, and mirrored in x (which reverses its loop
+    // so that its right-hand-rule side stays the outside).
+    const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
+"nodes":[{"mesh":0,"translation":[10,0,0]},{"mesh":0,"scale":[-1,1,1]}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]})";
+    const SurfaceMesh m = read("m.gltf", gltf);
+    ASSERT_EQ(m.polygons.size(), 2u);
+    const auto corner = [&](std::size_t p, std::uint32_t k) {
+        return m.vertices[m.corners[m.polygons[p].first_corner + k]];
+    };
+    EXPECT_EQ(corner(0, 0), (Vec3{10, 0, 0}));
+    EXPECT_EQ(corner(0, 1), (Vec3{11, 0, 0}));
+    EXPECT_EQ(corner(0, 2), (Vec3{10, 1, 0}));
+    EXPECT_EQ(corner(1, 0), (Vec3{0, 1, 0}));  // reversed: (0,1,0) (-1,0,0) (0,0,0)
+    EXPECT_EQ(corner(1, 1), (Vec3{-1, 0, 0}));
+    EXPECT_EQ(corner(1, 2), (Vec3{0, 0, 0}));
+}
+
+TEST_F(ModelReader, BrokenFilesGiveOneClearMessage) {
+    EXPECT_EQ(
+        error("m.ply", std::string(kQuadPentagonPly).replace(kQuadPentagonPly.rfind('8'), 1, "18")),
+        "m.ply: polygon 1 refers to vertex 18, but its mesh has 9 vertices (numbered from "
+        "0)");
+    EXPECT_EQ(error("m.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 7\n"),
+              "m.obj: cannot read the model: OBJ: vertex index out of range");
+    EXPECT_EQ(error("m.ply", ""), "m.ply: cannot read the model: File m.ply is empty.");
+    EXPECT_EQ(error("m.ply", "ply\nformat ascii 1.0\nend_header\n"),
+              "m.ply: cannot read the model: Invalid .ply file: Unable to extract mesh data");
+    EXPECT_EQ(error("m.obj", "# nothing but a comment\n"), "m.obj: the model holds no polygons");
+    EXPECT_EQ(error("m.ply", "\x7f\x45\x4c\x46 binary junk\n"),
+              "m.ply: cannot read the model: Invalid .ply file: Incorrect magic number (expected "
+              "'ply' or 'PLY').");
+    EXPECT_EQ(error("m.xyz", "v 0 0 0\n"),
+              "s.scn:21: optical surface file 'm.xyz' has filetype 3 (a model file), but '.xyz' "
+              "is no model format Assimp reads (.obj, .ply, .stl, .gltf, .glb, .off, ...)");
+    EXPECT_EQ(
+        local(input_error([&] {
+            read_model_file(dir_.path() / "none.obj", "none.obj", {"s.scn", 21, 0}, diagnostics_);
+        })),
+        "s.scn:21: cannot open optical surface file 'none.obj' (none.obj): No such file or "
+        "directory");
+}
+
+TEST_F(ModelReader, AHeaderPromisingMoreThanTheFileHoldsIsRefusedBeforeReading) {
+    EXPECT_EQ(error("m.ply",
+                    "ply\nformat binary_little_endian 1.0\nelement vertex 400000000\n"
+                    "property float x\nproperty float y\nproperty float z\n"
+                    "end_header\n"),
+              "m.ply:3: the header promises 400000000 vertex elements, more than the limit of "
+              "50000000");
+    EXPECT_EQ(error("m.ply",
+                    "ply\nformat binary_little_endian 1.0\nelement vertex 4000\n"
+                    "property float x\nproperty float y\nproperty float z\n"
+                    "end_header\n"),
+              "m.ply:3: the header promises 4000 vertex elements, but the 0 bytes after it hold "
+              "at most 0 (the file is truncated or its header is wrong)");
+    EXPECT_EQ(error("m.off", "OFF\n4000 3000 0\n0 0 0\n"),
+              "m.off:2: the header promises 4000 vertices, but the 22 bytes after it hold at "
+              "most 3 (the file is truncated or its header is wrong)");
+}
+
+TEST_F(ModelReader, WhatAssimpRepairsIsWarnedAbout) {
+    // Assimp's OFF reader clamps an index out of range instead of refusing it.
+    read("m.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 9\n");
+    const std::vector<std::string> w = warnings();
+    EXPECT_NE(std::find(w.begin(), w.end(), "m.off: OFF: Vertex index is out of range"), w.end());
+}
+
+}  // namespace
+}  // namespace rt::test
