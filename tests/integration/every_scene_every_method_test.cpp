@@ -2,8 +2,9 @@
 // with the z-buffer on top, must give brute force's picture exactly: every method answers every
 // ray as brute force does (docs/accelerators.md), so every float of the film must agree. The
 // views are shrunk, to at most a quarter of their width and height and about kSampleBudget eye
-// rays, to keep the test to seconds; every object is still in the picture, with its
-// reflections, refractions and shadow feelers.
+// rays (fewer for a scene of many polygons, whose brute force is slow: kWorkBudget), to keep the
+// test to seconds; every object is still in the picture, with its reflections, refractions and
+// shadow feelers.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -29,6 +30,8 @@ namespace fs = std::filesystem;
 
 constexpr int kLeastShrink = 4;          ///< the view's width and height are divided by this...
 constexpr double kSampleBudget = 16000;  ///< ... or more, to keep to about this many eye rays
+/// ... and eye rays times polygons to about this (scenes up to 256 polygons keep kSampleBudget)
+constexpr double kWorkBudget = kSampleBudget * 256;
 
 // The switches of every method, below the switches that add layers over it.
 const std::vector<std::vector<std::string>> kMethods = {
@@ -53,8 +56,10 @@ void shrink_view(Scene& scene) {
     SceneView& view = scene.view;
     const double samples = static_cast<double>(view.width) * view.height *
                            view.sample_resolution_x * view.sample_resolution_y;
+    const double polygons = std::max<double>(1.0, static_cast<double>(scene.polygons.size()));
+    const double budget = std::min(kSampleBudget, kWorkBudget / polygons);
     const int shrink =
-        std::max(kLeastShrink, static_cast<int>(std::ceil(std::sqrt(samples / kSampleBudget))));
+        std::max(kLeastShrink, static_cast<int>(std::ceil(std::sqrt(samples / budget))));
     view.width = std::max(1, view.width / shrink);
     view.height = std::max(1, view.height / shrink);
     view.window = {view.window.left / shrink, view.window.top / shrink,
