@@ -25,6 +25,9 @@ std::string usage_error(const Args& args) {
     return "";
 }
 
+const std::string kNoScene =
+    "no scene given: the command is rt SCENE [switches] or rt --model FILE [switches]";
+
 TEST(SwitchParser, NoArgumentsAsksForTheUsage) {
     const Options options = parse_command_line({});
     EXPECT_TRUE(options.show_usage);
@@ -42,10 +45,25 @@ TEST(SwitchParser, SceneIsKeptAsGiven) {
 }
 
 TEST(SwitchParser, ExactlyOneScene) {
-    EXPECT_EQ(usage_error({"-Dd"}), "no scene given: the command is rt SCENE [switches]");
-    EXPECT_EQ(usage_error({"--quiet"}), "no scene given: the command is rt SCENE [switches]");
+    EXPECT_EQ(usage_error({"-Dd"}), kNoScene);
+    EXPECT_EQ(usage_error({"--quiet"}), kNoScene);
     EXPECT_EQ(usage_error({"a", "b"}), "two scenes given, 'a' and 'b': give exactly one scene");
     EXPECT_EQ(usage_error({""}), "expected a scene name, found ''");
+}
+
+TEST(SwitchParser, AModelTakesTheScenesPlace) {
+    const Options options = parse_command_line({"-Dd", "--model", "models/bunny.ply", "-Po"});
+    EXPECT_EQ(options.model, "models/bunny.ply");
+    EXPECT_EQ(options.scene, "");
+    EXPECT_TRUE(options.dialect.smooth_shade_field);
+    EXPECT_EQ(options.given_switches, (std::vector<std::string>{"-Dd", "-Po"}));
+    EXPECT_EQ(usage_error({"twocubes", "--model", "m.obj"}),
+              "--model renders a model without a scene, but 'twocubes' is given too: give a scene "
+              "or --model FILE");
+    EXPECT_EQ(usage_error({"--model", ""}),
+              "--model: expected a file name after --model, found nothing");
+    EXPECT_EQ(usage_error({"--model", "a.obj", "--model", "b.obj"}),
+              "--model is given twice: give each switch once");
 }
 
 TEST(SwitchParser, SwitchesInAnyOrderAreRecordedVerbatim) {
@@ -210,7 +228,7 @@ TEST(SwitchParser, Ranges) {
 
 TEST(SwitchParser, UsageErrorsComeBeforeNotImplemented) {
     EXPECT_EQ(usage_error({"s", "-Sg", "-Q"}), "unknown switch '-Q'");
-    EXPECT_EQ(usage_error({"-Sg"}), "no scene given: the command is rt SCENE [switches]");
+    EXPECT_EQ(usage_error({"-Sg"}), kNoScene);
     EXPECT_EQ(usage_error({"s", "-V", "-Sg"}),
               "not implemented: -V: texture mapping is not implemented yet");
 }

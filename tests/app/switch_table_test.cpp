@@ -26,8 +26,12 @@ std::vector<std::string> words(std::string_view text) {
     return result;
 }
 
+// The example after a scene (but --model takes the scene's place).
 Options parse_example(const SwitchSpec& spec) {
-    std::vector<std::string> args = {"twocubes"};
+    std::vector<std::string> args;
+    if (spec.spelling != "--model") {
+        args.emplace_back("twocubes");
+    }
     for (std::string& word : words(spec.example)) {
         args.push_back(std::move(word));
     }
@@ -36,16 +40,16 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",     "-w",       "-m",     "-tv",       "-c",     "-od",       "-oo",     "-ol",
-        "-on",    "-of",      "-op",    "-ss",       "-p",     "-r",        "-Sp",     "-Sg",
-        "-Stg",   "-Stb",     "-R",     "-Wr",       "-Wc",    "-Wt",       "-A",      "-T",
-        "-Co",    "-Ci",      "-Cf",    "-Dx",       "-De",    "-Dd",       "-Dt",     "-Da",
-        "-Dl",    "-Ds",      "-Dr",    "-Df",       "-Dp",    "-Db",       "-Po",     "-Pt",
-        "-Ot",    "-Oi",      "-Of",    "-O1",       "-K",     "-I",        "-L",      "-E",
-        "-F",     "-Xp",      "-Xr",    "-M",        "-V",     "-dc",       "-ds",     "-dsp",
-        "-dso",   "-dl",      "-doo",   "-doi",      "-dof",   "-df",       "-dd",     "-dx",
-        "-de",    "--output", "--help", "--version", "--seed", "--threads", "--accel", "--zbuffer",
-        "--quiet"};
+        "-n",        "-w",       "-m",      "-tv",    "-c",        "-od",    "-oo",       "-ol",
+        "-on",       "-of",      "-op",     "-ss",    "-p",        "-r",     "-Sp",       "-Sg",
+        "-Stg",      "-Stb",     "-R",      "-Wr",    "-Wc",       "-Wt",    "-A",        "-T",
+        "-Co",       "-Ci",      "-Cf",     "-Dx",    "-De",       "-Dd",    "-Dt",       "-Da",
+        "-Dl",       "-Ds",      "-Dr",     "-Df",    "-Dp",       "-Db",    "-Po",       "-Pt",
+        "-Ot",       "-Oi",      "-Of",     "-O1",    "-K",        "-I",     "-L",        "-E",
+        "-F",        "-Xp",      "-Xr",     "-M",     "-V",        "-dc",    "-ds",       "-dsp",
+        "-dso",      "-dl",      "-doo",    "-doi",   "-dof",      "-df",    "-dd",       "-dx",
+        "-de",       "--output", "--model", "--help", "--version", "--seed", "--threads", "--accel",
+        "--zbuffer", "--quiet"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -308,6 +312,7 @@ std::map<std::string_view, Expectation> expectations() {
         {"--output",
          {{},
           [](const Options& o) { return o.outputs == std::vector<std::string>{"twocubes.png"}; }}},
+        {"--model", {{}, [](const Options& o) { return o.model == "scenes/models/bunny.ply"; }}},
         {"--seed", {{}, [](const Options& o) { return o.shading.sampling.seed == 7; }}},
         {"--threads", {{}, [](const Options& o) { return o.threads == 2; }}},
         {"--accel", {{}, [](const Options& o) { return o.accel.method.kind == AccelKind::Bvh; }}},

@@ -4,13 +4,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
-#include <sstream>
 
 #include "rt/core/diagnostics.h"
 #include "rt/scene/read/load_scene.h"
 
 #include <gtest/gtest.h>
 
+#include "model_pictures.h"
 #include "support/run_program.h"
 #include "support/temp_dir.h"
 
@@ -18,45 +18,6 @@ namespace rt::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The pixel block of a .gro file: what follows the header's "end" line.
-std::string gro_pixels(const fs::path& gro) {
-    const std::string bytes = read_text(gro);
-    const std::size_t end = bytes.find("\nend\n");
-    return end == std::string::npos ? std::string() : bytes.substr(end + 5);
-}
-
-// The shipped bunny.ply (ASCII, triangles) rewritten as OBJ: the same numbers, 1-based indices.
-std::string bunny_as_obj() {
-    std::istringstream ply(read_text(source_dir() / "scenes/models/bunny.ply"));
-    std::string line;
-    long vertices = 0;
-    long faces = 0;
-    while (std::getline(ply, line) && line != "end_header") {
-        std::istringstream words(line);
-        std::string key;
-        std::string element;
-        long count = 0;
-        if (words >> key >> element >> count && key == "element") {
-            (element == "vertex" ? vertices : faces) = count;
-        }
-    }
-    std::string obj;
-    for (long i = 0; i < vertices && std::getline(ply, line); ++i) {
-        obj.append("v ").append(line).append("\n");
-    }
-    for (long i = 0; i < faces && std::getline(ply, line); ++i) {
-        std::istringstream words(line);
-        long n = 0;
-        words >> n;
-        obj += "f";
-        for (long k = 0, v = 0; k < n && words >> v; ++k) {
-            obj.append(" ").append(std::to_string(v + 1));
-        }
-        obj += "\n";
-    }
-    return obj;
-}
 
 class ModelScenes : public ::testing::Test {
 protected:

@@ -586,6 +586,7 @@ const std::vector<OtherSwitch>& other_switches() {
         {"-L", "SwitchEffectTable.LDrawsOnlyFromThatLineUp: a shorter picture"},
         {"-doo", "GridRender tests: writes octree.lst, not a picture"},
         {"--output", "every row here: the PPM each picture is read from"},
+        {"--model", "ModelProgram tests: a scene of its own, made around the model"},
         {"--help", "RtProgram.HelpAndVersion"},
         {"--version", "RtProgram.HelpAndVersion"},
         {"--quiet", "RtProgram tests: nothing printed"},

@@ -16,7 +16,8 @@ constexpr std::size_t kHelpWidth = 96;
 // The rules of the command line, said once for --help and docs/switches.md.
 constexpr std::array<std::string_view, 7> kRules = {
     "SCENE is the one argument not starting with '-': the file SCENE.scn, or SCENE as given. The "
-    "picture goes to SCENE.gro in the current folder.",
+    "picture goes to SCENE.gro in the current folder. With --model FILE in its place, rt renders "
+    "a model file without a scene, to FILE's stem with .gro.",
     "Switches come in any order. The longest spelling wins: -dsp is not -ds followed by p.",
     "A switch's argument may be attached (-m2.0, -A40.0,1.0, -L250) or follow after a space "
     "(-m 2.0, -Wc 0.7, -L 250).",
@@ -182,12 +183,16 @@ std::string usage_text() {
         }
     }
     text += cat({"* ", kNotYet, "\n"});
-    text += "also: --output FILE (repeatable), --seed N, --threads N, --quiet, --help, --version\n";
+    text +=
+        "also: --output FILE (repeatable), --model FILE, --seed N, --threads N, --quiet, --help, "
+        "--version\n";
     return text;
 }
 
 std::string help_text() {
-    std::string text = "Usage: rt SCENE [switches]\n       rt --help | --version\n\n";
+    std::string text =
+        "Usage: rt SCENE [switches]\n       rt --model FILE [switches]\n       rt --help | "
+        "--version\n\n";
     text += "Ray traces a scene of the CMU RayTracer 6.0 (CMU-RI-TR-88-18, 1988).\n\n";
     text += rules_list(kHelpWidth);
     for (const Topic topic : kTopics) {
@@ -207,7 +212,8 @@ std::string switches_markdown() {
         "<!-- Generated from src/rt/app/switch_table.cpp: do not edit; regenerate with\n"
         "     build/bin/gen_switch_docs docs/switches.md -->\n\n";
     text +=
-        "`rt SCENE [switches]`. The switches are those of the manual's Appendix (with the "
+        "`rt SCENE [switches]` or `rt --model FILE [switches]`. The switches are those of the "
+        "manual's Appendix (with the "
         "manual's section for each), plus a few long options new in this version. Bare `rt` "
         "prints the brief list, `rt --help` the whole list.\n\n";
     text += rules_list(0);

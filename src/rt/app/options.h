@@ -22,6 +22,7 @@ enum class EarlyVersion { None, OldIllumination, OldVersion };
 struct Options {
     // --- what to read (manual 2.2 to 2.5) ---------------------------------------------------
     std::string scene;           ///< the SCENE argument, with or without .scn
+    std::string model;           ///< --model FILE: a model file rendered without a .scn
     ReaderDialect dialect;       ///< -Df -Dp -Of -Po -Pt -M -R -V
     bool trace_parsing = false;  ///< -df
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <ctime>
 
+#include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
@@ -15,6 +16,7 @@
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/read/load_scene.h"
+#include "rt/scene/read/model_scene.h"
 
 #include <fmt/format.h>
 
@@ -93,11 +95,24 @@ void print_colors(const Film& film, const RunConsole& console) {
 
 void write_outputs(const Film& film, const Options& options) {
     if (!options.no_gro) {
-        write_image(film, default_gro_path(options.scene));
+        write_image(film, options.model.empty() ? default_gro_path(options.scene)
+                                                : model_gro_path(options.model));
     }
     for (const std::string& output : options.outputs) {
         write_image(film, output);
     }
+}
+
+// The .scn, or with --model the scene made around the model, whose header names the octree at
+// the depth suggested for its polygon count (--accel and -od still choose otherwise).
+Scene read_scene(const Options& options, Diagnostics& diagnostics) {
+    if (options.model.empty()) {
+        return load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
+    }
+    Scene scene = model_scene(options.model, options.dialect, diagnostics);
+    scene.header.sptncde = 1;
+    scene.header.octr = suggested_octree_depth(scene.polygons.size());
+    return scene;
 }
 
 }  // namespace
@@ -125,6 +140,12 @@ std::filesystem::path default_gro_path(const std::string& scene_argument) {
     return name;
 }
 
+std::filesystem::path model_gro_path(const std::string& model_argument) {
+    std::filesystem::path name = std::filesystem::path(model_argument).stem();
+    name += ".gro";
+    return name;
+}
+
 RunOutcome run(const Options& options, const RunConsole& console) {
     for (const std::string& output : options.outputs) {
         (void)image_format_for(output);  // refuse an unknown format before hours of rendering
@@ -141,7 +162,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     };
     PhaseTimes times;
     auto phase = Clock::now();
-    Scene scene = load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
+    Scene scene = read_scene(options, diagnostics);
     times.load_seconds = seconds_since(phase);
 
     RenderSettings settings;
@@ -190,8 +211,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
         console.note(stack.strike_check()->summary());
     }
     film.mapping = options.display;
-    film.provenance = {options.scene, join(options.given_switches),
-                       std::string("rt ") + std::string(kVersion), utc_now()};
+    film.provenance = {options.model.empty() ? options.scene : "--model " + options.model,
+                       join(options.given_switches), std::string("rt ") + std::string(kVersion),
+                       utc_now()};
     if (options.debug_color) {
         print_colors(film, console);
     }

@@ -28,6 +28,9 @@ std::filesystem::path resolve_scene_path(const std::string& scene_argument);
 
 /// The default output: the scene's name with ".gro", in the current folder.
 std::filesystem::path default_gro_path(const std::string& scene_argument);
+/// The .gro rt writes for `rt --model FILE`: FILE's stem with .gro, in the current folder
+/// ("models/bunny.ply" -> "bunny.gro").
+std::filesystem::path model_gro_path(const std::string& model_argument);
 
 /// Renders as the options say and writes the outputs. Throws rt::Error subclasses.
 RunOutcome run(const Options& options, const RunConsole& console);

@@ -238,8 +238,18 @@ void check_complete(const Options& options, const Seen& seen) {
     if (options.early == EarlyVersion::OldVersion && options.given_switches.size() > 1) {
         throw UsageError("-O1 must be used alone, without other switches");
     }
+    if (!options.model.empty()) {
+        if (!seen.scenes.empty()) {
+            throw UsageError(
+                cat({"--model renders a model without a scene, but ", quote_token(seen.scenes[0]),
+                     " is given too: give a scene or --model FILE"}));
+        }
+        return;
+    }
     if (seen.scenes.empty()) {
-        throw UsageError("no scene given: the command is rt SCENE [switches]");
+        throw UsageError(
+            "no scene given: the command is rt SCENE [switches] or rt --model FILE "
+            "[switches]");
     }
     if (seen.scenes.size() > 1) {
         throw UsageError(cat({"two scenes given, ", quote_token(seen.scenes[0]), " and ",
@@ -283,7 +293,7 @@ Options parse_command_line(const std::vector<std::string>& args) {
         }
     }
     check_complete(options, seen);
-    options.scene = seen.scenes[0];
+    options.scene = seen.scenes.empty() ? std::string() : seen.scenes[0];
     if (seen.not_yet != nullptr) {
         throw NotImplementedError(
             cat({seen.not_yet->spelling, ": ", seen.not_yet->feature, " is not implemented yet"}));

@@ -424,6 +424,13 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Also write the picture to FILE (.gro, .png or .ppm)",
      .details = "Repeatable; the format follows the extension.", .section = "new",
      .example = "--output twocubes.png"},
+    {.spelling = "--model", .form = Text, .topic = Program, .first = {"FILE", {}},
+     .apply = [](Options& o, A a) { o.model = a.text; },
+     .summary = "Render the model FILE (.obj, .ply, .stl, .gltf, .off, ...) without a scene",
+     .details = "In place of the SCENE: the model, scaled to 10 units, stands on a checkerboard "
+                "under a square light, seen from in front (+z) and above. Every other "
+                "switch applies; -Po or -Pt smooth-shade the model. The picture is FILE's stem "
+                "with .gro.", .section = "new", .example = "--model scenes/models/bunny.ply"},
     {.spelling = "--help", .topic = Program, .apply = [](Options& o, A) { o.show_help = true; },
      .summary = "Print this help and stop", .section = "new", .example = "--help"},
     {.spelling = "--version", .topic = Program,
