@@ -57,6 +57,15 @@ TEST_F(ModelReader, AQuadAndAPentagonStayWholeInObjAndPly) {
     }
 }
 
+TEST_F(ModelReader, DashDfTracesWhatTheModelHolds) {
+    RecordingDiagnostics d(true);
+    const fs::path path = dir_.write("cube.obj", kFaceNormalCubeObj);
+    read_model_file(path, "cube.obj", {"s.scn", 21, 0}, d.diagnostics);
+    ASSERT_EQ(d.traces.size(), 1u);
+    EXPECT_EQ(local(d.traces[0]),
+              "cube.obj: model: 6 polygons, 8 vertex positions, 0 materials, normals");
+}
+
 TEST_F(ModelReader, VerticesAtOnePositionAreJoinedWhateverTheirNormals) {
     const SurfaceMesh m = read("cube.obj", kFaceNormalCubeObj);
     EXPECT_EQ(m.vertices.size(), 8u);  // not the 24 the file's (position, normal) pairs make

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <fstream>
 #include <mutex>
 
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/model_header_check.h"
 #include "rt/scene/read/model_mesh_check.h"
+#include "rt/scene/read/node_transform.h"
 #include "rt/scene/read/reader_limits.h"
 #include "rt/scene/read/source_text.h"
 
@@ -114,55 +114,10 @@ std::vector<long> material_offsets(const aiScene& scene, bool gltf, SurfaceMesh&
     return offsets;
 }
 
-// A node's transform in double precision (Assimp's are float): points and normals.
-struct NodeTransform {
-    double m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
-    double normal[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // inverse transpose of the 3x3
-    bool mirrors = false;                                     // determinant < 0: loops reverse
-
-    NodeTransform then(const aiMatrix4x4& local) const {
-        NodeTransform out;
-        const double l[3][4] = {{local.a1, local.a2, local.a3, local.a4},
-                                {local.b1, local.b2, local.b3, local.b4},
-                                {local.c1, local.c2, local.c3, local.c4}};
-        for (int r = 0; r < 3; ++r) {
-            for (int c = 0; c < 4; ++c) {
-                out.m[r][c] = m[r][0] * l[0][c] + m[r][1] * l[1][c] + m[r][2] * l[2][c] +
-                              (c == 3 ? m[r][3] : 0.0);
-            }
-        }
-        const auto& a = out.m;
-        const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-        out.mirrors = det < 0;
-        // The cofactor matrix is the inverse transpose times the determinant; the normal is
-        // normalised later, so only the determinant's sign matters.
-        const double s = det < 0 ? -1.0 : 1.0;
-        for (int r = 0; r < 3; ++r) {
-            for (int c = 0; c < 3; ++c) {
-                const int r1 = (r + 1) % 3;
-                const int r2 = (r + 2) % 3;
-                const int c1 = (c + 1) % 3;
-                const int c2 = (c + 2) % 3;
-                out.normal[r][c] = s * (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]);
-            }
-        }
-        return out;
-    }
-    Vec3 point(const aiVector3D& p) const {
-        return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-                m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-                m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-    }
-    Vec3 direction(const aiVector3D& n) const {
-        const Vec3 v{normal[0][0] * n.x + normal[0][1] * n.y + normal[0][2] * n.z,
-                     normal[1][0] * n.x + normal[1][1] * n.y + normal[1][2] * n.z,
-                     normal[2][0] * n.x + normal[2][1] * n.y + normal[2][2] * n.z};
-        const double l = length(v);
-        return l > 0 && std::isfinite(l) ? v / l : Vec3{};
-    }
-};
+// Assimp's row-major 4x4 (float); its last row is 0 0 0 1 for the transforms models use.
+NodeTransform::Matrix3x4 rows_of(const aiMatrix4x4& m) {
+    return {{{m.a1, m.a2, m.a3, m.a4}, {m.b1, m.b2, m.b3, m.b4}, {m.c1, m.c2, m.c3, m.c4}}};
+}
 
 // Walks Assimp's node tree, placing each mesh a node names with the node's accumulated transform
 // (glTF places meshes by nodes; OBJ, PLY, STL and OFF have one identity node).
@@ -198,7 +153,7 @@ void ModelFlattener::add_node(const aiNode& node, const NodeTransform& parent, i
     if (depth > 1000) {
         throw error("the model's nodes nest more than 1000 deep");
     }
-    const NodeTransform t = parent.then(node.mTransformation);
+    const NodeTransform t = parent.then(rows_of(node.mTransformation));
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         if (node.mMeshes[i] >= scene_.mNumMeshes) {
             throw error(fmt::format("node '{}' names mesh {}, but the model has {}",
@@ -223,7 +178,8 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
     }
     const auto base = static_cast<std::uint32_t>(mesh_.vertices.size());
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
-        mesh_.vertices.push_back(t.point(m.mVertices[v]));
+        const aiVector3D& p = m.mVertices[v];
+        mesh_.vertices.push_back(t.point({p.x, p.y, p.z}));
     }
     const bool normals = m.HasNormals();
     std::vector<std::uint32_t> loop;
@@ -244,7 +200,7 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
         loop.clear();
         for (unsigned k = 0; k < face.mNumIndices; ++k) {
             // A mirroring transform turns the loop's sense round; reversing keeps it outward.
-            const unsigned i = face.mIndices[t.mirrors ? face.mNumIndices - 1 - k : k];
+            const unsigned i = face.mIndices[t.mirrors() ? face.mNumIndices - 1 - k : k];
             if (i >= m.mNumVertices) {
                 throw error(
                     fmt::format("polygon {} refers to vertex {}, but its mesh has {} "
@@ -252,7 +208,8 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
                                 number, i, m.mNumVertices));
             }
             loop.push_back(base + i);
-            const Vec3 n = normals ? t.direction(m.mNormals[i]) : Vec3{};
+            const Vec3 n =
+                normals ? t.direction({m.mNormals[i].x, m.mNormals[i].y, m.mNormals[i].z}) : Vec3{};
             p.outward += n;  // the side the file's normals point to is outside
             if (normals && !any_normals_) {
                 any_normals_ = true;
@@ -328,6 +285,13 @@ SurfaceMesh read_model_file(const std::filesystem::path& path, const std::string
     }
     weld_vertices(mesh, name, diagnostics);
     warn_if_not_watertight(mesh, name, diagnostics);
+    if (diagnostics.tracing()) {
+        diagnostics.trace(fmt::format("{}: model: {}, {}, {}, {}", name,
+                                      count_of(std::ssize(mesh.polygons), "polygon"),
+                                      count_of(std::ssize(mesh.vertices), "vertex position"),
+                                      count_of(std::ssize(mesh.materials), "material"),
+                                      mesh.corner_normals.empty() ? "no normals" : "normals"));
+    }
     return mesh;
 }
 
