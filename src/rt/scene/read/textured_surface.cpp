@@ -41,23 +41,16 @@ void check_flat(const SourceText& source, const PolygonGrid& grid, std::int64_t 
     }
     const double size = std::max(length(grid.points[loop[2]] - grid.points[loop[0]]),
                                  length(grid.points[loop[3]] - grid.points[loop[1]]));
-    std::uint32_t worst = loop[0];
     double off = 0.0;
     for (const std::uint32_t k : loop) {
-        const double d = std::fabs(dot(grid.points[k] - centre, n));
-        if (d > off) {
-            off = d;
-            worst = k;
-        }
+        off = std::max(off, std::fabs(dot(grid.points[k] - centre, n)));
     }
     if (off > kCellFlatness * size) {
-        const auto row_of = static_cast<std::int64_t>(worst) / (grid.columns + 1);
-        const auto column_of = static_cast<std::int64_t>(worst) % (grid.columns + 1);
         throw expected_found(
-            source.at(grid.lines[worst]),
+            source.at(grid.lines[loop[0]]),
             fmt::format("the corners of {} in one plane", cell_name(row, column)),
-            fmt::format("point (row {}, column {}) {} off it (more than {} of the cell's size)",
-                        row_of, column_of, show_number(off), show_number(kCellFlatness)));
+            fmt::format("them up to {:.3g} off it (more than {} of the cell's size)", off,
+                        show_number(kCellFlatness)));
     }
 }
 
