@@ -229,8 +229,8 @@ TEST(SwitchParser, Ranges) {
 TEST(SwitchParser, UsageErrorsComeBeforeNotImplemented) {
     EXPECT_EQ(usage_error({"s", "-Sg", "-Q"}), "unknown switch '-Q'");
     EXPECT_EQ(usage_error({"-Sg"}), kNoScene);
-    EXPECT_EQ(usage_error({"s", "-V", "-Sg"}),
-              "not implemented: -V: texture mapping is not implemented yet");
+    EXPECT_EQ(usage_error({"s", "-w", "-Sg"}),
+              "not implemented: -w: the wireframe display is not implemented yet");
 }
 
 TEST(SwitchParser, FileFormatSwitchesSetTheDialect) {
@@ -242,6 +242,7 @@ TEST(SwitchParser, FileFormatSwitchesSetTheDialect) {
     EXPECT_TRUE(options.dialect.rgb_refraction);
     EXPECT_FALSE(options.dialect.textures);
     EXPECT_FALSE(options.shading.smooth_shaded_opaque);
+    EXPECT_TRUE(parse_command_line({"s", "-V"}).dialect.textures);
 }
 
 }  // namespace

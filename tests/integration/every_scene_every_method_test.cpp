@@ -4,7 +4,8 @@
 // views are shrunk, to at most a quarter of their width and height and about kSampleBudget eye
 // rays (fewer for a scene of many polygons, whose brute force is slow: kWorkBudget), to keep the
 // test to seconds; every object is still in the picture, with its reflections, refractions and
-// shadow feelers.
+// shadow feelers. A scene with texture-mapped surfaces after its entities (the warning "read only
+// with -V" without it) is drawn with -V, so that they are in the picture too.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -81,6 +82,23 @@ std::vector<float> render_with(const Scene& scene, const fs::path& path,
     return render(scene, stack.top(), settings, silent, statistics).data();
 }
 
+// The scene as drawn: with -V when it has texture-mapped surfaces, which -V alone reads.
+Scene load_whole(const fs::path& path, std::vector<std::string>& scene_switches) {
+    Diagnostics diagnostics;
+    Scene scene = load_scene(path, ReaderDialect{}, diagnostics);
+    const std::vector<std::string>& warnings = diagnostics.warnings();
+    if (std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
+            return w.find("texture-mapped surfaces are read only with -V") != std::string::npos;
+        })) {
+        scene_switches.push_back("-V");
+        ReaderDialect textures;
+        textures.textures = true;
+        scene = load_scene(path, textures, diagnostics);
+        EXPECT_FALSE(scene.texture_cells.empty());
+    }
+    return scene;
+}
+
 std::string joined(const std::vector<std::string>& switches) {
     std::string text;
     for (const std::string& s : switches) {
@@ -91,19 +109,24 @@ std::string joined(const std::vector<std::string>& switches) {
 
 TEST(EverySceneEveryMethod, DrawsBruteForcesPicture) {
     const std::vector<fs::path> scenes = shipped_scenes();
-    ASSERT_GE(scenes.size(), 3u);
+    ASSERT_GE(scenes.size(), 4u);
+    int textured = 0;
     for (const fs::path& path : scenes) {
         SCOPED_TRACE(path.filename().string());
-        Diagnostics diagnostics;
-        Scene scene = load_scene(path, ReaderDialect{}, diagnostics);
+        std::vector<std::string> scene_switches;
+        Scene scene = load_whole(path, scene_switches);
+        textured += scene.texture_cells.empty() ? 0 : 1;
         shrink_view(scene);
-        const std::vector<float> brute = render_with(scene, path, {"--accel", "brute", "-De"});
+        std::vector<std::string> brute_switches = scene_switches;
+        brute_switches.insert(brute_switches.end(), {"--accel", "brute", "-De"});
+        const std::vector<float> brute = render_with(scene, path, brute_switches);
         ASSERT_FALSE(brute.empty());
         ASSERT_TRUE(std::any_of(brute.begin(), brute.end(), [](float v) { return v > 0.0f; }))
             << "a black picture would prove nothing";
         for (const std::vector<std::string>& method : kMethods) {
             for (const std::vector<std::string>& layer : kLayers) {
-                std::vector<std::string> switches = method;
+                std::vector<std::string> switches = scene_switches;
+                switches.insert(switches.end(), method.begin(), method.end());
                 switches.insert(switches.end(), layer.begin(), layer.end());
                 SCOPED_TRACE(joined(switches));
                 const std::vector<float> picture = render_with(scene, path, switches);
@@ -115,6 +138,7 @@ TEST(EverySceneEveryMethod, DrawsBruteForcesPicture) {
             }
         }
     }
+    EXPECT_GE(textured, 2) << "lens.scn and twocubes.scn have texture-mapped surfaces";
 }
 
 }  // namespace

@@ -67,6 +67,38 @@ TEST_F(RtProgram, MissingSceneNamesTheFile) {
     EXPECT_NE(r.err.find("nothere"), std::string::npos);
 }
 
+TEST_F(RtProgram, DashVDrawsTheManualsTextureMappedSurface) {
+    write_small_scene("small.scn", "180 320 189 329");  // on the lenses
+    const ProgramResult with = rt({"scenes/small", "-V", "-n", "--output", "v.ppm"});
+    EXPECT_EQ(with.exit_code, 0) << with.err;
+    EXPECT_EQ(with.err, "");
+    const ProgramResult without = rt({"scenes/small", "-n", "--output", "plain.ppm"});
+    EXPECT_EQ(without.exit_code, 0) << without.err;
+    EXPECT_NE(without.err.find("read only with -V"), std::string::npos);
+    EXPECT_NE(read_text(at("v.ppm")), read_text(at("plain.ppm")));
+}
+
+TEST_F(RtProgram, DashVWithoutTheLinesOrWithABadMapStopsAtTheLine) {
+    std::string scene = read_text(at("scenes/twocubes.scn"));
+    scene.erase(scene.find("$ 1\n$ 0 lenspts.dat"));
+    dir_.write("scenes/nolens.scn", scene);
+    const ProgramResult missing = rt({"scenes/nolens", "-V"});
+    EXPECT_EQ(missing.exit_code, 1);
+    EXPECT_EQ(missing.err,
+              "scenes/nolens.scn:27: expected the texture-mapped surface count (-V), found "
+              "end of file\n");
+    std::string map = read_text(at("scenes/prescrip.dat"));
+    map.replace(map.find("centre 25.5 4"), 13, "centre 25.5");
+    dir_.write("scenes/prescrip.dat", map);
+    const ProgramResult bad = rt({"scenes/twocubes", "-V"});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(
+        bad.err.find("prescrip.dat:12: expected the v of optical centre 1, found end of line"),
+        std::string::npos)
+        << bad.err;
+    EXPECT_FALSE(fs::exists(at("twocubes.gro")));
+}
+
 TEST_F(RtProgram, WritesGroInTheCurrentFolderWithOrWithoutScn) {
     write_small_scene("small.scn", "200 300 209 309");
     EXPECT_EQ(rt({"scenes/small"}).exit_code, 0);

@@ -25,6 +25,15 @@ const std::vector<Region> highlight_regions{
     {"light_near", 5, 48, 11, 55},
 };
 
+// Regions of scenes/lens.scn (320 x 240): inside the magnifier and inside the amber cylinder lens,
+// and the table before and beyond the lenses, where neither the lenses nor their shadows fall.
+const std::vector<Region> lens_regions{
+    {"magnifier", 80, 85, 150, 150},
+    {"cylinder", 180, 85, 255, 150},
+    {"table_near", 40, 200, 280, 235},
+    {"table_far", 60, 40, 260, 70},
+};
+
 // Display (gallery).
 std::vector<PictureRow> display_rows() {
     using enum Effect;
@@ -299,6 +308,19 @@ std::vector<PictureRow> format_rows() {
          {},
          {},
          "rgb-equal"},
+        {"-V",
+         {},
+         "lens",
+         {{"magnifier", Changes, 0.9},
+          {"cylinder", Changes, 0.9},
+          {"cylinder", Darker, 20.0, 1.0, 2},
+          {"table_near", Same},
+          {"table_far", Same}},
+         "-V: the lenses' curved faces are read: the table seen through them is magnified, and "
+         "stretched across the cylinder's axis and tinted amber by its texture map",
+         {},
+         {},
+         "lens-plain"},
     };
 }
 
@@ -561,6 +583,8 @@ const std::vector<TestScene>& test_scenes() {
         {"old-format", "gallery.scn", "old-format", {"-Of"}, gallery_regions},
         {"rgb-equal", "gallery.scn", "rgb-equal", {"-R"}, gallery_regions},
         {"rgb-spread", "gallery.scn", "rgb-spread", {"-R"}, gallery_regions},
+        {"lens", "lens.scn", "original", {"-V"}, lens_regions},
+        {"lens-plain", "lens.scn", "original", {}, lens_regions},
     };
     return all;
 }

@@ -126,6 +126,43 @@ TEST(SecondaryRays, SmoothingThatBendsTheRefractedRayBackIsStraightenedUnlessDas
     EXPECT_EQ(trace_once(b.scene(), dash_ot, ray), Rgb{});
 }
 
+TEST(SecondaryRays, SmoothingThatSendsATotallyReflectedRayThroughIsMirroredUnlessDashOt) {
+    // From inside the glass at 50 degrees, the shading normal leaning 25 degrees toward the ray's
+    // way: 75 degrees from it, the ray is totally reflected, and mirrored about it would cross
+    // the surface. Mirrored on the polygon instead, it stays inside, to z = 5 at x = 5 tan 50.
+    const Vec3 direction{std::sin(radians(50)), 0, -std::cos(radians(50))};
+    const Ray ray{direction * -2.0, direction};
+    test::SceneBuilder b = surface_and_lamp(glass());
+    // Outward (-z side) vertex normals; seen from inside, the shading normal is their opposite.
+    smooth_with(b, {-std::sin(radians(25)), 0, -std::cos(radians(25))});
+    add_square(b, {5 * std::tan(radians(50)), 0, 5}, 0.5, -1.0, 1);
+    EXPECT_EQ(trace_once(b.scene(), sharp_rays(), ray), (Rgb{1, 1, 1}));
+    ShadingSettings dash_ot = sharp_rays();
+    dash_ot.correct_smoothing = false;
+    EXPECT_EQ(trace_once(b.scene(), dash_ot, ray), Rgb{});
+}
+
+TEST(SecondaryRays, AMappedNormalIsCorrectedLikeASmoothedOne) {
+    // -V: a sphere of radius 1.2 centred on the origin in the mirror's plane tilts the normal at
+    // x = 1 by asin(1/1.2), 56 degrees toward +x: the 45-degree ray mirrored about it would go
+    // into the surface. As with smoothing, it leaves as the flat mirror sends it.
+    const Ray ray{{0, 0, -1}, normalize(Vec3{1, 0, 1})};  // meets the mirror at x = 1
+    test::SceneBuilder b = surface_and_lamp(mirror());
+    TextureCell cell;
+    cell.tangent_u = {1, 0, 0};
+    cell.tangent_v = {0, -1, 0};  // u x v = -z, the square's outward side
+    cell.across_axis = cell.tangent_v;
+    cell.optical_centre = {0, 0, 0};
+    cell.sphere = 1.0 / 1.2;
+    b.scene().texture_cells = {cell};
+    b.scene().polygons[0].texture_cell = 0;
+    add_square(b, {11, 0, -10}, 0.5, 1.0, 1);  // where the flat mirror sends it
+    EXPECT_EQ(trace_once(b.scene(), sharp_rays(), ray), (Rgb{1, 1, 1}));
+    ShadingSettings dash_ot = sharp_rays();
+    dash_ot.correct_smoothing = false;
+    EXPECT_EQ(trace_once(b.scene(), dash_ot, ray), Rgb{});
+}
+
 // A glossy mirror with a 60-degree lobe, hit 80 degrees from its normal: much of the lobe lies
 // beyond the surface, and those rays are turned back to the ray's side, so that a lamp filling
 // the ray's side receives every ray and one behind the mirror none.

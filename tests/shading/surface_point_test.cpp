@@ -95,5 +95,40 @@ TEST(SurfacePoint, DashPoMakesSmoothPolygonsOpaque) {
     EXPECT_EQ(square.hit_at(0.5, 0.5, true, dash_po).transmission, 0.0);
 }
 
+// -V: a texture cell on the square, a sphere of radius 1 centred on (0.5, 0.5) in its plane, and
+// a colour that tints the attribute's.
+TextureCell sphere_cell() {
+    TextureCell cell;
+    cell.tangent_u = {1, 0, 0};
+    cell.tangent_v = {0, 1, 0};
+    cell.across_axis = {0, 1, 0};
+    cell.optical_centre = {0.5, 0.5, 0};
+    cell.sphere = 1.0;
+    cell.color = {0.5, 1.0, 0.25};
+    return cell;
+}
+
+TEST(SurfacePoint, ATextureCellGivesTheNormalAndTintsTheColour) {
+    Square square;
+    Scene& scene = square.builder.scene();
+    scene.attributes[0].color = {0.8, 0.6, 0.4};
+    EXPECT_EQ(square.hit_at(0.5, 0.5, true).color, (Rgb{0.8, 0.6, 0.4}));
+    scene.texture_cells = {sphere_cell()};
+    scene.polygons[0].texture_cell = 0;
+    // Half the radius away from the centre along x: the sphere's normal there, tilted asin(1/2).
+    const Vec3 sphere_normal{0.5, 0, std::sqrt(0.75)};
+    const SurfacePoint front = square.hit_at(1.0, 0.5, true);
+    expect_near(front.shading_normal, sphere_normal);
+    expect_near(front.facing_normal, {0, 0, 1});
+    EXPECT_EQ(front.color, (Rgb{0.4, 0.6, 0.1}));
+    // From behind, the same normal turned to the ray.
+    expect_near(square.hit_at(1.0, 0.5, false).shading_normal, -sphere_normal);
+    // -Po makes smooth polygons opaque; a texture-mapped one is not smooth.
+    scene.attributes[0].transmission = 0.4;
+    ShadingSettings dash_po;
+    dash_po.smooth_shaded_opaque = true;
+    EXPECT_EQ(square.hit_at(1.0, 0.5, true, dash_po).transmission, 0.4);
+}
+
 }  // namespace
 }  // namespace rt

@@ -360,8 +360,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "files).", .section = "2.4", .example = "-M"},
     {.spelling = "-V", .topic = FileFormat,
      .apply = [](Options& o, A) { o.dialect.textures = true; }, .summary = "texture mapping",
-     .details = "Texture-mapped optical surfaces follow the entities in the .scn.",
-     .section = "2.2", .example = "-V", .status = NotYet, .feature = "texture mapping"},
+     .details = "Texture-mapped optical surfaces follow the entities in the .scn: a count, then "
+                "per surface its attribute, polygon grid, texture map (sphere, cylinder, axis and "
+                "colour per cell), scale, translation, rotation, rows and columns.",
+     .section = "2.2", .example = "-V"},
     {.spelling = "-dc", .topic = Debugging, .apply = [](Options& o, A) { o.print_columns = true; },
      .summary = "print column numbers",
      .details = "Prints the column number of the pixel on each sample.", .section = "App.",

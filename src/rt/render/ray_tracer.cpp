@@ -142,14 +142,14 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
     }
     if (s.transmission > 0.0) {
         distributed_here = distributed_here || (distribute && a.refract_cone_degrees > 0.0);
-        result += refracted_rays(ray, s, depth, rays, sample) * a.color * s.transmission;
+        result += refracted_rays(ray, s, depth, rays, sample) * s.color * s.transmission;
     }
     if (diffuse_rays_ && a.diffuse > 0.0) {
         // Without shadow feelers light reaches a point only along rays that find emitters
         // (manual Appendix -Ds); diffuse reflection then needs rays of its own.
         const Lobe lobe{s.shading_normal, {}, true, true, RayKind::Diffuse};
         distributed_here = distributed_here || distribute;
-        result += gather(lobe, s, depth, rays, sample) * a.color * a.diffuse;
+        result += gather(lobe, s, depth, rays, sample) * s.color * a.diffuse;
     }
     if (distributed_here) {
         ++sample.tree.distributed_intersections;
@@ -174,6 +174,10 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
         const bool goes_through = dot(direction, s.facing_normal) < 0.0;
         if (settings_.correct_smoothing && bent && !goes_through) {
             direction = ray.direction;  // smoothing tilted it back out: go straight through
+        }
+        if (settings_.correct_smoothing && !bent && goes_through) {
+            // Totally reflected, but smoothing sent it through: mirror it on the polygon itself.
+            direction = reflect(ray.direction, s.facing_normal);
         }
         const Lobe lobe{direction,
                         {radians(a.refract_cone_degrees), a.refract_cone_exponent},

@@ -13,6 +13,7 @@
 #include "rt/geometry/camera.h"
 #include "rt/geometry/polygon_view.h"
 #include "rt/scene/attribute.h"
+#include "rt/scene/texture_cell.h"
 
 namespace rt {
 
@@ -68,6 +69,9 @@ struct Polygon {
     PolygonMark mark = PolygonMark::Ordinary;
     std::int32_t shape = kNoShape;  ///< into Scene::shapes, or kNoShape
     bool smooth = false;            ///< interpolate vertex normals (smooth-shade field or mark 1)
+    /// Not an index into Scene::texture_cells: the polygon is not texture-mapped.
+    static constexpr std::int32_t kNoTexture = -1;
+    std::int32_t texture_cell = kNoTexture;  ///< into Scene::texture_cells (-V), or kNoTexture
 };
 
 /// Where a polygon came from, so that every later complaint can name a line.
@@ -83,6 +87,7 @@ struct OpticalSurface {
     int filetype = 0;  ///< 0, 1 (Phigs+) or 2 (Prinz polygonizer)
     bool smooth_shaded = false;
     long attribute_number = 0;
+    std::string texture_map;  ///< -V: the texture map file; empty for an entity's surface
     SourceLocation where;
 };
 
@@ -103,8 +108,9 @@ struct Scene {
     std::vector<Vec3> model_normals;
     std::vector<std::uint32_t> corners;  ///< polygon corners in loop order, into positions
     std::vector<Polygon> polygons;
-    std::vector<SourceRef> polygon_origin;  ///< per polygon
-    std::vector<std::string> source_files;  ///< files read, for SourceRef
+    std::vector<TextureCell> texture_cells;  ///< the cells of the texture-mapped surfaces (-V)
+    std::vector<SourceRef> polygon_origin;   ///< per polygon
+    std::vector<std::string> source_files;   ///< files read, for SourceRef
 
     Vec3 corner_position(const Polygon& p, std::uint32_t k) const {
         return positions[corners[p.first_corner + k]];
@@ -119,6 +125,13 @@ struct Scene {
     /// normals than positions.
     CornerNormals normals_of(std::uint32_t polygon) const;
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
+    /// The polygon's colour: its attribute's, times its texture cell's when it has one.
+    Rgb color_of(const Polygon& p) const {
+        const Rgb& color = attribute_of(p).color;
+        return p.texture_cell == Polygon::kNoTexture
+                   ? color
+                   : color * texture_cells[static_cast<std::size_t>(p.texture_cell)].color;
+    }
     SourceLocation origin_of(std::uint32_t polygon) const;
     /// Smallest box around every position; a box of no size at the origin for an empty scene
     /// (never an empty box: its infinities would spill into every size derived from it).

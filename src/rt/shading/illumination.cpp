@@ -19,10 +19,10 @@ Rgb reflected_light(const ShadingSettings& settings, const SurfacePoint& s, cons
                     const Vec3& to_light, const Rgb& received, bool highlights) {
     const Attribute& a = *s.attribute;
     const double lambert = std::fmax(0.0, dot(s.shading_normal, to_light));
-    Rgb result = received * a.color * (a.diffuse * lambert);
+    Rgb result = received * s.color * (a.diffuse * lambert);
     if (highlights) {
-        result +=
-            received * specular_highlight(settings.specular, a, s.shading_normal, to_light, view);
+        result += received * specular_highlight(settings.specular, a, s.color, s.shading_normal,
+                                                to_light, view);
     }
     return result;
 }
@@ -40,7 +40,7 @@ Rgb transmitted_light(const SurfacePoint& s, const Vec3& view, const Vec3& to_li
         return {};
     }
     const double lobe = cos_power(dot(normalize(*through), to_light), a.transmit_exponent);
-    return received * a.color * (s.transmission * lobe);
+    return received * s.color * (s.transmission * lobe);
 }
 
 }  // namespace
@@ -49,9 +49,9 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
                        bool highlights, TraceCounters& counters) {
     const Attribute& a = *s.attribute;
     const ShadingSettings& settings = context.settings;
-    Rgb result = a.color * (a.ambient * settings.ambient_light);
+    Rgb result = s.color * (a.ambient * settings.ambient_light);
     if (s.front || settings.both_sides_emit) {
-        result += a.color * a.emission;
+        result += s.color * a.emission;
     }
     const FeelerContext feeler{context.scene, context.accel, settings, context.epsilon,
                                context.stream};

@@ -25,7 +25,7 @@ std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick, bo
         if (!a.is_emissive()) {
             continue;
         }
-        const Rgb total = a.color * a.emission;
+        const Rgb total = scene.color_of(p) * a.emission;
         if (lghtick == 2) {
             lights.push_back({polygon_centre(scene, p), total, id});
             continue;

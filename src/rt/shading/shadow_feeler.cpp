@@ -38,7 +38,7 @@ Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const V
         if (a.is_opaque() || forced_opaque || context.settings.feelers_stop_at_transparent) {
             return {};
         }
-        filter = filter * a.color * a.transmission;
+        filter = filter * context.scene.color_of(p) * a.transmission;
         along.min = hit->t;
     }
     return {};

@@ -76,6 +76,12 @@ SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, Highlig
 
 Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attribute,
                        const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer) {
+    return specular_highlight(settings, attribute, attribute.color, normal, to_light, to_viewer);
+}
+
+Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attribute,
+                       const Rgb& color, const Vec3& normal, const Vec3& to_light,
+                       const Vec3& to_viewer) {
     if (dot(normal, to_light) <= 0.0 || dot(normal, to_viewer) <= 0.0 ||
         attribute.specular == 0.0) {
         return {};
@@ -89,7 +95,7 @@ Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attrib
     if (settings.tint == HighlightTint::Fresnel) {
         Rgb result;
         for (int c = 0; c < 3; ++c) {
-            const double n_c = index_from_reflectance(attribute.color[c]);
+            const double n_c = index_from_reflectance(color[c]);
             result[c] = value * fresnel_dielectric(cos_vh, 1.0, n_c);
         }
         return result;
@@ -98,7 +104,7 @@ Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attrib
                          ? fresnel_dielectric(cos_vh, 1.0, attribute.refraction_index.g)
                          : 1.0;
     const Rgb grey{value * f, value * f, value * f};
-    return settings.tint == HighlightTint::ObjectColor ? grey * attribute.color : grey;
+    return settings.tint == HighlightTint::ObjectColor ? grey * color : grey;
 }
 
 double fresnel_dielectric(double cos_i, double n1, double n2) {

@@ -64,6 +64,11 @@ SpecularSettings make_specular_settings(SpecularLaw law, double slope_m, Highlig
 /// above the surface (N.L <= 0 or N.V <= 0).
 Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attribute,
                        const Vec3& normal, const Vec3& to_light, const Vec3& to_viewer);
+/// The same for a surface whose colour is not its attribute's (a texture map, -V): `color`
+/// stands for the attribute's colour in -Co and -Cf.
+Rgb specular_highlight(const SpecularSettings& settings, const Attribute& attribute,
+                       const Rgb& color, const Vec3& normal, const Vec3& to_light,
+                       const Vec3& to_viewer);
 
 /// Unpolarised Fresnel reflectance of a smooth dielectric boundary for light arriving from index
 /// n1 onto index n2 at an angle of incidence with cosine cos_i (its absolute value is used):

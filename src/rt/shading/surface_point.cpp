@@ -9,6 +9,10 @@ namespace {
 
 Vec3 outward_shading_normal(const Scene& scene, std::uint32_t id, const Vec3& point) {
     const Polygon& p = scene.polygons[id];
+    if (p.texture_cell != Polygon::kNoTexture) {
+        return element_normal(scene.texture_cells[static_cast<std::size_t>(p.texture_cell)],
+                              p.normal, point);
+    }
     if (p.shape != Polygon::kNoShape && p.mark != PolygonMark::Ordinary &&
         p.mark != PolygonMark::InterpolatesNormals) {
         return shape_normal(scene.shapes[static_cast<std::size_t>(p.shape)], p.mark, point,
@@ -29,11 +33,13 @@ SurfacePoint describe_hit(const Scene& scene, const ShadingSettings& settings, c
     s.position = ray.at(hit.t);
     s.polygon = hit.polygon;
     s.attribute = &scene.attribute_of(p);
+    s.color = scene.color_of(p);
     s.front = dot(ray.direction, p.normal) < 0.0;
     s.facing_normal = s.front ? p.normal : -p.normal;
     const Vec3 shading = outward_shading_normal(scene, hit.polygon, s.position);
     s.shading_normal = s.front ? shading : -shading;
-    // An interpolated normal may lean past the silhouette; never let it face away from the ray.
+    // An interpolated or mapped normal may lean past the silhouette; never let it face away from
+    // the ray.
     if (settings.correct_smoothing && dot(s.shading_normal, s.facing_normal) <= 0.0) {
         s.shading_normal = s.facing_normal;
     }

@@ -43,6 +43,7 @@ ReaderDialect dialect_of(const std::string& scene_text) {
         d.smooth_shade_field |= flag == "-Po" || flag == "-Pt";
         d.marks |= flag == "-M";
         d.rgb_refraction |= flag == "-R";
+        d.textures |= flag == "-V";
     }
     return d;
 }

@@ -222,12 +222,86 @@ TEST(ScnReader, ShapeFileLineAndMMustGoTogether) {
     EXPECT_EQ(error(text), "s.scn:17: the scene names a shape file; use -M");
 }
 
-TEST(ScnReader, TextureLinesNeedV) {
+// The manual's two lines after the entities (2.2).
+const std::string kTextureLines = "$ 1\n$ 0 lenspts.dat prescrip.dat 0.25 -5 -8 0 0 0 0 8 34\n";
+
+TEST(ScnReader, DashVReadsTheTextureMappedSurfaces) {
     ReaderDialect v;
     v.textures = true;
     Diagnostics d;
-    const SourceText text = text_file("s.scn", scene_text());
-    EXPECT_THROW(read_scn(text, v, d), NotImplementedError);
+    const ScnFile scn = read(scene_text() + kTextureLines, v, d);
+    ASSERT_EQ(scn.textured_surfaces.size(), 1u);
+    const ScnTexturedSurface& t = scn.textured_surfaces[0];
+    EXPECT_EQ(t.attribute_number, 0);
+    EXPECT_EQ(t.polygon_file.name, "lenspts.dat");
+    EXPECT_EQ(t.texture_map.name, "prescrip.dat");
+    EXPECT_EQ(t.texture_map.where.to_string(), "s.scn:22");
+    EXPECT_EQ(t.placement.scale, 0.25);
+    EXPECT_EQ(t.placement.translation, (Vec3{-5, -8, 0}));
+    EXPECT_EQ(t.placement.rotation_degrees, (Vec3{0, 0, 0}));
+    EXPECT_EQ(t.rows, 8);
+    EXPECT_EQ(t.columns, 34);
+    EXPECT_EQ(t.where.to_string(), "s.scn:22");
+    EXPECT_TRUE(d.warnings().empty());
+}
+
+TEST(ScnReader, TextureLinesNeverCarryASmoothShadeField) {
+    ReaderDialect v;
+    v.textures = true;
+    v.smooth_shade_field = true;
+    std::string text = scene_text();
+    text.replace(text.find("cube"), 4, "0 cube");
+    Diagnostics d;
+    EXPECT_EQ(read(text + kTextureLines, v, d).textured_surfaces.at(0).columns, 34);
+    EXPECT_EQ(error(text + "$ 1\n$ 0 0 lenspts.dat prescrip.dat 0.25 -5 -8 0 0 0 0 8 34\n", v),
+              "s.scn:22: expected the scale of texture-mapped surface '0', found 'prescrip.dat' (a "
+              "texture-mapped surface has no smooth-shade field, even with -Po or -Pt)");
+}
+
+TEST(ScnReader, DashVWithoutTheLinesNamesWhereTheyWereExpected) {
+    ReaderDialect v;
+    v.textures = true;
+    EXPECT_EQ(error(scene_text(), v),
+              "s.scn:20: expected the texture-mapped surface count (-V), found end of file");
+    EXPECT_EQ(error(scene_text() + "$ 2\n$ 0 a b 1 0 0 0 0 0 0 1 1\n", v),
+              "s.scn:22: expected the texture-mapped surface's attribute number, found end of "
+              "file");
+}
+
+TEST(ScnReader, TextureLinesAreCheckedFieldByField) {
+    ReaderDialect v;
+    v.textures = true;
+    const auto with = [&](const std::string& line) {
+        return error(scene_text() + "$ 1\n$ " + line + "\n", v);
+    };
+    EXPECT_EQ(with("0 lenspts.dat prescrip.dat 0 -5 -8 0 0 0 0 8 34"),
+              "s.scn:22: the scale of texture-mapped surface 'lenspts.dat' must not be 0");
+    EXPECT_EQ(with("0 lenspts.dat prescrip.dat 0.25 -5 -8 0 0 0 0 0 34"),
+              "s.scn:22: expected the rows of cells of texture-mapped surface 'lenspts.dat' (1 to "
+              "50000000), found '0'");
+    EXPECT_EQ(with("0 lenspts.dat prescrip.dat 0.25 -5 -8 0 0 0 0 8 2.5"),
+              "s.scn:22: expected the columns of cells of texture-mapped surface 'lenspts.dat' (1 "
+              "to 50000000), found '2.5'");
+    EXPECT_EQ(with("0 lenspts.dat prescrip.dat 0.25 -5 -8 0 0 0 0 10000 10000"),
+              "s.scn:22: the grid of texture-mapped surface 'lenspts.dat' has 10000 x 10000 "
+              "cells, more than the limit of 50000000 points");
+    EXPECT_EQ(with("0 lenspts.dat prescrip.dat 0.25 -5 -8 0 0 x 0 8 34"),
+              "s.scn:22: expected the rotation about y, found 'x'");
+    EXPECT_EQ(with("x lenspts.dat prescrip.dat 0.25 -5 -8 0 0 0 0 8 34"),
+              "s.scn:22: expected the texture-mapped surface's attribute number (a whole number), "
+              "found 'x'");
+    EXPECT_EQ(error(scene_text() + "$ -1\n", v),
+              "s.scn:21: expected the texture-mapped surface count (-V) (0 or more), found '-1'");
+}
+
+TEST(ScnReader, LinesAfterTheTextureMappedSurfacesAreIgnoredWithAWarning) {
+    ReaderDialect v;
+    v.textures = true;
+    Diagnostics d;
+    const ScnFile scn = read(scene_text() + "$ 0 none\n$ 1 2 3\n$ 4\n", v, d);
+    EXPECT_TRUE(scn.textured_surfaces.empty());
+    ASSERT_EQ(d.warnings().size(), 1u);
+    EXPECT_EQ(d.warnings()[0], "s.scn:22: 2 lines after the texture-mapped surfaces ignored");
 }
 
 TEST(ScnReader, HeaderAndViewErrors) {

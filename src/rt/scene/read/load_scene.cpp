@@ -8,6 +8,7 @@
 #include "rt/scene/read/scn_reader.h"
 #include "rt/scene/read/shape_reader.h"
 #include "rt/scene/read/surface_reader.h"
+#include "rt/scene/read/textured_surface.h"
 
 namespace rt {
 
@@ -95,6 +96,16 @@ void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path&
         });
         builder.add_surface(entry, mesh, file);
         cache.done_with(s);
+    }
+    for (const ScnTexturedSurface& entry : scn.textured_surfaces) {
+        const NamedFile& grid = entry.polygon_file;
+        const NamedFile& map = entry.texture_map;
+        const std::uint32_t file = files.index((folder / grid.name).string());
+        add_textured_surface(
+            builder, scene, entry,
+            read_named_file(folder / grid.name, "polygon file", grid.name, grid.where),
+            read_named_file(folder / map.name, "texture map", map.name, map.where), file,
+            diagnostics);
     }
     builder.finish(scn.eye_at);
 }

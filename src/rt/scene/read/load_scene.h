@@ -11,8 +11,8 @@
 namespace rt {
 
 /// Reads the scene. File names in it are relative to the .scn file's folder. Malformed input
-/// throws InputError ("file:line: message"); -V throws NotImplementedError; warnings, notes
-/// (auto-centering) and -df traces go to `diagnostics`.
+/// throws InputError ("file:line: message"); warnings, notes (auto-centering) and -df traces go
+/// to `diagnostics`.
 Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dialect,
                  Diagnostics& diagnostics);
 

@@ -13,6 +13,12 @@ inline constexpr std::int64_t kMaxItemsPerFile = 50'000'000;
 inline constexpr std::int64_t kMaxEdgesPerPolygon = 100'000;
 inline constexpr std::int64_t kMaxEntities = 1'000'000;
 inline constexpr std::int64_t kMaxSurfacesPerEntity = 1'000'000;
+/// Texture-mapped surfaces (-V) in a .scn.
+inline constexpr std::int64_t kMaxTexturedSurfaces = 1'000'000;
+/// Points of one texture-mapped surface's grid, (rows + 1) x (columns + 1).
+inline constexpr std::int64_t kMaxGridPoints = kMaxItemsPerFile;
+/// Optical centres of one texture map.
+inline constexpr std::int64_t kMaxOpticalCentres = 1'000'000;
 /// Each side of the view area, in pixels.
 inline constexpr int kMaxViewSide = 16384;
 inline constexpr int kMaxSampleResolution = 64;

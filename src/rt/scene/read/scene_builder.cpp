@@ -109,6 +109,7 @@ void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
     out.shape = shape_index(placing, polygon);
     out.smooth =
         placing.entry.surface.smooth_shaded || polygon.mark == PolygonMark::InterpolatesNormals;
+    out.texture_cell = polygon.texture_cell;
     for (const std::uint32_t vertex : loop) {
         scene_.corners.push_back(position_index(placing, vertex));
     }

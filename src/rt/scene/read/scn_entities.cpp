@@ -5,6 +5,7 @@
 #include "rt/core/text.h"
 #include "rt/scene/read/counted_lines.h"
 #include "rt/scene/read/reader_limits.h"
+#include "rt/scene/read/scn_textures.h"
 
 #include <fmt/format.h>
 
@@ -101,9 +102,11 @@ void read_entities(ItemStream& scn, const ReaderDialect& dialect, ScnFile& scene
     }
 }
 
-void check_after_entities(ItemStream& scn, const ReaderDialect& dialect, Diagnostics& diagnostics) {
+void read_after_entities(ItemStream& scn, const ReaderDialect& dialect, ScnFile& scene,
+                         Diagnostics& diagnostics) {
     if (dialect.textures) {
-        throw NotImplementedError("-V: texture-mapped optical surfaces are not implemented yet");
+        read_textured_surfaces(scn, scene, diagnostics);
+        return;
     }
     DollarLine line;
     LinesLeftOver left;

@@ -13,8 +13,9 @@ namespace rt {
 void read_entities(ItemStream& scn, const ReaderDialect& dialect, ScnFile& scene,
                    Diagnostics& diagnostics);
 
-/// Texture-mapped surfaces follow with -V (not implemented yet: NotImplementedError); without
-/// it, lines left after the entities are ignored with one warning.
-void check_after_entities(ItemStream& scn, const ReaderDialect& dialect, Diagnostics& diagnostics);
+/// With -V, the texture-mapped surfaces that follow the entities (scn_textures.h); without it,
+/// lines left after the entities are ignored with one warning.
+void read_after_entities(ItemStream& scn, const ReaderDialect& dialect, ScnFile& scene,
+                         Diagnostics& diagnostics);
 
 }  // namespace rt

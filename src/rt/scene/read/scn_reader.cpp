@@ -68,7 +68,7 @@ ScnFile read_scn(const SourceText& source, const ReaderDialect& dialect, Diagnos
         trace(scn, diagnostics, "shape file '" + scene.shape_file->name + "'");
     }
     read_entities(scn, dialect, scene, diagnostics);
-    check_after_entities(scn, dialect, diagnostics);
+    read_after_entities(scn, dialect, scene, diagnostics);
     return scene;
 }
 

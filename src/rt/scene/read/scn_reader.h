@@ -2,6 +2,7 @@
 // shape file, and each entity's optical surfaces with their placement. Files are not opened here.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,18 @@ struct ScnSurface {
     SurfacePlacement placement;
 };
 
+/// A texture-mapped optical surface of -V (manual 2.2): a grid of near-rectangles and the
+/// texture map of its cells.
+struct ScnTexturedSurface {
+    long attribute_number = 0;
+    NamedFile polygon_file;
+    NamedFile texture_map;
+    SurfacePlacement placement;
+    std::int64_t rows = 0;  ///< of cells
+    std::int64_t columns = 0;
+    SourceLocation where;
+};
+
 struct ScnFile {
     SceneHeader header;
     SceneView view;
@@ -39,6 +52,7 @@ struct ScnFile {
     std::vector<Attribute> inline_attributes;  ///< the -Df block
     std::optional<NamedFile> shape_file;       ///< the $@name line (-M)
     std::vector<ScnSurface> surfaces;
+    std::vector<ScnTexturedSurface> textured_surfaces;  ///< -V
 };
 
 /// Reads and checks the .scn under the dialect (rules in docs/formats.md).

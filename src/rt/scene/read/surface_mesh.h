@@ -20,8 +20,9 @@ struct MeshPolygon {
     long attribute_offset = 0;  ///< added to the surface's attribute number
     PolygonMark mark = PolygonMark::Ordinary;
     long shape_number = -1;  ///< with marks 2, 3, 4: the shape's place in the shape file
-    long number = 0;         ///< as messages name it (the file's index, or the order)
-    int line = 0;            ///< where it is defined
+    std::int32_t texture_cell = Polygon::kNoTexture;  ///< -V: into Scene::texture_cells
+    long number = 0;  ///< as messages name it (the file's index, or the order)
+    int line = 0;     ///< where it is defined
 };
 
 /// A material a model file defines; its place in SurfaceMesh::materials is its attribute offset.
