@@ -421,8 +421,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-de"},
     {.spelling = "--output", .form = Text, .topic = Program, .first = {"FILE", {}},
      .repeatable = true, .apply = [](Options& o, A a) { o.outputs.push_back(a.text); },
-     .summary = "Also write the picture to FILE (.gro, .png or .ppm)",
-     .details = "Repeatable; the format follows the extension.", .section = "new",
+     .summary = "Also write the picture to FILE (.gro, .exr, .png or .ppm)",
+     .details = "Repeatable; the format follows the extension. .gro and .exr keep the linear "
+                "intensities (32-bit floats); .png and .ppm the 8-bit picture.", .section = "new",
      .example = "--output twocubes.png"},
     {.spelling = "--help", .topic = Program, .apply = [](Options& o, A) { o.show_help = true; },
      .summary = "Print this help and stop", .section = "new", .example = "--help"},
