@@ -47,9 +47,10 @@ class ConsoleObserver : public RenderObserver {
 public:
     ConsoleObserver(const RunConsole& console, bool print_columns, bool print_samples)
         : console_(console), print_columns_(print_columns), print_samples_(print_samples) {}
-    void row_done(int /*y*/, int rows_done, int rows_total) override {
+    void row_done(const RowDone& row) override {
+        samples_ += row.samples;
         if (console_.progress) {
-            console_.progress(rows_done, rows_total);
+            console_.progress(row.rows_done, row.rows_total, samples_);
         }
     }
     bool wants_pixel_events() const override { return print_columns_; }
@@ -71,6 +72,7 @@ private:
     const RunConsole& console_;
     bool print_columns_;
     bool print_samples_;
+    std::uint64_t samples_ = 0;
 };
 
 // -dd: the colour map (here, the display mapping) and every pixel's display value, in the order
@@ -184,6 +186,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     ConsoleObserver observer(console, options.print_columns, options.debug_chi_square);
     RenderStatistics statistics;
     phase = Clock::now();
+    if (console.progress) {
+        console.progress(0, settings.window.height(), 0);
+    }
     Film film = render(scene, *accel, settings, observer, statistics);
     times.trace_seconds = seconds_since(phase);
     if (stack.strike_check() != nullptr) {

@@ -364,7 +364,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .section = "2.2", .example = "-V", .status = NotYet, .feature = "texture mapping"},
     {.spelling = "-dc", .topic = Debugging, .apply = [](Options& o, A) { o.print_columns = true; },
      .summary = "print column numbers",
-     .details = "Prints the column number of the pixel on each sample.", .section = "App.",
+     .details = "Prints the column number of the pixel on each sample: 'line Y column X' on "
+                "standard error as each pixel's sampling starts, rows from the bottom up.",
+     .section = "App.",
      .example = "-dc"},
     {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.accel.strike_check = true; },
      .summary = "(strike) debug ddda by comparing actual results (slow)",
@@ -453,7 +455,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "polygon from it; the rest of the ray tree uses the intersection method.",
      .section = "3.1", .example = "--zbuffer"},
     {.spelling = "--quiet", .topic = Program, .apply = [](Options& o, A) { o.quiet = true; },
-     .summary = "No progress and no notes; warnings and errors still show", .section = "new",
+     .summary = "No progress and no notes; warnings and errors still show",
+     .details = "Without it, progress goes to standard error: a bar on a terminal, a line every "
+                "5 seconds elsewhere.", .section = "new",
      .example = "--quiet"},
 });
 #pragma GCC diagnostic pop
