@@ -73,6 +73,10 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
         };
     }
     console.should_stop = rt::interrupt_requested;
+    // -doi reads its commands here; a prompt only for a person typing them.
+    console.commands = &std::cin;
+    console.answers = &std::cout;
+    console.prompt = ::isatty(STDIN_FILENO) != 0 ? "octree> " : "";
     return console;
 }
 

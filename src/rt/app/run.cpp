@@ -5,6 +5,7 @@
 #include <ctime>
 
 #include "rt/accel/accelerator_stack.h"
+#include "rt/app/inspection_runs.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
@@ -93,6 +94,13 @@ void print_colors(const Film& film, const RunConsole& console) {
     }
 }
 
+// What made the picture, and how to show it.
+void stamp(Film& film, const Options& options) {
+    film.mapping = options.display;
+    film.provenance = {options.scene, join(options.given_switches),
+                       std::string("rt ") + std::string(kVersion), utc_now()};
+}
+
 void write_outputs(const Film& film, const Options& options) {
     if (!options.no_gro) {
         write_image(film, default_gro_path(options.scene));
@@ -151,6 +159,21 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
+    if (options.debug_octree_interactive) {
+        inspect_octree(scene, options, console);
+        return RunOutcome::Finished;
+    }
+    if (options.wireframe_only) {
+        Film film = wireframe_picture(scene, options, settings.window, console);
+        stamp(film, options);
+        write_outputs(film, options);
+        return RunOutcome::Finished;
+    }
+    if (options.draw_octree) {
+        console.note(
+            "-oo draws the octree's boxes on the wireframe, which only -w writes; the "
+            "picture is ray traced as usual");
+    }
 
     phase = Clock::now();
     const AcceleratorStack stack(scene, options.accel,
@@ -194,9 +217,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     if (stack.strike_check() != nullptr) {
         console.note(stack.strike_check()->summary());
     }
-    film.mapping = options.display;
-    film.provenance = {options.scene, join(options.given_switches),
-                       std::string("rt ") + std::string(kVersion), utc_now()};
+    stamp(film, options);
     if (options.debug_color) {
         print_colors(film, console);
     }

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <istream>
+#include <ostream>
 #include <string>
 
 #include "rt/app/options.h"
@@ -21,6 +23,11 @@ struct RunConsole {
     /// starts, then after every row. May be empty.
     std::function<void(int rows_done, int rows_total, std::uint64_t samples)> progress;
     std::function<bool()> should_stop;  ///< Ctrl-C; may be empty
+    /// -doi: where the octree session reads its commands and writes its answers (rt: standard
+    /// input and output), and the prompt before each command (empty when no one types them).
+    std::istream* commands = nullptr;
+    std::ostream* answers = nullptr;
+    std::string prompt;
 };
 
 enum class RunOutcome { Finished, Interrupted };
