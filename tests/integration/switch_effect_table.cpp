@@ -101,7 +101,7 @@ std::vector<PictureRow> light_rows() {
           {"wall", Darker, 120.0},
           {"white_light", Within, -30.0, -5.0}},
          "-Wc 0.5: as -Wr, and no light beyond 0.5 radians of the emitter's normal; the white "
-         "light itself, seen directly, loses only the light the others gave it"},
+         "light seen directly darkens a little"},
         {"-Wt",
          {"-Wt1.0"},
          "gallery",

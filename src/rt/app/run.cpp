@@ -110,6 +110,27 @@ void write_outputs(const Film& film, const Options& options) {
     }
 }
 
+// -doi's session and -w's wireframe, which trace nothing; true when the run is over.
+bool run_without_tracing(const Scene& scene, const Options& options, const PixelRect& window,
+                         const RunConsole& console) {
+    if (options.debug_octree_interactive) {
+        inspect_octree(scene, options, console);
+        return true;
+    }
+    if (options.wireframe_only) {
+        Film film = wireframe_picture(scene, options, window, console);
+        stamp(film, options);
+        write_outputs(film, options);
+        return true;
+    }
+    if (options.draw_octree) {
+        console.note(
+            "-oo draws the octree's boxes on the wireframe, which only -w writes; the "
+            "picture is ray traced as usual");
+    }
+    return false;
+}
+
 }  // namespace
 
 std::filesystem::path resolve_scene_path(const std::string& scene_argument) {
@@ -159,20 +180,8 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
-    if (options.debug_octree_interactive) {
-        inspect_octree(scene, options, console);
+    if (run_without_tracing(scene, options, settings.window, console)) {
         return RunOutcome::Finished;
-    }
-    if (options.wireframe_only) {
-        Film film = wireframe_picture(scene, options, settings.window, console);
-        stamp(film, options);
-        write_outputs(film, options);
-        return RunOutcome::Finished;
-    }
-    if (options.draw_octree) {
-        console.note(
-            "-oo draws the octree's boxes on the wireframe, which only -w writes; the "
-            "picture is ray traced as usual");
     }
 
     phase = Clock::now();

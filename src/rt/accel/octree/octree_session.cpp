@@ -127,7 +127,7 @@ private:
 };
 
 const std::array<Session::Command, 9>& Session::commands() {
-    static const std::array<Command, 9> kCommands{{
+    static constexpr std::array<Command, 9> kCommands{{
         {"help", "", "this list", &Session::help, 0},
         {"node", "", "the current node: where it is, its box, leaf or children", &Session::node, 0},
         {"child", "N", "go down to the child in octant N (0-7: bit 0 +x, bit 1 +y, bit 2 +z)",
