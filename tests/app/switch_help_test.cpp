@@ -31,7 +31,7 @@ TEST(SwitchHelp, UsageListsEverySwitchOnALineOfItsOwn) {
                 << spec.spelling;
         }
     }
-    EXPECT_TRUE(has_line_with(usage, "-w", "* Wireframe only"));
+    EXPECT_TRUE(has_line_with(usage, "-w", "  Wireframe only"));
     EXPECT_TRUE(has_line_with(usage, "-Dd", "  disable Distributing"));
 }
 

@@ -150,8 +150,8 @@ TEST(SwitchParser, LongestSpellingWins) {
     EXPECT_TRUE(parse_command_line({"s", "-dsp"}).accel.strike_print);
     EXPECT_FALSE(parse_command_line({"s", "-dsp"}).accel.strike_check);
     EXPECT_TRUE(parse_command_line({"s", "-doo"}).accel.octree_listing.has_value());
-    EXPECT_EQ(usage_error({"s", "-doi"}),
-              "not implemented: -doi: octree debugging is not implemented yet");
+    EXPECT_TRUE(parse_command_line({"s", "-doi"}).debug_octree_interactive);
+    EXPECT_FALSE(parse_command_line({"s", "-doi"}).accel.octree_listing.has_value());
     EXPECT_EQ(parse_command_line({"s", "-Stg1.0"}).shading.specular.law(),
               SpecularLaw::TorranceSparrowGaussian);
     EXPECT_TRUE(parse_command_line({"s", "-Dp"}).dialect.no_power_fields);

@@ -117,7 +117,7 @@ TEST(SwitchTable, StatusesOfThisRelease) {
         "-dc",  "-df",  "-I",  "-Xp",  "-Xr", "-dx",  "-F",  "-Oi", "-O1", "-Sg", "-Stg",
         "-Stb", "-Co",  "-Ci", "-Cf",  "-Wr", "-Wc",  "-Wt", "-K",  "-p",  "-r",  "-E",
         "-Ot",  "-De",  "-de", "-tv",  "-od", "-ol",  "-on", "-of", "-op", "-ss", "-ds",
-        "-dsp", "-dso", "-dl", "-doo", "-dd", "-dof", "-V"};
+        "-dsp", "-dso", "-dl", "-doo", "-dd", "-dof", "-w",  "-oo", "-doi", "-V"};
     for (const SwitchSpec& spec : switch_table()) {
         const std::set<std::string_view> long_not_yet = {};
         const bool expected = (spec.is_long_option() && !long_not_yet.contains(spec.spelling)) ||

@@ -45,15 +45,17 @@ TEST(ImageWriter, UnknownExtensionIsAUsageError) {
         image_format_for("x.jpg");
         FAIL();
     } catch (const UsageError& e) {
-        EXPECT_STREQ(e.what(),
-                     "cannot write 'x.jpg': unknown image format '.jpg' (known: .gro, .png, .ppm)");
+        EXPECT_STREQ(
+            e.what(),
+            "cannot write 'x.jpg': unknown image format '.jpg' (known: .gro, .exr, .png, .ppm)");
     }
     try {
         image_format_for("picture");
         FAIL();
     } catch (const UsageError& e) {
-        EXPECT_STREQ(e.what(),
-                     "cannot write 'picture': no image format extension (known: .gro, .png, .ppm)");
+        EXPECT_STREQ(
+            e.what(),
+            "cannot write 'picture': no image format extension (known: .gro, .exr, .png, .ppm)");
     }
 }
 

@@ -82,6 +82,22 @@ TEST_F(ShowProgram, OutputConvertsWithTheStoredMapping) {
     EXPECT_EQ(read_ppm(dir_.path() / "b.ppm"), to_display(film_));
 }
 
+// .gro to .exr and back changes nothing: the EXR keeps 32-bit floats, the windows, the rows
+// finished, the display mapping and what made the picture; show reads the .exr like a .gro.
+TEST_F(ShowProgram, ConvertsToExrAndBackWithoutChange) {
+    const Outcome to_exr = run("pic --output pic.exr");
+    EXPECT_EQ(to_exr.code, 0) << to_exr.err;
+    const Outcome back = run("pic.exr --output back.gro --output back.png");
+    EXPECT_EQ(back.code, 0) << back.err;
+    EXPECT_EQ(test::read_text(dir_.path() / "back.gro"), test::read_text(dir_.path() / "pic.gro"));
+    EXPECT_EQ(read_png(dir_.path() / "back.png"), to_display(film_));
+    const Outcome info = run("pic.exr --info");
+    EXPECT_NE(info.out.find("3 of 4 finished"), std::string::npos) << info.out;
+    EXPECT_EQ(run("missing.exr --info").code, 3);
+    dir_.write("bad.exr", "not a picture");
+    EXPECT_EQ(run("bad.exr --info").code, 1);
+}
+
 TEST_F(ShowProgram, MultiplierAndClipOverrideTheStoredMapping) {
     const Outcome o = run("pic -m4 -c --output a.png");
     EXPECT_EQ(o.code, 0) << o.err;

@@ -106,8 +106,11 @@ std::vector<PictureRow> light_rows() {
         {"-Wc",
          {"-Wc", "0.5"},
          "gallery",
-         {{"floor", Within, -100.0, -85.0}, {"wall", Darker, 120.0}},
-         "-Wc 0.5: as -Wr, and no light beyond 0.5 radians of the emitter's normal"},
+         {{"floor", Within, -100.0, -85.0},
+          {"wall", Darker, 120.0},
+          {"white_light", Within, -30.0, -5.0}},
+         "-Wc 0.5: as -Wr, and no light beyond 0.5 radians of the emitter's normal; the white "
+         "light seen directly darkens a little"},
         {"-Wt",
          {"-Wt1.0"},
          "gallery",
@@ -391,6 +394,30 @@ std::vector<PictureRow> same_picture_rows() {
     };
 }
 
+// The wireframe (docs/wireframe.md): no ray is traced.
+std::vector<PictureRow> wireframe_rows() {
+    using enum Effect;
+    return {
+        {"-w",
+         {"-w"},
+         "gallery",
+         {{"all", DisplayRatio, 0.0, 0.3},
+          {"wall", DisplayRatio, 0.0, 0.01},
+          {"white_light", Darker, 100.0},
+          {"mirror", Darker, 50.0},
+          {"floor", Darker, 60.0}},
+         "-w: the wireframe only, black but for the lines: the lights, the mirror, the floor "
+         "(but for its grid) and the wall (no edge crosses it) go dark"},
+        {"-oo",
+         {"-w", "-oo"},
+         "gallery",
+         {{"all", Brighter, 1.0}, {"all", Brighter, 30.0, 1.0, 2}, {"all", Changes, 0.02, 0.5}},
+         "-oo: the octree's boxes, blue, added to the wireframe",
+         {},
+         {"-w"}},
+    };
+}
+
 // Debugging switches: they print, and leave the picture alone.
 std::vector<PictureRow> debugging_rows() {
     using enum Effect;
@@ -592,9 +619,10 @@ const std::vector<TestScene>& test_scenes() {
 const std::vector<PictureRow>& picture_rows() {
     static const std::vector<PictureRow> rows = [] {
         std::vector<PictureRow> all;
-        for (auto part : {&display_rows, &light_rows, &ray_tree_rows, &sampling_rows,
-                          &intersection_rows, &highlight_rows, &smooth_shading_rows, &format_rows,
-                          &same_picture_rows, &debugging_rows, &strike_rows, &same_scene_rows}) {
+        for (auto part :
+             {&display_rows, &light_rows, &ray_tree_rows, &sampling_rows, &intersection_rows,
+              &highlight_rows, &smooth_shading_rows, &format_rows, &same_picture_rows,
+              &debugging_rows, &strike_rows, &same_scene_rows, &wireframe_rows}) {
             const std::vector<PictureRow> some = part();
             all.insert(all.end(), some.begin(), some.end());
         }
@@ -609,6 +637,8 @@ const std::vector<OtherSwitch>& other_switches() {
         {"-r", "RtProfile.DashRFiresRandomRaysAndWritesNoPicture: no picture at all"},
         {"-L", "SwitchEffectTable.LDrawsOnlyFromThatLineUp: a shorter picture"},
         {"-doo", "GridRender tests: writes octree.lst, not a picture"},
+        {"-doi",
+         "OctreeSession tests and RtOctreeSession: a session on standard input, no picture"},
         {"--output", "every row here: the PPM each picture is read from"},
         {"--model", "ModelProgram tests: a scene of its own, made around the model"},
         {"--help", "RtProgram.HelpAndVersion"},

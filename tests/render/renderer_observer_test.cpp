@@ -1,6 +1,7 @@
 // What render() tells its observer and how it stops: rows bottom up, every pixel announced once
 // (-dc), and a stop request (Ctrl-C) keeping a contiguous run of finished rows from the bottom.
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -40,10 +41,11 @@ class RecordingObserver : public RenderObserver {
 public:
     explicit RecordingObserver(int stop_after = 0, bool pixel_events = false)
         : stop_after_(stop_after), pixel_events_(pixel_events) {}
-    void row_done(int y, int rows_done, int rows_total) override {
-        rows.push_back(y);
-        EXPECT_EQ(rows_done, static_cast<int>(rows.size()));
-        EXPECT_EQ(rows_total, kWindow.height());
+    void row_done(const RowDone& row) override {
+        rows.push_back(row.y);
+        samples += row.samples;
+        EXPECT_EQ(row.rows_done, static_cast<int>(rows.size()));
+        EXPECT_EQ(row.rows_total, kWindow.height());
     }
     bool wants_pixel_events() const override { return pixel_events_; }
     void pixel_started(int x, int y) override { pixels.emplace_back(x, y); }
@@ -53,6 +55,7 @@ public:
 
     std::vector<int> rows;
     std::vector<std::pair<int, int>> pixels;
+    std::uint64_t samples = 0;
 
 private:
     int stop_after_;
@@ -71,6 +74,17 @@ TEST(RendererObserver, OneThreadFinishesRowsFromTheBottomUp) {
     EXPECT_TRUE(film.complete());
     EXPECT_FALSE(statistics.interrupted);
     EXPECT_TRUE(observer.pixels.empty());  // nobody asked for pixel events
+}
+
+// The samples each row reports (the progress bar's samples per second) are the eye rays traced.
+TEST(RendererObserver, RowsReportTheEyeRaysTheyTook) {
+    for (const int threads : {1, 3}) {
+        RecordingObserver observer;
+        RenderStatistics statistics;
+        render_with(observer, threads, statistics);
+        EXPECT_EQ(observer.samples, statistics.by_kind[RayKind::Eye].rays) << threads;
+        EXPECT_GE(observer.samples, static_cast<std::uint64_t>(kWindow.width() * kWindow.height()));
+    }
 }
 
 TEST(RendererObserver, EveryPixelIsAnnouncedOnceInDrawingOrder) {

@@ -20,7 +20,7 @@ std::string shell_quote(const std::string& word) {
 }  // namespace
 
 ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
-                          const std::filesystem::path& cwd) {
+                          const std::filesystem::path& cwd, const std::filesystem::path& input) {
     const TempDir capture;
     std::string command =
         "cd " + shell_quote(cwd.string()) + " && " + shell_quote((bin_dir() / program).string());
@@ -29,7 +29,8 @@ ProgramResult run_program(const std::string& program, const std::vector<std::str
     }
     const std::filesystem::path out = capture.path() / "out";
     const std::filesystem::path err = capture.path() / "err";
-    command += " </dev/null >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+    command += " <" + shell_quote(input.string()) + " >" + shell_quote(out.string()) + " 2>" +
+               shell_quote(err.string());
     const int status = std::system(command.c_str());  // NOLINT(concurrency-mt-unsafe)
     ProgramResult result;
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -13,8 +13,9 @@ struct ProgramResult {
     std::string err;  ///< standard error
 };
 
-/// Runs bin_dir()/program with args in the folder cwd (stdin from /dev/null).
+/// Runs bin_dir()/program with args in the folder cwd, standard input read from `input`.
 ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
-                          const std::filesystem::path& cwd);
+                          const std::filesystem::path& cwd,
+                          const std::filesystem::path& input = "/dev/null");
 
 }  // namespace rt::test

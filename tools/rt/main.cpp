@@ -1,6 +1,7 @@
 // rt SCENE [switches]: renders a CMU RayTracer scene. Parses the command line, runs the library,
 // and turns errors into one-line messages and exit codes (docs/usage.md).
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <functional>
@@ -11,6 +12,7 @@
 
 #include "rt/app/help.h"
 #include "rt/app/interrupt.h"
+#include "rt/app/progress_report.h"
 #include "rt/app/run.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
@@ -31,35 +33,50 @@ void print_line(const std::string& line) {
     std::cerr << line << '\n';
 }
 
-// A progress line on a terminal, at most every quarter second.
-std::function<void(int, int)> progress_printer(bool quiet) {
-    if (quiet || ::isatty(STDERR_FILENO) == 0) {
-        return {};
-    }
-    auto last = std::make_shared<std::chrono::steady_clock::time_point>();
-    return [last](int done, int total) {
-        const auto now = std::chrono::steady_clock::now();
-        if (done < total && now - *last < std::chrono::milliseconds(250)) {
-            return;
-        }
-        *last = now;
-        std::cerr << "\rrt: " << done << " of " << total << " lines" << (done == total ? "\n" : "")
-                  << std::flush;
-    };
+double steady_seconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
-rt::RunConsole make_console(const rt::Options& options) {
-    rt::RunConsole console;
-    console.warning = [](const std::string& m) { print_line("rt: warning: " + m); };
-    console.note = [quiet = options.quiet](const std::string& m) {
-        if (!quiet) {
-            print_line("rt: " + m);
+// Progress on standard error: a bar on a terminal, a line every few seconds elsewhere, nothing
+// with --quiet.
+std::unique_ptr<rt::ProgressReport> make_progress(const rt::Options& options) {
+    if (options.quiet) {
+        return nullptr;
+    }
+    const auto style = ::isatty(STDERR_FILENO) != 0 ? rt::ProgressReport::Style::Bar
+                                                    : rt::ProgressReport::Style::Lines;
+    return std::make_unique<rt::ProgressReport>(std::cerr, style, steady_seconds);
+}
+
+// Every message goes through the progress report, so that none lands in the middle of the bar.
+rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* progress) {
+    const std::function<void(const std::string&)> line = [progress](const std::string& text) {
+        if (progress != nullptr) {
+            progress->print_line(text);
+        } else {
+            print_line(text);
         }
     };
-    console.trace = print_line;
+    rt::RunConsole console;
+    console.warning = [line](const std::string& m) { line("rt: warning: " + m); };
+    console.note = [line, quiet = options.quiet](const std::string& m) {
+        if (!quiet) {
+            line("rt: " + m);
+        }
+    };
+    console.trace = line;
     console.report = [](const std::string& text) { std::fputs(text.c_str(), stdout); };
-    console.progress = progress_printer(options.quiet);
+    if (progress != nullptr) {
+        console.progress = [progress](int done, int total, std::uint64_t samples) {
+            progress->update(done, total, samples);
+        };
+    }
     console.should_stop = rt::interrupt_requested;
+    // -doi reads its commands here; a prompt only for a person typing them.
+    console.commands = &std::cin;
+    console.answers = &std::cout;
+    console.prompt = ::isatty(STDIN_FILENO) != 0 ? "octree> " : "";
     return console;
 }
 
@@ -78,8 +95,10 @@ int run(const std::vector<std::string>& args) {
         return kOk;
     }
     rt::install_interrupt_handler();
-    if (rt::run(options, make_console(options)) == rt::RunOutcome::Interrupted) {
-        print_line("rt: interrupted; the finished lines were written");
+    const std::unique_ptr<rt::ProgressReport> progress = make_progress(options);
+    const rt::RunConsole console = make_console(options, progress.get());
+    if (rt::run(options, console) == rt::RunOutcome::Interrupted) {
+        console.trace("rt: interrupted; the finished lines were written");  // printed as is
         return kInterrupted;
     }
     return kOk;

@@ -1,5 +1,5 @@
-// show NAME [--output FILE]... [--info] [-m F] [-c]: looks at a .gro picture written by rt
-// (manual 1.2). Reads the command line with CLI11, calls the image library, maps errors to exit
+// show NAME [--output FILE]... [--info] [-m F] [-c]: looks at a .gro (or .exr) picture written by
+// rt (manual 1.2). Reads the command line with CLI11, calls the image library, maps errors to exit
 // codes.
 #include <exception>
 #include <filesystem>
@@ -10,7 +10,6 @@
 
 #include "rt/core/error.h"
 #include "rt/image/film_summary.h"
-#include "rt/image/gro_format.h"
 #include "rt/image/image_writer.h"
 
 #include "command_line/command_line.h"
@@ -34,11 +33,13 @@ struct ShowArgs {
 
 // The manual's "show name", with the conversions rt adds. A repeated -m or -c: the last wins.
 void add_options(CLI::App& app, ShowArgs& s) {
-    app.add_option("NAME", s.name, "the .gro picture, with or without the .gro suffix")
+    app.add_option("NAME", s.name,
+                   "the .gro picture, with or without the .gro suffix, or an .exr picture")
         ->required()
         ->type_name("");
     app.add_option("-o,--output", s.outputs,
-                   "write the picture to FILE (.png, .ppm or .gro); may be repeated")
+                   "write the picture to FILE (.png, .ppm, .gro or .exr); may be\n"
+                   "repeated")
         ->type_name("FILE");
     app.add_flag("--info", s.info,
                  "print the picture's size, window, rows finished, display mapping,\n"
@@ -53,10 +54,12 @@ void add_options(CLI::App& app, ShowArgs& s) {
                  "strange colors)");
 }
 
-// "show name" names name.gro; a name already ending in .gro, or an existing file, is taken as is.
-std::filesystem::path gro_path(const std::string& name) {
+// "show name" names name.gro; a name already ending in .gro or .exr, or an existing file, is taken
+// as is.
+std::filesystem::path picture_path(const std::string& name) {
     std::filesystem::path given(name);
-    if (given.extension() == ".gro" || std::filesystem::is_regular_file(given)) {
+    if (given.extension() == ".gro" || given.extension() == ".exr" ||
+        std::filesystem::is_regular_file(given)) {
         return given;
     }
     return std::filesystem::path(name + ".gro");
@@ -70,7 +73,7 @@ int run(const ShowArgs& s) {
         throw rt::NotImplementedError(
             "displaying in a window is not implemented yet; use --output NAME.png or --info");
     }
-    rt::Film film = rt::read_gro(gro_path(s.name));
+    rt::Film film = rt::read_linear_image(picture_path(s.name));
     film.mapping.multiplier = s.multiplier.value_or(film.mapping.multiplier);
     film.mapping.clip = film.mapping.clip && !s.no_clip;
     if (s.info) {
@@ -91,9 +94,9 @@ void print_error(const std::string& message) {
 int main(int argc, char** argv) {
     try {
         CLI::App app(
-            "Looks at a .gro picture written by rt (manual 1.2): prints what it holds, or\n"
-            "converts it to PNG, PPM or .gro. Exit codes: 0 ok, 1 bad picture, 2 usage,\n"
-            "3 I/O, 4 internal.",
+            "Looks at a .gro picture written by rt (manual 1.2), or an .exr: prints what\n"
+            "it holds, or converts it to PNG, PPM, .gro or .exr. Exit codes: 0 ok, 1 bad\n"
+            "picture, 2 usage, 3 I/O, 4 internal.",
             "show");
         rt::cli::configure(app);
         ShowArgs args;

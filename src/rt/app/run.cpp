@@ -6,6 +6,7 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
+#include "rt/app/inspection_runs.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
@@ -49,9 +50,10 @@ class ConsoleObserver : public RenderObserver {
 public:
     ConsoleObserver(const RunConsole& console, bool print_columns, bool print_samples)
         : console_(console), print_columns_(print_columns), print_samples_(print_samples) {}
-    void row_done(int /*y*/, int rows_done, int rows_total) override {
+    void row_done(const RowDone& row) override {
+        samples_ += row.samples;
         if (console_.progress) {
-            console_.progress(rows_done, rows_total);
+            console_.progress(row.rows_done, row.rows_total, samples_);
         }
     }
     bool wants_pixel_events() const override { return print_columns_; }
@@ -73,6 +75,7 @@ private:
     const RunConsole& console_;
     bool print_columns_;
     bool print_samples_;
+    std::uint64_t samples_ = 0;
 };
 
 // -dd: the colour map (here, the display mapping) and every pixel's display value, in the order
@@ -91,6 +94,14 @@ void print_colors(const Film& film, const RunConsole& console) {
                                       y, d[0], d[1], d[2], v.r, v.g, v.b));
         }
     }
+}
+
+// What made the picture, and how to show it.
+void stamp(Film& film, const Options& options) {
+    film.mapping = options.display;
+    film.provenance = {options.model.empty() ? options.scene : "--model " + options.model,
+                       join(options.given_switches), std::string("rt ") + std::string(kVersion),
+                       utc_now()};
 }
 
 void write_outputs(const Film& film, const Options& options) {
@@ -113,6 +124,27 @@ Scene read_scene(const Options& options, Diagnostics& diagnostics) {
     scene.header.sptncde = 1;
     scene.header.octr = suggested_octree_depth(scene.polygons.size());
     return scene;
+}
+
+// -doi's session and -w's wireframe, which trace nothing; true when the run is over.
+bool run_without_tracing(const Scene& scene, const Options& options, const PixelRect& window,
+                         const RunConsole& console) {
+    if (options.debug_octree_interactive) {
+        inspect_octree(scene, options, console);
+        return true;
+    }
+    if (options.wireframe_only) {
+        Film film = wireframe_picture(scene, options, window, console);
+        stamp(film, options);
+        write_outputs(film, options);
+        return true;
+    }
+    if (options.draw_octree) {
+        console.note(
+            "-oo draws the octree's boxes on the wireframe, which only -w writes; the "
+            "picture is ray traced as usual");
+    }
+    return false;
 }
 
 }  // namespace
@@ -170,6 +202,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
+    if (run_without_tracing(scene, options, settings.window, console)) {
+        return RunOutcome::Finished;
+    }
 
     phase = Clock::now();
     const AcceleratorStack stack(scene, options.accel,
@@ -205,15 +240,15 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     ConsoleObserver observer(console, options.print_columns, options.debug_chi_square);
     RenderStatistics statistics;
     phase = Clock::now();
+    if (console.progress) {
+        console.progress(0, settings.window.height(), 0);
+    }
     Film film = render(scene, *accel, settings, observer, statistics);
     times.trace_seconds = seconds_since(phase);
     if (stack.strike_check() != nullptr) {
         console.note(stack.strike_check()->summary());
     }
-    film.mapping = options.display;
-    film.provenance = {options.model.empty() ? options.scene : "--model " + options.model,
-                       join(options.given_switches), std::string("rt ") + std::string(kVersion),
-                       utc_now()};
+    stamp(film, options);
     if (options.debug_color) {
         print_colors(film, console);
     }

@@ -2,8 +2,11 @@
 // parses the command line, calls this and turns errors into messages and exit codes.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <istream>
+#include <ostream>
 #include <string>
 
 #include "rt/app/options.h"
@@ -12,12 +15,19 @@ namespace rt {
 
 /// Where the run reports what a user should see; main() points these at stderr.
 struct RunConsole {
-    std::function<void(const std::string&)> warning;              ///< "rt: warning: ..."
-    std::function<void(const std::string&)> note;                 ///< informational lines
-    std::function<void(const std::string&)> trace;                ///< -df parse trace, -dc columns
-    std::function<void(const std::string&)> report;               ///< -p tables, on standard output
-    std::function<void(int rows_done, int rows_total)> progress;  ///< may be empty
-    std::function<bool()> should_stop;                            ///< Ctrl-C; may be empty
+    std::function<void(const std::string&)> warning;  ///< "rt: warning: ..."
+    std::function<void(const std::string&)> note;     ///< informational lines
+    std::function<void(const std::string&)> trace;    ///< -df parse trace, -dc columns
+    std::function<void(const std::string&)> report;   ///< -p tables, on standard output
+    /// Rows done of the total and the samples taken so far; called with 0 rows as the render
+    /// starts, then after every row. May be empty.
+    std::function<void(int rows_done, int rows_total, std::uint64_t samples)> progress;
+    std::function<bool()> should_stop;  ///< Ctrl-C; may be empty
+    /// -doi: where the octree session reads its commands and writes its answers (rt: standard
+    /// input and output), and the prompt before each command (empty when no one types them).
+    std::istream* commands = nullptr;
+    std::ostream* answers = nullptr;
+    std::string prompt;
 };
 
 enum class RunOutcome { Finished, Interrupted };

@@ -44,10 +44,6 @@ constexpr Range whole(int low, int high) {
     return {static_cast<double>(low), static_cast<double>(high), false, false, true};
 }
 
-// Shared wording of the features this release does not have yet.
-constexpr std::string_view kWireframe = "the wireframe display";
-constexpr std::string_view kOctreeDebug = "octree debugging";
-
 // -S: the law and its slope m (1 for the Phong laws, which do not use it); the Gaussian normaliser
 // is computed here, once. The highlight colour (-C) is kept.
 void set_specular_law(Options& o, SpecularLaw law, double slope_m) {
@@ -66,8 +62,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .section = "App.", .example = "-n"},
     {.spelling = "-w", .apply = [](Options& o, A) { o.wireframe_only = true; },
      .summary = "Wireframe only, no raytracing",
-     .details = "Probably used only in front-end user interfaces.", .section = "App.",
-     .example = "-w", .status = NotYet, .feature = kWireframe},
+     .details = "Draws every polygon's edges (white) and the header's normallength normals "
+                "(green) through the renderer's camera into the picture (the .gro and --output "
+                "files), and traces no ray (docs/wireframe.md).", .section = "App.",
+     .example = "-w"},
     {.spelling = "-m", .form = Number, .first = {"the multiplier", kPositive},
      .apply = [](Options& o, A a) { o.display.multiplier = a.first; },
      .summary = "Multiplies screen display values by 2.",
@@ -95,8 +93,11 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "-oo", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.draw_octree = true; },
      .summary = "Draw (output) octree boxes on the wireframe",
-     .details = "To see what the octree building machinery is doing.", .section = "App.",
-     .example = "-oo", .status = NotYet, .feature = kWireframe},
+     .details = "To see what the octree building machinery is doing: with -w, the boxes of "
+                "the octree's leaves are drawn too (blue). It is the octree --accel octree or the "
+                "header builds, built for the drawing whatever the method. Without -w the "
+                "picture is ray traced as usual.", .section = "App.",
+     .example = "-oo"},
     {.spelling = "-ol", .form = Integer, .topic = SpatialEncoding,
      .first = {"the power of 2", whole(1, 30)},
      .apply = [](Options& o, A a) { o.accel.method.octree.octlist_power = static_cast<int>(a.integer); },
@@ -366,7 +367,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .section = "2.2", .example = "-V"},
     {.spelling = "-dc", .topic = Debugging, .apply = [](Options& o, A) { o.print_columns = true; },
      .summary = "print column numbers",
-     .details = "Prints the column number of the pixel on each sample.", .section = "App.",
+     .details = "Prints the column number of the pixel on each sample: 'line Y column X' on "
+                "standard error as each pixel's sampling starts, rows from the bottom up.",
+     .section = "App.",
      .example = "-dc"},
     {.spelling = "-ds", .topic = Debugging, .apply = [](Options& o, A) { o.accel.strike_check = true; },
      .summary = "(strike) debug ddda by comparing actual results (slow)",
@@ -395,8 +398,11 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "polygon ids of each leaf.", .section = "App.", .example = "-doo"},
     {.spelling = "-doi", .topic = Debugging,
      .apply = [](Options& o, A) { o.debug_octree_interactive = true; },
-     .summary = "Debug octree interactively", .details = "Did not work in the original.",
-     .section = "App.", .example = "-doi", .status = NotYet, .feature = kOctreeDebug},
+     .summary = "Debug octree interactively",
+     .details = "Did not work in the original. Builds the octree and reads commands on standard "
+                "input (help, node, child N, up, root, list, find X Y Z, ray OX OY OZ DX DY DZ, "
+                "pixel X Y, quit), answering on standard output; renders no picture.",
+     .section = "App.", .example = "-doi"},
     {.spelling = "-dof", .topic = Debugging,
      .apply = [](Options& o, A) { o.accel.trace_fill = true; }, .summary = "Debug octree fillplane",
      .details = "Traces the -op fill-plane build of the octree level by level on standard error: "
@@ -423,8 +429,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .example = "-de"},
     {.spelling = "--output", .form = Text, .topic = Program, .first = {"FILE", {}},
      .repeatable = true, .apply = [](Options& o, A a) { o.outputs.push_back(a.text); },
-     .summary = "Also write the picture to FILE (.gro, .png or .ppm)",
-     .details = "Repeatable; the format follows the extension.", .section = "new",
+     .summary = "Also write the picture to FILE (.gro, .exr, .png or .ppm)",
+     .details = "Repeatable; the format follows the extension. .gro and .exr keep the linear "
+                "intensities (32-bit floats); .png and .ppm the 8-bit picture.", .section = "new",
      .example = "--output twocubes.png"},
     {.spelling = "--model", .form = Text, .topic = Program, .first = {"FILE", {}},
      .apply = [](Options& o, A a) { o.model = a.text; },
@@ -461,7 +468,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "polygon from it; the rest of the ray tree uses the intersection method.",
      .section = "3.1", .example = "--zbuffer"},
     {.spelling = "--quiet", .topic = Program, .apply = [](Options& o, A) { o.quiet = true; },
-     .summary = "No progress and no notes; warnings and errors still show", .section = "new",
+     .summary = "No progress and no notes; warnings and errors still show",
+     .details = "Without it, progress goes to standard error: a bar on a terminal, a line every "
+                "5 seconds elsewhere.", .section = "new",
      .example = "--quiet"},
 });
 #pragma GCC diagnostic pop

@@ -38,8 +38,9 @@ float get_float_le(const std::uint8_t* in) {
     return std::bit_cast<float>(bits);
 }
 
-// Everything written must read back, so the writer refuses what the reader would refuse.
-void check_writable(const Film& film) {
+}  // namespace
+
+void check_storable(const Film& film) {
     film.check_consistent();
     const PixelRect& w = film.window();
     const auto fail = [](const std::string& why) { throw Error(why); };
@@ -71,6 +72,8 @@ void check_writable(const Film& film) {
         }
     }
 }
+
+namespace {
 
 void write_pixels(const Film& film, std::ostream& out) {
     const std::size_t row_values = static_cast<std::size_t>(film.width()) * 3;
@@ -143,7 +146,7 @@ void read_pixels(std::istream& in, const GroHeader& h, Film& film, const std::st
 
 void write_gro(const Film& film, const std::filesystem::path& path) {
     try {
-        check_writable(film);
+        check_storable(film);
     } catch (const Error& e) {
         throw Error("cannot write " + path.string() + ": " + e.what());
     }

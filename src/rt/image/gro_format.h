@@ -20,6 +20,12 @@ inline constexpr std::string_view kGroPixelEncoding = "rgb-float32-le";
 /// represented (window outside the view, a non-finite pixel, ...) and rt::IoError on I/O failure.
 void write_gro(const Film& film, const std::filesystem::path& path);
 
+/// Throws rt::Error saying what a picture file could not hold: an empty or oversized view, a
+/// window outside it, a first finished row outside the window, a negative or non-finite display
+/// multiplier, a non-finite pixel. Every writer of linear pictures (.gro, .exr) calls it, so that
+/// what is written reads back.
+void check_storable(const Film& film);
+
 /// Reads a .gro file, validating it strictly. Throws rt::InputError ("file:line: expected ...,
 /// found ...") for a malformed file and rt::IoError if it cannot be read.
 Film read_gro(const std::filesystem::path& path);

@@ -94,7 +94,7 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
     return statistics.mean();
 }
 
-void record_finished_row(RenderJob& job, int y) {
+void record_finished_row(RenderJob& job, int y, std::uint64_t samples) {
     const PixelRect& w = job.settings.window;
     std::lock_guard lock(job.observer_mutex);
     job.finished[static_cast<std::size_t>(y - w.top)] = 1;
@@ -104,7 +104,7 @@ void record_finished_row(RenderJob& job, int y) {
         --first;
     }
     job.film.set_first_finished_row(first);
-    job.observer.row_done(y, job.rows_done, w.height());
+    job.observer.row_done({y, job.rows_done, w.height(), samples});
     if (job.observer.should_stop()) {
         job.stopping = true;
     }
@@ -120,6 +120,7 @@ void render_rows(RenderJob& job, KindCounters& counters) {
             return;
         }
         const int y = w.bottom - index;
+        std::uint64_t samples = 0;
         for (int x = w.left; x <= w.right; ++x) {
             if (pixel_events) {
                 std::lock_guard lock(job.observer_mutex);
@@ -127,12 +128,13 @@ void render_rows(RenderJob& job, KindCounters& counters) {
             }
             PixelReport report;
             job.film.set_pixel(x, y, render_pixel(job, x, y, counters, report));
+            samples += report.samples;
             if (sample_events) {
                 std::lock_guard lock(job.observer_mutex);
                 job.observer.pixel_sampled(x, y, report);
             }
         }
-        record_finished_row(job, y);
+        record_finished_row(job, y, samples);
     }
 }
 

@@ -26,17 +26,20 @@ struct PixelReport {
     RayTreeCounts tree;         ///< summed over its samples
 };
 
+/// A row just finished, as the observer hears of it.
+struct RowDone {
+    int y = 0;
+    int rows_done = 0;  ///< rows finished so far, this one included
+    int rows_total = 0;
+    std::uint64_t samples = 0;  ///< eye rays (pixel samples) this row took
+};
+
 /// Told about progress; asked whether to stop (Ctrl-C). Called from worker threads, but never
 /// concurrently: the renderer serialises the calls.
 class RenderObserver {
 public:
     virtual ~RenderObserver() = default;
-    /// Row y is finished; rows_done of rows_total are.
-    virtual void row_done(int y, int rows_done, int rows_total) {
-        (void)y;
-        (void)rows_done;
-        (void)rows_total;
-    }
+    virtual void row_done(const RowDone& row) { (void)row; }
     /// The pixel (x, y) is about to be sampled (-dc).
     virtual void pixel_started(int x, int y) {
         (void)x;
