@@ -1,9 +1,11 @@
 // The command line's rules (manual 2.1 and the Appendix) and every message a user can meet.
 #include "rt/app/switch_parser.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
+#include "rt/app/switch_table.h"
 #include "rt/core/error.h"
 
 #include <gtest/gtest.h>
@@ -226,11 +228,22 @@ TEST(SwitchParser, Ranges) {
     EXPECT_EQ(parse_command_line({"s", "-L0"}).start_line, 0);
 }
 
-TEST(SwitchParser, UsageErrorsComeBeforeNotImplemented) {
+TEST(SwitchParser, UsageErrorsComeFirst) {
     EXPECT_EQ(usage_error({"s", "-Sg", "-Q"}), "unknown switch '-Q'");
     EXPECT_EQ(usage_error({"-Sg"}), kNoScene);
-    EXPECT_EQ(usage_error({"s", "-w", "-Sg"}),
-              "not implemented: -w: the wireframe display is not implemented yet");
+}
+
+// Every switch of the manual is built in this release; the rule is kept for the next feature.
+TEST(SwitchParser, UsageErrorsComeBeforeNotImplemented) {
+    const auto not_yet =
+        std::find_if(switch_table().begin(), switch_table().end(),
+                     [](const SwitchSpec& s) { return s.status == Status::NotYet; });
+    if (not_yet == switch_table().end()) {
+        GTEST_SKIP() << "every switch is implemented";
+    }
+    const std::string spelling(not_yet->example);
+    EXPECT_EQ(usage_error({"s", spelling, "-Q"}), "unknown switch '-Q'");
+    EXPECT_EQ(usage_error({"s", spelling, "-Sg"}).rfind("not implemented: ", 0), 0U);
 }
 
 TEST(SwitchParser, FileFormatSwitchesSetTheDialect) {

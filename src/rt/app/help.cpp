@@ -1,5 +1,6 @@
 #include "rt/app/help.h"
 
+#include <algorithm>
 #include <array>
 #include <string_view>
 
@@ -119,10 +120,19 @@ std::string markdown_topic(Topic topic) {
     return text;
 }
 
-// The rules as a list; wrapped for a terminal when width > 0, one line each for Markdown.
+bool some_switch_not_yet() {
+    return std::any_of(switch_table().begin(), switch_table().end(),
+                       [](const SwitchSpec& spec) { return spec.status == Status::NotYet; });
+}
+
+// The rules as a list; wrapped for a terminal when width > 0, one line each for Markdown. The
+// rule about unfinished switches is said only while there is one.
 std::string rules_list(std::size_t width) {
     std::string text;
     for (const std::string_view rule : kRules) {
+        if (rule.find(kNotYet) != std::string_view::npos && !some_switch_not_yet()) {
+            continue;
+        }
         std::string line = "-";
         std::size_t start = 0;
         while (start < rule.size()) {
@@ -182,7 +192,9 @@ std::string usage_text() {
             text += cat({"  ", padded(std::string(spec.example), 14), mark, spec.summary, "\n"});
         }
     }
-    text += cat({"* ", kNotYet, "\n"});
+    if (some_switch_not_yet()) {
+        text += cat({"* ", kNotYet, "\n"});
+    }
     text +=
         "also: --output FILE (repeatable), --model FILE, --seed N, --threads N, --quiet, --help, "
         "--version\n";
