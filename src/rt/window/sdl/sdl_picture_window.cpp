@@ -17,6 +17,23 @@ namespace rt {
 
 namespace {
 
+bool set(const char* variable) {
+    const char* value = std::getenv(variable);  // NOLINT(concurrency-mt-unsafe): read only
+    return value != nullptr && *value != '\0';
+}
+
+// The SDL video drivers for the display the environment names ("" when it names none): SDL
+// would otherwise try every driver it has, and asking costs time rt should spend rendering.
+const char* driver_named() {
+    if (set("SDL_VIDEODRIVER")) {
+        return std::getenv("SDL_VIDEODRIVER");  // NOLINT(concurrency-mt-unsafe): read only
+    }
+    if (set("WAYLAND_DISPLAY")) {
+        return set("DISPLAY") ? "wayland,x11" : "wayland";
+    }
+    return set("DISPLAY") ? "x11" : "";
+}
+
 constexpr std::uint32_t kFrameMilliseconds = 16;  // about 60 redraws a second, at most
 const double kExposureStep = std::sqrt(2.0);      // half a stop per key press
 
@@ -51,6 +68,9 @@ private:
     void run(std::promise<std::string>& opened) {
         // rt keeps its own Ctrl-C handler (app/interrupt.cpp): SDL must not take SIGINT.
         SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+        // Only the display named; SDL would otherwise fall back to other drivers (offscreen,
+        // KMS) that show nothing to anyone.
+        SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
         if (SDL_Init(SDL_INIT_VIDEO) != 0) {
             opened.set_value(fmt::format("no window: {}", SDL_GetError()));
             return;
@@ -172,18 +192,6 @@ private:
     int cursor_y_ = -1;
 };
 
-// SDL would try every driver it has; without a display named there is nothing to reach, and
-// asking costs time rt should spend rendering.
-bool display_named() {
-    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"}) {
-        const char* value = std::getenv(name);  // NOLINT(concurrency-mt-unsafe): read only
-        if (value != nullptr && *value != '\0') {
-            return true;
-        }
-    }
-    return false;
-}
-
 }  // namespace
 
 bool windows_available() {
@@ -192,7 +200,7 @@ bool windows_available() {
 
 std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
                                                    std::string& why_not) {
-    if (!display_named()) {
+    if (*driver_named() == '\0') {
         why_not = "no display (DISPLAY is not set)";
         return nullptr;
     }
