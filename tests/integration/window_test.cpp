@@ -1,15 +1,20 @@
 // rt's window (docs/window.md) on an Xvfb display the test starts itself: the finished picture on
 // the screen is the one rt writes; early in a render the bottom lines are done and the top still
 // shows the wireframe; and rt never waits for a key unless a person at a terminal can press one.
-// Screenshots are taken with xwd and converted with ImageMagick, tools independent of rt.
+// show opens a picture, and + changes its exposure. Screenshots are taken with xwd and converted
+// with ImageMagick, keys typed with xdotool: tools independent of rt.
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "support/hand_readers.h"
@@ -68,16 +73,23 @@ bool row_is_black(const Image8& a, int y) {
 }
 
 // Screenshots until `good` holds for one (returned), or none within the limit (empty picture).
-template <typename Good>
-Image8 screenshot_until(const XDisplay& x, const std::string& title, seconds limit, Good good) {
+template <typename Shoot, typename Good>
+Image8 shoot_until(Shoot shoot, seconds limit, Good good) {
     const auto until = std::chrono::steady_clock::now() + limit;
     while (std::chrono::steady_clock::now() < until) {
-        Image8 shot = screenshot(x.name(), title);
+        Image8 shot = shoot();
         if (shot.width > 0 && good(shot)) {
             return shot;
         }
     }
     return {};
+}
+
+// Screenshots of the window with this title until `good` holds for one (returned), or none
+// within the limit (an empty picture).
+template <typename Good>
+Image8 screenshot_until(const XDisplay& x, const std::string& title, seconds limit, Good good) {
+    return shoot_until([&] { return screenshot(x.name(), title); }, limit, good);
 }
 
 TEST(Window, ShowsTheFinishedPictureAndWaitsForEnter) {
@@ -184,6 +196,67 @@ TEST(Window, NeverWaitsWithoutADisplayOrATerminal) {
         SpawnedProgram rt("rt", args, dir.path(), {":99999", true});
         EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
     }
+}
+
+// xdotool's answer (its standard output) on the display, or "" when it fails.
+std::string xdotool(const XDisplay& x, const std::string& args) {
+    const std::string command = "DISPLAY='" + x.name() + "' xdotool " + args + " 2>/dev/null";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::string text;
+    std::array<char, 512> chunk{};
+    while (pipe != nullptr && std::fgets(chunk.data(), chunk.size(), pipe) != nullptr) {
+        text += chunk.data();
+    }
+    if (pipe != nullptr) {
+        ::pclose(pipe);
+    }
+    return text;
+}
+
+TEST(Window, ShowDisplaysThePictureAndChangesItsExposureWithKeys) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    if (std::system("command -v xdotool >/dev/null") != 0) {  // NOLINT(concurrency-mt-unsafe)
+        GTEST_SKIP() << "xdotool is not installed (scripts/install-deps installs it)";
+    }
+    const XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    ASSERT_EQ(run_program("rt", {scene_path("twocubes"), "-n", "--output", "pic.gro"}, dir.path())
+                  .exit_code,
+              0);
+    const std::string brighter = "-m" + fmt::format("{}", std::sqrt(2.0));  // one press of +
+    for (const auto& [args, file] :
+         {std::pair{std::vector<std::string>{}, "plain.ppm"}, {{brighter}, "bright.ppm"}}) {
+        std::vector<std::string> convert = {"pic.gro", "--output", file};
+        convert.insert(convert.end(), args.begin(), args.end());
+        ASSERT_EQ(run_program("show", convert, dir.path()).exit_code, 0);
+    }
+    SpawnedProgram show("show", {"pic.gro"}, dir.path(), {x.name(), false});
+    // Its title changes with the pointer: it is found by the start of its title.
+    const auto shoot = [&] {
+        const unsigned long id =
+            std::strtoul(xdotool(x, "search --name '^show: pic.gro'").c_str(), nullptr, 10);
+        return id == 0 ? Image8{} : screenshot_of(x.name(), id);
+    };
+    const Image8 plain = read_ppm(dir.path() / "plain.ppm");
+    EXPECT_EQ(
+        shoot_until(shoot, seconds(10), [&](const Image8& s) { return pictures_match(s, plain); })
+            .width,
+        512)
+        << "show never drew the picture";
+    // The pointer over the picture and + pressed (keys go to the window under the pointer).
+    xdotool(x, "mousemove 100 300 key plus");
+    const Image8 bright = read_ppm(dir.path() / "bright.ppm");
+    EXPECT_EQ(
+        shoot_until(shoot, seconds(10), [&](const Image8& s) { return pictures_match(s, bright); })
+            .width,
+        512)
+        << "+ did not show the picture at " << brighter;
+    const std::string name = xdotool(x, "search --name '^show: ' getwindowname");
+    EXPECT_NE(name.find("-m1.41"), std::string::npos) << name;
+    EXPECT_NE(name.find("(100, 300) = "), std::string::npos) << name;
+    xdotool(x, "key Escape");
+    EXPECT_EQ(show.wait_for_exit(seconds(10)), 0) << show.errors();
 }
 
 }  // namespace

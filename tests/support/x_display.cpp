@@ -195,9 +195,11 @@ std::string SpawnedProgram::errors() const {
     return std::filesystem::exists(err_) ? read_text(err_) : "";
 }
 
-Image8 screenshot(const std::string& display, const std::string& title) {
-    const std::string command = "xwd -display '" + display + "' -name '" + title +
-                                "' -silent 2>/dev/null | convert xwd:- ppm:- 2>/dev/null";
+namespace {
+
+Image8 xwd_screenshot(const std::string& display, const std::string& which) {
+    const std::string command = "xwd -display '" + display + "' " + which +
+                                " -silent 2>/dev/null | convert xwd:- ppm:- 2>/dev/null";
     FILE* pipe = ::popen(command.c_str(), "r");
     if (pipe == nullptr) {
         return {};
@@ -210,6 +212,16 @@ Image8 screenshot(const std::string& display, const std::string& title) {
     }
     ::pclose(pipe);
     return bytes.empty() ? Image8{} : parse_ppm(bytes);
+}
+
+}  // namespace
+
+Image8 screenshot(const std::string& display, const std::string& title) {
+    return xwd_screenshot(display, "-name '" + title + "'");
+}
+
+Image8 screenshot_of(const std::string& display, unsigned long id) {
+    return xwd_screenshot(display, "-id " + std::to_string(id));
 }
 
 bool wait_for_file(const std::filesystem::path& path, std::chrono::milliseconds limit) {

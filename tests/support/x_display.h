@@ -65,6 +65,8 @@ private:
 
 /// The window titled `title` on `display`, as xwd sees it; an empty picture when there is none.
 Image8 screenshot(const std::string& display, const std::string& title);
+/// The same for the window with X id `id` (a title that changes cannot name it).
+Image8 screenshot_of(const std::string& display, unsigned long id);
 
 /// Waits (up to `limit`) until `path` exists.
 bool wait_for_file(const std::filesystem::path& path, std::chrono::milliseconds limit);
