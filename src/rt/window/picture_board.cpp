@@ -12,7 +12,8 @@ PictureBoard::PictureBoard(int view_width, int view_height, DisplayMapping mappi
       height_(view_height),
       mapping_(mapping),
       linear_(static_cast<std::size_t>(view_width) * static_cast<std::size_t>(view_height) * 3,
-              0.0F) {}
+              0.0F),
+      dirty_{0, view_height - 1} {}
 
 void PictureBoard::show_film(const Film& film) {
     const PixelRect& w = film.window();
@@ -32,7 +33,8 @@ void PictureBoard::show_row(int left, int y, std::span<const float> pixels) {
                     3;
     const std::lock_guard lock(mutex_);
     std::copy(pixels.begin(), pixels.end(), linear_.begin() + static_cast<std::ptrdiff_t>(at));
-    ++version_;
+    dirty_ = dirty_.top > dirty_.bottom ? Rows{y, y}
+                                        : Rows{std::min(dirty_.top, y), std::max(dirty_.bottom, y)};
 }
 
 DisplayMapping PictureBoard::mapping() const {
@@ -43,7 +45,7 @@ DisplayMapping PictureBoard::mapping() const {
 void PictureBoard::set_mapping(const DisplayMapping& mapping) {
     const std::lock_guard lock(mutex_);
     mapping_ = mapping;
-    ++version_;
+    dirty_ = {0, height_ - 1};
 }
 
 Rgb PictureBoard::pixel(int x, int y) const {
@@ -54,25 +56,32 @@ Rgb PictureBoard::pixel(int x, int y) const {
     return {linear_[at], linear_[at + 1], linear_[at + 2]};
 }
 
-bool PictureBoard::copy_if_changed(std::uint64_t& version, std::vector<std::uint8_t>& rgb) const {
+PictureBoard::Rows PictureBoard::update(std::vector<std::uint8_t>& rgb) {
+    const auto row_floats = static_cast<std::size_t>(width_) * 3;
     std::vector<float> linear;
     DisplayMapping mapping;
+    Rows rows;
     {
         const std::lock_guard lock(mutex_);
-        if (version == version_) {
-            return false;
+        rows = dirty_;
+        if (rows.top > rows.bottom) {
+            return rows;
         }
-        version = version_;
-        linear = linear_;  // mapped below, outside the lock the renderer's rows wait for
+        dirty_ = {};
+        // Copied out, to be mapped outside the lock the renderer's rows wait for.
+        linear.assign(
+            linear_.begin() + static_cast<std::ptrdiff_t>(rows.top * row_floats),
+            linear_.begin() + static_cast<std::ptrdiff_t>((rows.bottom + 1) * row_floats));
         mapping = mapping_;
     }
-    rgb.resize(linear.size());
+    rgb.resize(linear_.size());
+    const std::size_t start = static_cast<std::size_t>(rows.top) * row_floats;
     for (std::size_t i = 0; i < linear.size(); i += 3) {
         const std::array<std::uint8_t, 3> d =
             to_display(Rgb{linear[i], linear[i + 1], linear[i + 2]}, mapping);
-        std::copy(d.begin(), d.end(), rgb.begin() + static_cast<std::ptrdiff_t>(i));
+        std::copy(d.begin(), d.end(), rgb.begin() + static_cast<std::ptrdiff_t>(start + i));
     }
-    return true;
+    return rows;
 }
 
 }  // namespace rt

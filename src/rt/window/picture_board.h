@@ -31,9 +31,15 @@ public:
     /// The linear intensity at view pixel (x, y), which must lie in the view.
     Rgb pixel(int x, int y) const;
 
-    /// Copies the picture as 8-bit RGB display values, row by row from the top, into `rgb` when
-    /// it changed since `version` (which it updates); false when nothing changed.
-    bool copy_if_changed(std::uint64_t& version, std::vector<std::uint8_t>& rgb) const;
+    /// Rows [top, bottom] of the view changed since the last copy; empty when top > bottom.
+    struct Rows {
+        int top = 0;
+        int bottom = -1;
+    };
+    /// Brings `rgb` (8-bit RGB display values, row by row from the top, sized here) up to date:
+    /// maps only the rows changed since the last call (all of them on the first, or after a new
+    /// mapping), and says which.
+    Rows update(std::vector<std::uint8_t>& rgb);
 
 private:
     int width_;
@@ -41,7 +47,7 @@ private:
     mutable std::mutex mutex_;
     DisplayMapping mapping_;
     std::vector<float> linear_;  // width x height x 3, row 0 at the top
-    std::uint64_t version_ = 1;
+    Rows dirty_;                 // rows changed since the last update()
 };
 
 }  // namespace rt

@@ -89,7 +89,6 @@ private:
     }
 
     void loop() {
-        std::uint64_t version = 0;
         std::vector<std::uint8_t> rgb;
         bool redraw = true;
         while (!stopping_) {
@@ -98,8 +97,12 @@ private:
                 redraw = handle(event) || redraw;
                 continue;  // drain the queue before drawing
             }
-            if ((board_.copy_if_changed(version, rgb) || redraw) && !closed_ && !rgb.empty()) {
-                draw(rgb);
+            PictureBoard::Rows rows = board_.update(rgb);
+            if (redraw) {
+                rows = {0, board_.height() - 1};
+            }
+            if (rows.top <= rows.bottom && !closed_) {
+                draw(rgb, rows);
                 redraw = false;
             }
         }
@@ -170,14 +173,17 @@ private:
         SDL_SetWindowTitle(window_, title.c_str());
     }
 
-    void draw(std::vector<std::uint8_t>& rgb) {
+    // Only the rows that changed go to the display: a render changes a few rows a frame.
+    void draw(std::vector<std::uint8_t>& rgb, const PictureBoard::Rows& rows) {
         SDL_Surface* screen = SDL_GetWindowSurface(window_);
         SDL_Surface* picture =
             SDL_CreateRGBSurfaceWithFormatFrom(rgb.data(), board_.width(), board_.height(), 24,
                                                board_.width() * 3, SDL_PIXELFORMAT_RGB24);
         if (screen != nullptr && picture != nullptr) {
-            SDL_BlitSurface(picture, nullptr, screen, nullptr);
-            SDL_UpdateWindowSurface(window_);
+            SDL_Rect band{0, rows.top, board_.width(), rows.bottom - rows.top + 1};
+            SDL_Rect to = band;
+            SDL_BlitSurface(picture, &band, screen, &to);
+            SDL_UpdateWindowSurfaceRects(window_, &band, 1);
         }
         SDL_FreeSurface(picture);
     }
