@@ -36,16 +36,17 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",     "-w",       "-m",     "-tv",       "-c",     "-od",       "-oo",     "-ol",
-        "-on",    "-of",      "-op",    "-ss",       "-p",     "-r",        "-Sp",     "-Sg",
-        "-Stg",   "-Stb",     "-R",     "-Wr",       "-Wc",    "-Wt",       "-A",      "-T",
-        "-Co",    "-Ci",      "-Cf",    "-Dx",       "-De",    "-Dd",       "-Dt",     "-Da",
-        "-Dl",    "-Ds",      "-Dr",    "-Df",       "-Dp",    "-Db",       "-Po",     "-Pt",
-        "-Ot",    "-Oi",      "-Of",    "-O1",       "-K",     "-I",        "-L",      "-E",
-        "-F",     "-Xp",      "-Xr",    "-M",        "-V",     "-dc",       "-ds",     "-dsp",
-        "-dso",   "-dl",      "-doo",   "-doi",      "-dof",   "-df",       "-dd",     "-dx",
-        "-de",    "--output", "--help", "--version", "--seed", "--threads", "--accel", "--zbuffer",
-        "--quiet"};
+        "-n",      "-w",        "-m",       "-tv",        "-c",        "-od",    "-oo",
+        "-ol",     "-on",       "-of",      "-op",        "-ss",       "-p",     "-r",
+        "-Sp",     "-Sg",       "-Stg",     "-Stb",       "-R",        "-Wr",    "-Wc",
+        "-Wt",     "-A",        "-T",       "-Co",        "-Ci",       "-Cf",    "-Dx",
+        "-De",     "-Dd",       "-Dt",      "-Da",        "-Dl",       "-Ds",    "-Dr",
+        "-Df",     "-Dp",       "-Db",      "-Po",        "-Pt",       "-Ot",    "-Oi",
+        "-Of",     "-O1",       "-K",       "-I",         "-L",        "-E",     "-F",
+        "-Xp",     "-Xr",       "-M",       "-V",         "-dc",       "-ds",    "-dsp",
+        "-dso",    "-dl",       "-doo",     "-doi",       "-dof",      "-df",    "-dd",
+        "-dx",     "-de",       "--output", "--help",     "--version", "--seed", "--threads",
+        "--accel", "--zbuffer", "--quiet",  "--no-window"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -313,6 +314,7 @@ std::map<std::string_view, Expectation> expectations() {
         {"--accel", {{}, [](const Options& o) { return o.accel.method.kind == AccelKind::Bvh; }}},
         {"--zbuffer", {{}, [](const Options& o) { return o.accel.zbuffer_first_hits; }}},
         {"--quiet", flag(&Options::quiet)},
+        {"--no-window", flag(&Options::no_window)},
         {"--help", flag(&Options::show_help)},
         {"--version", flag(&Options::show_version)},
     };
