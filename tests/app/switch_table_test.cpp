@@ -40,16 +40,17 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",        "-w",       "-m",      "-tv",    "-c",        "-od",    "-oo",       "-ol",
-        "-on",       "-of",      "-op",     "-ss",    "-p",        "-r",     "-Sp",       "-Sg",
-        "-Stg",      "-Stb",     "-R",      "-Wr",    "-Wc",       "-Wt",    "-A",        "-T",
-        "-Co",       "-Ci",      "-Cf",     "-Dx",    "-De",       "-Dd",    "-Dt",       "-Da",
-        "-Dl",       "-Ds",      "-Dr",     "-Df",    "-Dp",       "-Db",    "-Po",       "-Pt",
-        "-Ot",       "-Oi",      "-Of",     "-O1",    "-K",        "-I",     "-L",        "-E",
-        "-F",        "-Xp",      "-Xr",     "-M",     "-V",        "-dc",    "-ds",       "-dsp",
-        "-dso",      "-dl",      "-doo",    "-doi",   "-dof",      "-df",    "-dd",       "-dx",
-        "-de",       "--output", "--model", "--help", "--version", "--seed", "--threads", "--accel",
-        "--zbuffer", "--quiet"};
+        "-n",        "-w",      "-m",        "-tv",     "-c",         "-od",       "-oo",
+        "-ol",       "-on",     "-of",       "-op",     "-ss",        "-p",        "-r",
+        "-Sp",       "-Sg",     "-Stg",      "-Stb",    "-R",         "-Wr",       "-Wc",
+        "-Wt",       "-A",      "-T",        "-Co",     "-Ci",        "-Cf",       "-Dx",
+        "-De",       "-Dd",     "-Dt",       "-Da",     "-Dl",        "-Ds",       "-Dr",
+        "-Df",       "-Dp",     "-Db",       "-Po",     "-Pt",        "-Ot",       "-Oi",
+        "-Of",       "-O1",     "-K",        "-I",      "-L",         "-E",        "-F",
+        "-Xp",       "-Xr",     "-M",        "-V",      "-dc",        "-ds",       "-dsp",
+        "-dso",      "-dl",     "-doo",      "-doi",    "-dof",       "-df",       "-dd",
+        "-dx",       "-de",     "--output",  "--model", "--help",     "--version", "--seed",
+        "--threads", "--accel", "--zbuffer", "--quiet", "--no-window"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -112,11 +113,11 @@ TEST(SwitchTable, NotYetRowsAreRefusedByName) {
 
 TEST(SwitchTable, StatusesOfThisRelease) {
     const std::set<std::string_view> implemented = {
-        "-n",   "-m",   "-c",  "-A",   "-Da", "-Dl",  "-Ds", "-Dr", "-Dt", "-Db", "-T",
-        "-Dd",  "-Dx",  "-Df", "-Dp",  "-Of", "-R",   "-M",  "-Po", "-Pt", "-Sp", "-L",
-        "-dc",  "-df",  "-I",  "-Xp",  "-Xr", "-dx",  "-F",  "-Oi", "-O1", "-Sg", "-Stg",
-        "-Stb", "-Co",  "-Ci", "-Cf",  "-Wr", "-Wc",  "-Wt", "-K",  "-p",  "-r",  "-E",
-        "-Ot",  "-De",  "-de", "-tv",  "-od", "-ol",  "-on", "-of", "-op", "-ss", "-ds",
+        "-n",   "-m",   "-c",  "-A",   "-Da", "-Dl",  "-Ds", "-Dr", "-Dt",  "-Db", "-T",
+        "-Dd",  "-Dx",  "-Df", "-Dp",  "-Of", "-R",   "-M",  "-Po", "-Pt",  "-Sp", "-L",
+        "-dc",  "-df",  "-I",  "-Xp",  "-Xr", "-dx",  "-F",  "-Oi", "-O1",  "-Sg", "-Stg",
+        "-Stb", "-Co",  "-Ci", "-Cf",  "-Wr", "-Wc",  "-Wt", "-K",  "-p",   "-r",  "-E",
+        "-Ot",  "-De",  "-de", "-tv",  "-od", "-ol",  "-on", "-of", "-op",  "-ss", "-ds",
         "-dsp", "-dso", "-dl", "-doo", "-dd", "-dof", "-w",  "-oo", "-doi", "-V"};
     for (const SwitchSpec& spec : switch_table()) {
         const std::set<std::string_view> long_not_yet = {};
@@ -318,6 +319,7 @@ std::map<std::string_view, Expectation> expectations() {
         {"--accel", {{}, [](const Options& o) { return o.accel.method.kind == AccelKind::Bvh; }}},
         {"--zbuffer", {{}, [](const Options& o) { return o.accel.zbuffer_first_hits; }}},
         {"--quiet", flag(&Options::quiet)},
+        {"--no-window", flag(&Options::no_window)},
         {"--help", flag(&Options::show_help)},
         {"--version", flag(&Options::show_version)},
     };

@@ -644,6 +644,7 @@ const std::vector<OtherSwitch>& other_switches() {
         {"--help", "RtProgram.HelpAndVersion"},
         {"--version", "RtProgram.HelpAndVersion"},
         {"--quiet", "RtProgram tests: nothing printed"},
+        {"--no-window", "Window.NeverWaitsWithoutADisplayOrATerminal: no window, no wait"},
     };
     return all;
 }

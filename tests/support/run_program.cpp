@@ -22,8 +22,10 @@ std::string shell_quote(const std::string& word) {
 ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
                           const std::filesystem::path& cwd, const std::filesystem::path& input) {
     const TempDir capture;
-    std::string command =
-        "cd " + shell_quote(cwd.string()) + " && " + shell_quote((bin_dir() / program).string());
+    // Never on a display: these runs are headless whatever the test's environment names.
+    std::string command = "cd " + shell_quote(cwd.string()) +
+                          " && env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " +
+                          shell_quote((bin_dir() / program).string());
     for (const std::string& a : args) {
         command += " " + shell_quote(a);
     }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -77,6 +78,24 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
     console.commands = &std::cin;
     console.answers = &std::cout;
     console.prompt = ::isatty(STDIN_FILENO) != 0 ? "octree> " : "";
+    if (!options.no_window) {
+        console.open_window = [note = console.note](const rt::WindowRequest& request) {
+            std::string why_not;
+            std::unique_ptr<rt::PictureWindow> window = rt::open_picture_window(request, why_not);
+            if (!window && std::getenv("DISPLAY") != nullptr) {  // NOLINT(concurrency-mt-unsafe)
+                note(why_not);  // a display was named but cannot be reached
+            }
+            return window;
+        };
+    }
+    // Manual 1.2.2: "When the picture is completed, the program waits for you to type a carriage
+    // return". Only a person at a terminal can; otherwise the window closes by itself.
+    if (::isatty(STDIN_FILENO) != 0) {
+        console.keep_window_open = [note = console.note](const rt::PictureWindow& window) {
+            note("the picture is written; press Enter (or close the window) to finish");
+            rt::wait_for_enter_or_close(window, STDIN_FILENO, rt::interrupt_requested);
+        };
+    }
     return console;
 }
 

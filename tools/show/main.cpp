@@ -1,6 +1,6 @@
 // show NAME [--output FILE]... [--info] [-m F] [-c]: looks at a .gro (or .exr) picture written by
-// rt (manual 1.2). Reads the command line with CLI11, calls the image library, maps errors to exit
-// codes.
+// rt (manual 1.2), in a window or converted. Reads the command line with CLI11, calls the image
+// library, maps errors to exit codes.
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +13,7 @@
 #include "rt/image/image_writer.h"
 
 #include "command_line/command_line.h"
+#include "show/show_window.h"
 
 namespace {
 
@@ -69,13 +70,14 @@ int run(const ShowArgs& s) {
     for (const std::string& output : s.outputs) {
         rt::image_format_for(output);  // a bad name fails before any reading
     }
-    if (s.outputs.empty() && !s.info) {
-        throw rt::NotImplementedError(
-            "displaying in a window is not implemented yet; use --output NAME.png or --info");
-    }
-    rt::Film film = rt::read_linear_image(picture_path(s.name));
+    const bool in_window = s.outputs.empty() && !s.info;  // the manual's "show name"
+    const std::filesystem::path path = picture_path(s.name);
+    rt::Film film = in_window ? rt::show::picture_for_window(path) : rt::read_linear_image(path);
     film.mapping.multiplier = s.multiplier.value_or(film.mapping.multiplier);
     film.mapping.clip = film.mapping.clip && !s.no_clip;
+    if (in_window) {
+        return rt::show::show_in_window(film, path.filename().string());
+    }
     if (s.info) {
         std::cout << rt::film_summary(film);
     }
@@ -94,9 +96,11 @@ void print_error(const std::string& message) {
 int main(int argc, char** argv) {
     try {
         CLI::App app(
-            "Looks at a .gro picture written by rt (manual 1.2), or an .exr: prints what\n"
-            "it holds, or converts it to PNG, PPM, .gro or .exr. Exit codes: 0 ok, 1 bad\n"
-            "picture, 2 usage, 3 I/O, 4 internal.",
+            "Looks at a .gro picture written by rt (manual 1.2), or an .exr: shows it in a\n"
+            "window (also a .png or .ppm; keys + and - change the exposure, 0 restores it,\n"
+            "Esc or Enter closes it), prints what it holds, or converts it to PNG, PPM,\n"
+            ".gro or .exr. Without a display, \"show NAME\" prints what --info prints.\n"
+            "Exit codes: 0 ok, 1 bad picture, 2 usage, 3 I/O, 4 internal.",
             "show");
         rt::cli::configure(app);
         ShowArgs args;

@@ -61,6 +61,7 @@ struct Options {
     bool show_usage = false;    ///< no arguments at all
     bool quiet = false;         ///< --quiet: no progress, no notes
     int threads = 0;            ///< --threads (0: all cores)
+    bool no_window = false;     ///< --no-window: never open a window, even on a display
 
     /// The switches exactly as given (not the scene, not long options), for the .gro header.
     std::vector<std::string> given_switches;

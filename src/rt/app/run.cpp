@@ -50,7 +50,15 @@ class ConsoleObserver : public RenderObserver {
 public:
     ConsoleObserver(const RunConsole& console, bool print_columns, bool print_samples)
         : console_(console), print_columns_(print_columns), print_samples_(print_samples) {}
+    /// Rows go to the window too, at their place (the film window's left edge).
+    void show_rows_in(PictureWindow* window, int left) {
+        window_ = window;
+        left_ = left;
+    }
     void row_done(const RowDone& row) override {
+        if (window_ != nullptr) {
+            window_->board().show_row(left_, row.y, row.pixels);
+        }
         samples_ += row.samples;
         if (console_.progress) {
             console_.progress(row.rows_done, row.rows_total, samples_);
@@ -69,10 +77,15 @@ public:
                        std::to_string(report.tree.distributed_rays) + " rays, " +
                        std::to_string(report.probes + report.tree.probes) + " probes");
     }
-    bool should_stop() override { return console_.should_stop && console_.should_stop(); }
+    bool should_stop() override {
+        return (console_.should_stop && console_.should_stop()) ||
+               (window_ != nullptr && window_->closed());  // closing it stops as Ctrl-C does
+    }
 
 private:
     const RunConsole& console_;
+    PictureWindow* window_ = nullptr;
+    int left_ = 0;
     bool print_columns_;
     bool print_samples_;
     std::uint64_t samples_ = 0;
@@ -126,9 +139,33 @@ Scene read_scene(const Options& options, Diagnostics& diagnostics) {
     return scene;
 }
 
+// The picture's window, showing the wireframe (manual 1.2.2: "First, the outline (called a
+// wire-frame) of the scene will be drawn"); null when the console opens none. -doi and -r draw
+// no picture.
+std::unique_ptr<PictureWindow> open_window(const Scene& scene, const Options& options,
+                                           const PixelRect& window, const RunConsole& console) {
+    if (!console.open_window || options.debug_octree_interactive || options.random_rays) {
+        return nullptr;
+    }
+    std::unique_ptr<PictureWindow> shown =
+        console.open_window({"rt: " + (options.model.empty() ? options.scene : options.model),
+                             scene.view.width, scene.view.height, options.display, false});
+    if (shown && !options.wireframe_only) {  // -w shows the one it writes
+        shown->board().show_film(wireframe_picture(scene, options, window, console));
+    }
+    return shown;
+}
+
+// The outputs are written: the window stays until the viewer is done with it.
+void close_window(std::unique_ptr<PictureWindow> window, const RunConsole& console) {
+    if (window && !window->closed() && console.keep_window_open) {
+        console.keep_window_open(*window);
+    }
+}
+
 // -doi's session and -w's wireframe, which trace nothing; true when the run is over.
 bool run_without_tracing(const Scene& scene, const Options& options, const PixelRect& window,
-                         const RunConsole& console) {
+                         const RunConsole& console, std::unique_ptr<PictureWindow>& shown) {
     if (options.debug_octree_interactive) {
         inspect_octree(scene, options, console);
         return true;
@@ -136,10 +173,14 @@ bool run_without_tracing(const Scene& scene, const Options& options, const Pixel
     if (options.wireframe_only) {
         Film film = wireframe_picture(scene, options, window, console);
         stamp(film, options);
+        if (shown) {
+            shown->board().show_film(film);
+        }
         write_outputs(film, options);
+        close_window(std::move(shown), console);
         return true;
     }
-    if (options.draw_octree) {
+    if (options.draw_octree && !shown) {
         console.note(
             "-oo draws the octree's boxes on the wireframe, which only -w writes; the "
             "picture is ray traced as usual");
@@ -202,7 +243,8 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
-    if (run_without_tracing(scene, options, settings.window, console)) {
+    std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
+    if (run_without_tracing(scene, options, settings.window, console, shown)) {
         return RunOutcome::Finished;
     }
 
@@ -238,6 +280,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
         return RunOutcome::Finished;
     }
     ConsoleObserver observer(console, options.print_columns, options.debug_chi_square);
+    observer.show_rows_in(shown.get(), settings.window.left);
     RenderStatistics statistics;
     phase = Clock::now();
     if (console.progress) {
@@ -256,6 +299,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     write_outputs(film, options);
     times.write_seconds = seconds_since(phase);
     print_profile(statistics.by_kind);
+    close_window(std::move(shown), console);
     return statistics.interrupted ? RunOutcome::Interrupted : RunOutcome::Finished;
 }
 

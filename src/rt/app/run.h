@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <functional>
 #include <istream>
+#include <memory>
 #include <ostream>
 #include <string>
 
 #include "rt/app/options.h"
+#include "rt/window/picture_window.h"
 
 namespace rt {
 
@@ -28,6 +30,12 @@ struct RunConsole {
     std::istream* commands = nullptr;
     std::ostream* answers = nullptr;
     std::string prompt;
+    /// Opens the picture's window (rt: on a display, unless --no-window); empty, or returning
+    /// null: no window. Not asked for -doi and -r, which draw no picture.
+    std::function<std::unique_ptr<PictureWindow>(const WindowRequest&)> open_window;
+    /// Called once the outputs are written, with the window still open (rt: waits for Enter when
+    /// standard input is a terminal); empty: the window closes at once.
+    std::function<void(const PictureWindow&)> keep_window_open;
 };
 
 enum class RunOutcome { Finished, Interrupted };

@@ -472,6 +472,14 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Without it, progress goes to standard error: a bar on a terminal, a line every "
                 "5 seconds elsewhere.", .section = "new",
      .example = "--quiet"},
+    {.spelling = "--no-window", .topic = Program,
+     .apply = [](Options& o, A) { o.no_window = true; },
+     .summary = "Render without a window, even on a display",
+     .details = "On a display rt opens a window of the picture's size, draws the wireframe in "
+                "it, fills the lines in as they finish and at the end waits for Enter (or for "
+                "the window to close; at once when standard input is not a terminal). Without "
+                "a display it renders without one (docs/window.md).",
+     .section = "1.2.2", .example = "--no-window"},
 });
 #pragma GCC diagnostic pop
 // clang-format on

@@ -104,7 +104,11 @@ void record_finished_row(RenderJob& job, int y, std::uint64_t samples) {
         --first;
     }
     job.film.set_first_finished_row(first);
-    job.observer.row_done({y, job.rows_done, w.height(), samples});
+    const auto row_floats = static_cast<std::size_t>(w.width()) * 3;
+    const std::span<const float> pixels =
+        std::span<const float>(job.film.data())
+            .subspan(static_cast<std::size_t>(y - w.top) * row_floats, row_floats);
+    job.observer.row_done({y, job.rows_done, w.height(), samples, pixels});
     if (job.observer.should_stop()) {
         job.stopping = true;
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "rt/accel/accelerator.h"
 #include "rt/image/film.h"
@@ -32,6 +33,9 @@ struct RowDone {
     int rows_done = 0;  ///< rows finished so far, this one included
     int rows_total = 0;
     std::uint64_t samples = 0;  ///< eye rays (pixel samples) this row took
+    /// The row's finished pixels, the window's width of them from its left edge, three linear
+    /// floats each (a window shows them); valid during the call.
+    std::span<const float> pixels;
 };
 
 /// Told about progress; asked whether to stop (Ctrl-C). Called from worker threads, but never

@@ -1,0 +1,221 @@
+// The window, with SDL2. One thread does everything SDL (initialisation, events, drawing), as
+// SDL's video functions want; the others only touch the PictureBoard and the atomic flags.
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <future>
+#include <thread>
+#include <vector>
+
+#include "rt/window/picture_window.h"
+
+#include <fmt/format.h>
+
+#include <SDL.h>
+
+namespace rt {
+
+namespace {
+
+bool set(const char* variable) {
+    const char* value = std::getenv(variable);  // NOLINT(concurrency-mt-unsafe): read only
+    return value != nullptr && *value != '\0';
+}
+
+// The SDL video drivers for the display the environment names ("" when it names none): SDL
+// would otherwise try every driver it has, and asking costs time rt should spend rendering.
+const char* driver_named() {
+    if (set("SDL_VIDEODRIVER")) {
+        return std::getenv("SDL_VIDEODRIVER");  // NOLINT(concurrency-mt-unsafe): read only
+    }
+    if (set("WAYLAND_DISPLAY")) {
+        return set("DISPLAY") ? "wayland,x11" : "wayland";
+    }
+    return set("DISPLAY") ? "x11" : "";
+}
+
+constexpr std::uint32_t kFrameMilliseconds = 16;  // about 60 redraws a second, at most
+const double kExposureStep = std::sqrt(2.0);      // half a stop per key press
+
+bool is_close_key(const SDL_Keysym& key) {
+    return key.sym == SDLK_ESCAPE || (key.sym == SDLK_c && (key.mod & KMOD_CTRL) != 0);
+}
+
+class SdlPictureWindow : public PictureWindow {
+public:
+    explicit SdlPictureWindow(const WindowRequest& request)
+        : request_(request), board_(request.width, request.height, request.mapping) {}
+
+    ~SdlPictureWindow() override {
+        stopping_ = true;
+        if (thread_.joinable()) {
+            thread_.join();
+        }
+    }
+
+    // Starts the thread and waits until it has a window (empty answer) or has failed.
+    std::string start() {
+        std::promise<std::string> opened;
+        std::future<std::string> answer = opened.get_future();
+        thread_ = std::thread([this, &opened] { run(opened); });
+        return answer.get();
+    }
+
+    PictureBoard& board() override { return board_; }
+    bool closed() const override { return closed_; }
+
+private:
+    void run(std::promise<std::string>& opened) {
+        // rt keeps its own Ctrl-C handler (app/interrupt.cpp): SDL must not take SIGINT.
+        SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+        // Only the display named; SDL would otherwise fall back to other drivers (offscreen,
+        // KMS) that show nothing to anyone.
+        SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
+        if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+            opened.set_value(fmt::format("no window: {}", SDL_GetError()));
+            return;
+        }
+        window_ = SDL_CreateWindow(request_.title.c_str(), 0, 0, request_.width, request_.height,
+                                   SDL_WINDOW_SHOWN);
+        if (window_ == nullptr) {
+            opened.set_value(fmt::format("no window: {}", SDL_GetError()));
+            SDL_Quit();
+            return;
+        }
+        opened.set_value("");
+        loop();
+        SDL_DestroyWindow(window_);
+        SDL_Quit();
+    }
+
+    void loop() {
+        std::vector<std::uint8_t> rgb;
+        bool redraw = true;
+        while (!stopping_) {
+            SDL_Event event;
+            if (SDL_WaitEventTimeout(&event, static_cast<int>(kFrameMilliseconds)) != 0) {
+                redraw = handle(event) || redraw;
+                continue;  // drain the queue before drawing
+            }
+            PictureBoard::Rows rows = board_.update(rgb);
+            if (redraw) {
+                rows = {0, board_.height() - 1};
+            }
+            if (rows.top <= rows.bottom && !closed_) {
+                draw(rgb, rows);
+                redraw = false;
+            }
+        }
+    }
+
+    // True when the window must be drawn again.
+    bool handle(const SDL_Event& event) {
+        switch (event.type) {
+            case SDL_QUIT:
+                close();
+                return false;
+            case SDL_WINDOWEVENT:
+                if (event.window.event == SDL_WINDOWEVENT_CLOSE) {
+                    close();
+                    return false;
+                }
+                return event.window.event == SDL_WINDOWEVENT_EXPOSED ||
+                       event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED;
+            case SDL_KEYDOWN:
+                if (is_close_key(event.key.keysym)) {
+                    close();
+                } else if (request_.explore) {
+                    change_exposure(event.key.keysym.sym);
+                }
+                return false;
+            case SDL_MOUSEMOTION:
+                if (request_.explore) {
+                    cursor_x_ = event.motion.x;
+                    cursor_y_ = event.motion.y;
+                    update_title();
+                }
+                return false;
+            default:
+                return false;
+        }
+    }
+
+    void close() {
+        closed_ = true;
+        SDL_HideWindow(window_);
+    }
+
+    void change_exposure(SDL_Keycode key) {
+        DisplayMapping m = board_.mapping();
+        if (key == SDLK_PLUS || key == SDLK_KP_PLUS || key == SDLK_EQUALS) {
+            m.multiplier *= kExposureStep;
+        } else if (key == SDLK_MINUS || key == SDLK_KP_MINUS) {
+            m.multiplier /= kExposureStep;
+        } else if (key == SDLK_0 || key == SDLK_KP_0) {
+            m.multiplier = request_.mapping.multiplier;
+        } else {
+            return;
+        }
+        board_.set_mapping(m);
+        update_title();
+    }
+
+    // "NAME  -m1.41  (x, y) = r g b": the exposure, and the linear value under the cursor.
+    void update_title() {
+        std::string title =
+            fmt::format("{}  -m{:.3g}", request_.title, board_.mapping().multiplier);
+        if (cursor_x_ >= 0 && cursor_x_ < board_.width() && cursor_y_ >= 0 &&
+            cursor_y_ < board_.height()) {
+            const Rgb v = board_.pixel(cursor_x_, cursor_y_);
+            title += fmt::format("  ({}, {}) = {:.4g} {:.4g} {:.4g}", cursor_x_, cursor_y_, v.r,
+                                 v.g, v.b);
+        }
+        SDL_SetWindowTitle(window_, title.c_str());
+    }
+
+    // Only the rows that changed go to the display: a render changes a few rows a frame.
+    void draw(std::vector<std::uint8_t>& rgb, const PictureBoard::Rows& rows) {
+        SDL_Surface* screen = SDL_GetWindowSurface(window_);
+        SDL_Surface* picture =
+            SDL_CreateRGBSurfaceWithFormatFrom(rgb.data(), board_.width(), board_.height(), 24,
+                                               board_.width() * 3, SDL_PIXELFORMAT_RGB24);
+        if (screen != nullptr && picture != nullptr) {
+            SDL_Rect band{0, rows.top, board_.width(), rows.bottom - rows.top + 1};
+            SDL_Rect to = band;
+            SDL_BlitSurface(picture, &band, screen, &to);
+            SDL_UpdateWindowSurfaceRects(window_, &band, 1);
+        }
+        SDL_FreeSurface(picture);
+    }
+
+    WindowRequest request_;
+    PictureBoard board_;
+    std::thread thread_;
+    SDL_Window* window_ = nullptr;
+    std::atomic<bool> stopping_{false};
+    std::atomic<bool> closed_{false};
+    int cursor_x_ = -1;
+    int cursor_y_ = -1;
+};
+
+}  // namespace
+
+bool windows_available() {
+    return true;
+}
+
+std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
+                                                   std::string& why_not) {
+    if (*driver_named() == '\0') {
+        why_not = "no display (DISPLAY is not set)";
+        return nullptr;
+    }
+    auto window = std::make_unique<SdlPictureWindow>(request);
+    why_not = window->start();
+    if (!why_not.empty()) {
+        return nullptr;
+    }
+    return window;
+}
+
+}  // namespace rt

@@ -1,0 +1,263 @@
+// rt's window (docs/window.md) on an Xvfb display the test starts itself: the finished picture on
+// the screen is the one rt writes; early in a render the bottom lines are done and the top still
+// shows the wireframe; and rt never waits for a key unless a person at a terminal can press one.
+// show opens a picture, and + changes its exposure. Screenshots are taken with xwd and converted
+// with ImageMagick, keys typed with xdotool: tools independent of rt.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "support/hand_readers.h"
+#include "support/run_program.h"
+#include "support/temp_dir.h"
+#include "support/x_display.h"
+
+namespace rt::test {
+namespace {
+
+using std::chrono::milliseconds;
+using std::chrono::seconds;
+
+constexpr int kRounding = 1;  // display values may differ by one step of 255
+
+std::string scene_path(const std::string& name) {
+    return (source_dir() / "scenes" / name).string();
+}
+
+// Skips the calling test when the display tools are missing (scripts/install-deps has them).
+#define SKIP_WITHOUT_DISPLAY_TOOLS()                                     \
+    if (const std::string why = missing_display_tools(); !why.empty()) { \
+        GTEST_SKIP() << why;                                             \
+    }
+
+Image8 read_ppm(const std::filesystem::path& path) {
+    return parse_ppm(read_text(path));
+}
+
+bool rows_match(const Image8& a, const Image8& b, int y) {
+    const auto start = static_cast<std::size_t>(y) * static_cast<std::size_t>(a.width) * 3;
+    for (std::size_t i = start; i < start + static_cast<std::size_t>(a.width) * 3; ++i) {
+        if (std::abs(int(a.rgb[i]) - int(b.rgb[i])) > kRounding) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool pictures_match(const Image8& a, const Image8& b) {
+    if (a.width != b.width || a.height != b.height) {
+        return false;
+    }
+    for (int y = 0; y < a.height; ++y) {
+        if (!rows_match(a, b, y)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool row_is_black(const Image8& a, int y) {
+    const auto start = a.rgb.begin() + static_cast<std::ptrdiff_t>(y) * a.width * 3;
+    return std::all_of(start, start + static_cast<std::ptrdiff_t>(a.width) * 3,
+                       [](std::uint8_t v) { return v == 0; });
+}
+
+// Screenshots until `good` holds for one (returned), or none within the limit (empty picture).
+template <typename Shoot, typename Good>
+Image8 shoot_until(Shoot shoot, seconds limit, Good good) {
+    const auto until = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < until) {
+        Image8 shot = shoot();
+        if (shot.width > 0 && good(shot)) {
+            return shot;
+        }
+    }
+    return {};
+}
+
+// Screenshots of the window with this title until `good` holds for one (returned), or none
+// within the limit (an empty picture).
+template <typename Good>
+Image8 screenshot_until(const XDisplay& x, const std::string& title, seconds limit, Good good) {
+    return shoot_until([&] { return screenshot(x.name(), title); }, limit, good);
+}
+
+TEST(Window, ShowsTheFinishedPictureAndWaitsForEnter) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    const XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    const std::string scene = scene_path("twocubes");
+    SpawnedProgram rt("rt", {scene, "-n", "--output", "final.ppm", "--quiet"}, dir.path(),
+                      {x.name(), true});
+    ASSERT_TRUE(wait_for_file(dir.path() / "final.ppm", seconds(60))) << rt.errors();
+    const Image8 written = read_ppm(dir.path() / "final.ppm");
+    // The display thread redraws within a frame of the last row; allow it a moment.
+    const Image8 shown = screenshot_until(
+        x, "rt: " + scene, seconds(5), [&](const Image8& s) { return pictures_match(s, written); });
+    EXPECT_EQ(shown.width, 512);
+    EXPECT_EQ(shown.height, 400) << "the window never showed the picture rt wrote";
+    // The picture is written and rt waits for Enter on its terminal, then ends.
+    EXPECT_FALSE(rt.wait_for_exit(milliseconds(300))) << "rt did not wait for Enter";
+    rt.type_line("");
+    EXPECT_EQ(rt.wait_for_exit(seconds(10)), 0) << rt.errors();
+}
+
+TEST(Window, EarlyInARenderShowsBottomLinesDoneAndTheWireframeAbove) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    const XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    const std::string scene = scene_path("twocubes4");
+    ASSERT_EQ(run_program("rt", {scene, "-w", "-n", "--output", "wire.ppm"}, dir.path()).exit_code,
+              0);
+    const Image8 wire = read_ppm(dir.path() / "wire.ppm");
+    // One thread, so that rows finish strictly from the bottom up and slowly enough to be seen.
+    SpawnedProgram rt(
+        "rt",
+        {scene, "-n", "--output", "part.ppm", "--output", "part.gro", "--threads", "1", "--quiet"},
+        dir.path(), {x.name(), false});
+    const int last = wire.height - 1;
+    // The first screenshot where the picture has replaced some of the wireframe (and the window
+    // is drawn: its top row is the wireframe's).
+    const Image8 early = screenshot_until(x, "rt: " + scene, seconds(30), [&](const Image8& s) {
+        return s.height == wire.height && rows_match(s, wire, 0) && !pictures_match(s, wire);
+    });
+    // Ctrl-C stops the render; the finished lines are written, the rest black.
+    rt.signal(SIGINT);
+    ASSERT_EQ(rt.wait_for_exit(seconds(30)), 130) << rt.errors();
+    ASSERT_EQ(early.height, wire.height) << "no screenshot showed a finished line";
+    const Image8 part = read_ppm(dir.path() / "part.ppm");
+    const int finished =
+        std::stoi(parse_gro(dir.path() / "part.gro").header.at("first_finished_row"));
+    // The first row from the bottom that the screenshot does not show finished.
+    int split = last;
+    while (split >= finished && rows_match(early, part, split)) {
+        --split;
+    }
+    bool picture_differs_from_wireframe = false;
+    for (int y = split + 1; y <= last; ++y) {
+        picture_differs_from_wireframe =
+            picture_differs_from_wireframe || !rows_match(wire, part, y);
+    }
+    EXPECT_TRUE(picture_differs_from_wireframe) << "the bottom lines show no picture";
+    EXPECT_GT(split, 0) << "the render was over before the screenshot";
+    int wire_rows_with_lines = 0;
+    for (int y = 0; y <= split; ++y) {
+        EXPECT_TRUE(rows_match(early, wire, y) || y == split)
+            << "row " << y << " is neither finished nor wireframe";
+        wire_rows_with_lines += row_is_black(wire, y) ? 0 : 1;
+    }
+    EXPECT_GT(wire_rows_with_lines, 10) << "the top should show the wireframe's lines";
+}
+
+TEST(Window, NeverWaitsWithoutADisplayOrATerminal) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    const XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    const std::string scene = scene_path("twocubes");
+    const std::vector<std::string> args = {scene, "-n", "--output", "a.ppm", "--quiet"};
+    {
+        SCOPED_TRACE("DISPLAY unset, on a terminal");
+        SpawnedProgram rt("rt", args, dir.path(), {std::nullopt, true});
+        EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
+    }
+    {
+        SCOPED_TRACE("--no-window on a display, on a terminal");
+        std::vector<std::string> no_window = args;
+        no_window.emplace_back("--no-window");
+        SpawnedProgram rt("rt", no_window, dir.path(), {x.name(), true});
+        EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
+    }
+    {
+        SCOPED_TRACE("a display, standard input not a terminal: the window opens and closes");
+        SpawnedProgram rt("rt",
+                          {scene_path("twocubes4"), "-n", "-L150", "--threads", "1", "--output",
+                           "b.ppm", "--quiet"},
+                          dir.path(), {x.name(), false});
+        const Image8 shown = screenshot_until(x, "rt: " + scene_path("twocubes4"), seconds(20),
+                                              [](const Image8&) { return true; });
+        EXPECT_EQ(shown.width, 512) << "no window opened";
+        EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
+    }
+    {
+        SCOPED_TRACE("a display that cannot be reached");
+        SpawnedProgram rt("rt", args, dir.path(), {":99999", true});
+        EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
+    }
+}
+
+// xdotool's answer (its standard output) on the display, or "" when it fails.
+std::string xdotool(const XDisplay& x, const std::string& args) {
+    const std::string command = "DISPLAY='" + x.name() + "' xdotool " + args + " 2>/dev/null";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::string text;
+    std::array<char, 512> chunk{};
+    while (pipe != nullptr && std::fgets(chunk.data(), chunk.size(), pipe) != nullptr) {
+        text += chunk.data();
+    }
+    if (pipe != nullptr) {
+        ::pclose(pipe);
+    }
+    return text;
+}
+
+TEST(Window, ShowDisplaysThePictureAndChangesItsExposureWithKeys) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    if (std::system("command -v xdotool >/dev/null") != 0) {  // NOLINT(concurrency-mt-unsafe)
+        GTEST_SKIP() << "xdotool is not installed (scripts/install-deps installs it)";
+    }
+    const XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    ASSERT_EQ(run_program("rt", {scene_path("twocubes"), "-n", "--output", "pic.gro"}, dir.path())
+                  .exit_code,
+              0);
+    const std::string brighter = "-m" + fmt::format("{}", std::sqrt(2.0));  // one press of +
+    for (const auto& [args, file] :
+         {std::pair{std::vector<std::string>{}, "plain.ppm"}, {{brighter}, "bright.ppm"}}) {
+        std::vector<std::string> convert = {"pic.gro", "--output", file};
+        convert.insert(convert.end(), args.begin(), args.end());
+        ASSERT_EQ(run_program("show", convert, dir.path()).exit_code, 0);
+    }
+    SpawnedProgram show("show", {"pic.gro"}, dir.path(), {x.name(), false});
+    // Its title changes with the pointer: it is found by the start of its title.
+    const auto shoot = [&] {
+        const unsigned long id =
+            std::strtoul(xdotool(x, "search --name '^show: pic.gro'").c_str(), nullptr, 10);
+        return id == 0 ? Image8{} : screenshot_of(x.name(), id);
+    };
+    const Image8 plain = read_ppm(dir.path() / "plain.ppm");
+    EXPECT_EQ(
+        shoot_until(shoot, seconds(10), [&](const Image8& s) { return pictures_match(s, plain); })
+            .width,
+        512)
+        << "show never drew the picture";
+    // The pointer over the picture and + pressed (keys go to the window under the pointer).
+    xdotool(x, "mousemove 100 300 key plus");
+    const Image8 bright = read_ppm(dir.path() / "bright.ppm");
+    EXPECT_EQ(
+        shoot_until(shoot, seconds(10), [&](const Image8& s) { return pictures_match(s, bright); })
+            .width,
+        512)
+        << "+ did not show the picture at " << brighter;
+    const std::string name = xdotool(x, "search --name '^show: ' getwindowname");
+    EXPECT_NE(name.find("-m1.41"), std::string::npos) << name;
+    EXPECT_NE(name.find("(100, 300) = "), std::string::npos) << name;
+    xdotool(x, "key Escape");
+    EXPECT_EQ(show.wait_for_exit(seconds(10)), 0) << show.errors();
+}
+
+}  // namespace
+}  // namespace rt::test
