@@ -208,6 +208,16 @@ TEST_F(ModelReader, AHeaderPromisingMoreThanTheFileHoldsIsRefusedBeforeReading) 
                     "end_header\n"),
               "m.ply:3: the header promises 4000 vertex elements, but the 0 bytes after it hold "
               "at most 0 (the file is truncated or its header is wrong)");
+    EXPECT_EQ(error("m.ply",
+                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                    "end_heade"),
+              "m.ply:5: the PLY header has no end_header line ending in a line break");
+    EXPECT_EQ(error("m.ply", "ply\nformat ascii 1.0\nelement vertex many\nend_header\n"),
+              "m.ply:3: expected the count of the vertex elements, found 'many'");
+    EXPECT_EQ(error("m.ply",
+                    "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                    "property float x\nend_header"),
+              "m.ply:5: the PLY header has no end_header line ending in a line break");
     EXPECT_EQ(error("m.off", "OFF\n4000 3000 0\n0 0 0\n"),
               "m.off:2: the header promises 4000 vertices, but the 22 bytes after it hold at "
               "most 3 (the file is truncated or its header is wrong)");
