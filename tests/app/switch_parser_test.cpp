@@ -27,7 +27,7 @@ std::string usage_error(const Args& args) {
     return "";
 }
 
-const std::string kNoScene =
+const std::string no_scene_message =
     "no scene given: the command is rt SCENE [switches] or rt --model FILE [switches]";
 
 TEST(SwitchParser, NoArgumentsAsksForTheUsage) {
@@ -47,8 +47,8 @@ TEST(SwitchParser, SceneIsKeptAsGiven) {
 }
 
 TEST(SwitchParser, ExactlyOneScene) {
-    EXPECT_EQ(usage_error({"-Dd"}), kNoScene);
-    EXPECT_EQ(usage_error({"--quiet"}), kNoScene);
+    EXPECT_EQ(usage_error({"-Dd"}), no_scene_message);
+    EXPECT_EQ(usage_error({"--quiet"}), no_scene_message);
     EXPECT_EQ(usage_error({"a", "b"}), "two scenes given, 'a' and 'b': give exactly one scene");
     EXPECT_EQ(usage_error({""}), "expected a scene name, found ''");
 }
@@ -230,7 +230,7 @@ TEST(SwitchParser, Ranges) {
 
 TEST(SwitchParser, UsageErrorsComeFirst) {
     EXPECT_EQ(usage_error({"s", "-Sg", "-Q"}), "unknown switch '-Q'");
-    EXPECT_EQ(usage_error({"-Sg"}), kNoScene);
+    EXPECT_EQ(usage_error({"-Sg"}), no_scene_message);
 }
 
 // Every switch of the manual is built in this release; the rule is kept for the next feature.

@@ -18,11 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kBunny = source_dir() / "scenes/models/bunny.ply";
+const fs::path bunny_ply = source_dir() / "scenes/models/bunny.ply";
 
 TEST(ModelOption, TheSceneFramesTheModelOnTheFloorUnderTheLight) {
     Diagnostics diagnostics;
-    const Scene scene = model_scene(kBunny, ReaderDialect{}, diagnostics);
+    const Scene scene = model_scene(bunny_ply, ReaderDialect{}, diagnostics);
     EXPECT_TRUE(diagnostics.warnings().empty());
     ASSERT_EQ(scene.surfaces.size(), 3u);  // the model, the floor, the light
     ASSERT_EQ(scene.polygons.size(), 3674u + 64u + 1u);
@@ -72,7 +72,7 @@ protected:
 };
 
 TEST_F(ModelProgram, RendersTheModelToItsStemWithAPictureThatIsNotBlack) {
-    const ProgramResult r = rt({"--model", kBunny.string()});
+    const ProgramResult r = rt({"--model", bunny_ply.string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err, "");
     const std::string picture = pixels("bunny.gro");
@@ -83,27 +83,27 @@ TEST_F(ModelProgram, RendersTheModelToItsStemWithAPictureThatIsNotBlack) {
 
 TEST_F(ModelProgram, ObjAndPlyOfTheBunnyGiveTheSamePictureBitForBit) {
     dir_.write("bunny.obj", bunny_as_obj());
-    ASSERT_EQ(rt({"--model", kBunny.string(), "-n", "--output", "ply.gro"}).exit_code, 0);
+    ASSERT_EQ(rt({"--model", bunny_ply.string(), "-n", "--output", "ply.gro"}).exit_code, 0);
     ASSERT_EQ(rt({"--model", "bunny.obj", "-n", "--output", "obj.gro"}).exit_code, 0);
     EXPECT_FALSE(fs::exists(dir_.path() / "bunny.gro"));  // -n applies
     EXPECT_TRUE(pixels("ply.gro") == pixels("obj.gro"));
 }
 
 TEST_F(ModelProgram, EverySwitchStillApplies) {
-    ASSERT_EQ(rt({"--model", kBunny.string(), "-n", "--output", "octree.gro"}).exit_code, 0);
+    ASSERT_EQ(rt({"--model", bunny_ply.string(), "-n", "--output", "octree.gro"}).exit_code, 0);
     // Another intersection method: the same picture (every method answers as brute force does).
-    ASSERT_EQ(
-        rt({"--model", kBunny.string(), "-n", "--accel", "bvh", "--output", "bvh.gro"}).exit_code,
-        0);
+    ASSERT_EQ(rt({"--model", bunny_ply.string(), "-n", "--accel", "bvh", "--output", "bvh.gro"})
+                  .exit_code,
+              0);
     EXPECT_TRUE(pixels("octree.gro") == pixels("bvh.gro"));
     // Switches of the picture change it: no shadow feelers, and smooth shading.
-    ASSERT_EQ(rt({"--model", kBunny.string(), "-n", "-Ds", "-Dd", "--output", "ds.gro"}).exit_code,
-              0);
+    ASSERT_EQ(
+        rt({"--model", bunny_ply.string(), "-n", "-Ds", "-Dd", "--output", "ds.gro"}).exit_code, 0);
     EXPECT_NE(pixels("octree.gro"), pixels("ds.gro"));
-    ASSERT_EQ(rt({"--model", kBunny.string(), "-n", "-Po", "--output", "po.gro"}).exit_code, 0);
+    ASSERT_EQ(rt({"--model", bunny_ply.string(), "-n", "-Po", "--output", "po.gro"}).exit_code, 0);
     EXPECT_NE(pixels("octree.gro"), pixels("po.gro"));
     // -p reports the method the model's scene chose and its polygons; --output writes a PPM.
-    const ProgramResult p = rt({"--model", kBunny.string(), "-n", "-p", "--output", "b.ppm"});
+    const ProgramResult p = rt({"--model", bunny_ply.string(), "-n", "-p", "--output", "b.ppm"});
     ASSERT_EQ(p.exit_code, 0);
     EXPECT_NE(p.out.find("octree over 3739 polygons"), std::string::npos) << p.out;
     EXPECT_TRUE(fs::exists(dir_.path() / "b.ppm"));

@@ -6,7 +6,7 @@
 namespace rt::test {
 
 /// A unit quad (z = 0, normal +z) and a pentagon beside it, as OBJ.
-inline const std::string kQuadPentagonObj = R"(# a quad and a pentagon
+inline const std::string quad_pentagon_obj = R"(# a quad and a pentagon
 v 0 0 0
 v 1 0 0
 v 1 1 0
@@ -21,7 +21,7 @@ f 5 6 7 8 9
 )";
 
 /// The same two polygons as ASCII PLY.
-inline const std::string kQuadPentagonPly = R"(ply
+inline const std::string quad_pentagon_ply = R"(ply
 format ascii 1.0
 comment a quad and a pentagon
 element vertex 9
@@ -45,7 +45,7 @@ end_header
 )";
 
 /// A unit cube with one normal per face (so 24 vertices as the file lists them, 8 positions).
-inline const std::string kFaceNormalCubeObj = R"(v 0 0 0
+inline const std::string face_normal_cube_obj = R"(v 0 0 0
 v 1 0 0
 v 1 1 0
 v 0 1 0

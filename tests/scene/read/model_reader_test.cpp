@@ -47,7 +47,7 @@ protected:
 
 TEST_F(ModelReader, AQuadAndAPentagonStayWholeInObjAndPly) {
     for (const auto& [name, text] :
-         {std::pair{"m.obj", kQuadPentagonObj}, std::pair{"m.ply", kQuadPentagonPly}}) {
+         {std::pair{"m.obj", quad_pentagon_obj}, std::pair{"m.ply", quad_pentagon_ply}}) {
         SCOPED_TRACE(name);
         const SurfaceMesh m = read(name, text);
         EXPECT_EQ(corner_counts(m), (std::vector<std::uint32_t>{4, 5}));
@@ -59,7 +59,7 @@ TEST_F(ModelReader, AQuadAndAPentagonStayWholeInObjAndPly) {
 
 TEST_F(ModelReader, DashDfTracesWhatTheModelHolds) {
     RecordingDiagnostics d(true);
-    const fs::path path = dir_.write("cube.obj", kFaceNormalCubeObj);
+    const fs::path path = dir_.write("cube.obj", face_normal_cube_obj);
     read_model_file(path, "cube.obj", {"s.scn", 21, 0}, d.diagnostics);
     ASSERT_EQ(d.traces.size(), 1u);
     EXPECT_EQ(local(d.traces[0]),
@@ -67,18 +67,18 @@ TEST_F(ModelReader, DashDfTracesWhatTheModelHolds) {
 }
 
 TEST_F(ModelReader, VerticesAtOnePositionAreJoinedWhateverTheirNormals) {
-    const SurfaceMesh m = read("cube.obj", kFaceNormalCubeObj);
+    const SurfaceMesh m = read("cube.obj", face_normal_cube_obj);
     EXPECT_EQ(m.vertices.size(), 8u);  // not the 24 the file's (position, normal) pairs make
     EXPECT_EQ(corner_counts(m), (std::vector<std::uint32_t>(6, 4)));
     EXPECT_TRUE(warnings().empty()) << warnings().front();  // a closed cube is watertight
 }
 
 TEST_F(ModelReader, TheFilesNormalsAreCornerNormalsAndDecideTheOutside) {
-    const SurfaceMesh m = read("cube.obj", kFaceNormalCubeObj);
+    const SurfaceMesh m = read("cube.obj", face_normal_cube_obj);
     ASSERT_EQ(m.corner_normals.size(), m.corners.size());
     EXPECT_EQ(m.corner_normals[0], (Vec3{0, 0, -1}));
     EXPECT_EQ(m.polygons[0].outward, (Vec3{0, 0, -4}));  // the sum of its corners' normals
-    EXPECT_EQ(m.corner_normals[4 * 5], (Vec3{1, 0, 0}));
+    EXPECT_EQ(m.corner_normals[20], (Vec3{1, 0, 0}));    // the first corner of the sixth face
 }
 
 TEST_F(ModelReader, CornersWithoutNormalsGetZeroBesideCornersWithThem) {
@@ -112,7 +112,7 @@ TEST_F(ModelReader, MaterialsAreOffsetsInTheMtlsOrder) {
 
 TEST_F(ModelReader, WithoutMaterialsEveryOffsetIs0) {
     for (const auto& [name, text] :
-         {std::pair{"m.obj", kQuadPentagonObj}, std::pair{"m.ply", kQuadPentagonPly}}) {
+         {std::pair{"m.obj", quad_pentagon_obj}, std::pair{"m.ply", quad_pentagon_ply}}) {
         SCOPED_TRACE(name);
         const SurfaceMesh m = read(name, text);
         EXPECT_TRUE(m.materials.empty());  // Assimp's stand-in material is not the file's
@@ -123,7 +123,7 @@ TEST_F(ModelReader, WithoutMaterialsEveryOffsetIs0) {
 }
 
 TEST_F(ModelReader, AnOpenModelIsWarnedAbout) {
-    read("m.obj", kQuadPentagonObj);
+    read("m.obj", quad_pentagon_obj);
     EXPECT_EQ(warnings(), (std::vector<std::string>{
                               "m.obj: the model is not watertight: 9 edges border one polygon "
                               "only"}));
@@ -171,10 +171,10 @@ TEST_F(ModelReader, GltfNodeTransformsPlaceTheMesh) {
 }
 
 TEST_F(ModelReader, BrokenFilesGiveOneClearMessage) {
-    EXPECT_EQ(
-        error("m.ply", std::string(kQuadPentagonPly).replace(kQuadPentagonPly.rfind('8'), 1, "18")),
-        "m.ply: polygon 1 refers to vertex 18, but its mesh has 9 vertices (numbered from "
-        "0)");
+    EXPECT_EQ(error("m.ply",
+                    std::string(quad_pentagon_ply).replace(quad_pentagon_ply.rfind('8'), 1, "18")),
+              "m.ply: polygon 1 refers to vertex 18, but its mesh has 9 vertices (numbered from "
+              "0)");
     EXPECT_EQ(error("m.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 7\n"),
               "m.obj: cannot read the model: OBJ: vertex index out of range");
     EXPECT_EQ(error("m.ply", ""), "m.ply: cannot read the model: File m.ply is empty.");
@@ -208,6 +208,16 @@ TEST_F(ModelReader, AHeaderPromisingMoreThanTheFileHoldsIsRefusedBeforeReading) 
                     "end_header\n"),
               "m.ply:3: the header promises 4000 vertex elements, but the 0 bytes after it hold "
               "at most 0 (the file is truncated or its header is wrong)");
+    EXPECT_EQ(error("m.ply",
+                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                    "end_heade"),
+              "m.ply:5: the PLY header has no end_header line ending in a line break");
+    EXPECT_EQ(error("m.ply", "ply\nformat ascii 1.0\nelement vertex many\nend_header\n"),
+              "m.ply:3: expected the count of the vertex elements, found 'many'");
+    EXPECT_EQ(error("m.ply",
+                    "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                    "property float x\nend_header"),
+              "m.ply:5: the PLY header has no end_header line ending in a line break");
     EXPECT_EQ(error("m.off", "OFF\n4000 3000 0\n0 0 0\n"),
               "m.off:2: the header promises 4000 vertices, but the 22 bytes after it hold at "
               "most 3 (the file is truncated or its header is wrong)");

@@ -52,12 +52,12 @@ protected:
 };
 
 // One square in z = 0 whose corner (1, 1, 0) has a leaning normal; the others point along +z.
-const std::string kLeaningSquare =
+const std::string leaning_square =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0.6 0.8\n"
     "f 1//1 2//1 3//2 4//1\n";
 
 TEST_F(ModelScene, ASmoothModelShadesWithTheFilesNormalsPlacedWithIt) {
-    dir_.write("sq.obj", kLeaningSquare);
+    dir_.write("sq.obj", leaning_square);
     // Turned 90 degrees about x: +y goes to +z, +z to -y.
     const Scene scene = load("1 0 3 1 sq.obj 2 5 0 0 90 0 0", smooth_field());
     ASSERT_EQ(scene.polygons.size(), 1u);
@@ -75,7 +75,7 @@ TEST_F(ModelScene, ASmoothModelShadesWithTheFilesNormalsPlacedWithIt) {
 }
 
 TEST_F(ModelScene, WithoutTheSmoothFieldTheFilesNormalsAreNotUsed) {
-    dir_.write("sq.obj", kLeaningSquare);
+    dir_.write("sq.obj", leaning_square);
     const Scene scene = load("1 0 3 sq.obj 1 0 0 0 0 0 0");
     EXPECT_FALSE(scene.polygons[0].smooth);
     EXPECT_TRUE(scene.model_normals.empty());
@@ -100,7 +100,7 @@ TEST_F(ModelScene, WithoutFileNormalsOurVertexNormalsAreUsed) {
 
 TEST_F(ModelScene, CreaseAngleKeepsTheFilesNormalsAndSharpensTheRest) {
     // The leaning square, and a cube without normals beside it.
-    dir_.write("two.obj", kLeaningSquare +
+    dir_.write("two.obj", leaning_square +
                               "v 5 0 0\nv 6 0 0\nv 6 1 0\nv 5 1 0\nv 5 0 1\nv 6 0 1\nv 6 1 1\n"
                               "v 5 1 1\nf 5 8 7 6\nf 9 10 11 12\nf 5 6 10 9\nf 8 12 11 7\n"
                               "f 5 9 12 8\nf 6 7 11 10\n");
@@ -131,14 +131,14 @@ TEST_F(ModelScene, MaterialsOffsetTheSurfacesAttribute) {
               "m.obj: polygon 0 uses attribute 6 (attribute 4 of the optical surface + offset "
               "2), which is not defined");
     // ... and at the .scn line when it is.
-    dir_.write("n.obj", kQuadPentagonObj);
+    dir_.write("n.obj", quad_pentagon_obj);
     EXPECT_EQ(error("1 9 3 n.obj 1 0 0 0 0 0 0"),
               "m.scn:11: optical surface 'n.obj' uses attribute 9, which is not defined");
 }
 
 TEST_F(ModelScene, ObjAndPlyOfOneModelMakeTheSameScene) {
-    dir_.write("m.obj", kQuadPentagonObj);
-    dir_.write("m.ply", kQuadPentagonPly);
+    dir_.write("m.obj", quad_pentagon_obj);
+    dir_.write("m.ply", quad_pentagon_ply);
     const Scene obj = load("1 2 3 m.obj 3 1 2 3 10 20 30");
     const Scene ply = load("1 2 3 m.ply 3 1 2 3 10 20 30");
     EXPECT_EQ(obj.positions, ply.positions);

@@ -78,6 +78,9 @@ void check_count(const std::string& name, int line, const std::string& what, std
 }  // namespace
 
 void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name) {
+    if (!bytes.starts_with("ply") && !bytes.starts_with("PLY")) {
+        return;  // not PLY: Assimp says so
+    }
     std::istringstream in{std::string(bytes)};
     std::vector<PlyElement> elements;
     bool ascii = true;
@@ -90,7 +93,7 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
         if (w.empty()) {
             continue;
         }
-        if (w[0] == "end_header") {
+        if (w[0] == "end_header" && !in.eof()) {  // eof: no line break after it
             const std::uintmax_t room = file_size > header_bytes ? file_size - header_bytes : 0;
             std::uintmax_t used = 0;
             for (const PlyElement& e : elements) {
@@ -105,13 +108,20 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
         } else if (w[0] == "element" && w.size() >= 3) {
             const std::optional<std::int64_t> count = parse_integer(w[2]);
             if (!count || *count < 0) {
-                return;  // Assimp names the fault
+                throw expected_found({name, line, 0}, "the count of the " + w[1] + " elements",
+                                     quote_token(w[2]));
             }
             elements.push_back({w[1], *count, 0, line});
         } else if (w[0] == "property" && w.size() >= 2 && !elements.empty()) {
             elements.back().least_bytes += least_property_bytes(w, ascii);
         }
     }
+    // Assimp 5.2 loops for ever on a header that never ends (or ends without a line break).
+    throw InputError(
+        {name, std::max(line, 1), 0},
+        fmt::format(
+            "the PLY header has no end_header line ending in a line break{}",
+            bytes.size() < file_size ? fmt::format(" in its first {} bytes", bytes.size()) : ""));
 }
 
 void check_off_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name) {

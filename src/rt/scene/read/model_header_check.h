@@ -11,7 +11,9 @@ namespace rt {
 
 /// Checks the header of a PLY file (`bytes` is its start, at least up to end_header if the file
 /// has one; `file_size` its whole size). Throws InputError "name:line: ..." at the element line
-/// whose count cannot fit. A header it cannot make sense of is left to Assimp to refuse.
+/// whose count cannot fit, or at the last line if there is no end_header line ending in a line
+/// break (Assimp 5.2 never returns from such a file). Other faults of the header are left to Assimp
+/// to refuse.
 void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name);
 
 /// The same for an OFF file: the vertex and face counts after the optional OFF keyword.

@@ -49,7 +49,7 @@ private:
         void write(const char* message) override {
             std::string m(message);
             // "Error, T0: OFF: Vertex index is out of range\n" -> "OFF: Vertex index ..."
-            if (const std::size_t at = m.find(": "); at != std::string::npos && at < 20) {
+            if (const std::size_t at = m.find(": "); at < 20) {  // npos is not
                 m.erase(0, at + 2);
             }
             while (!m.empty() && (m.back() == '\n' || m.back() == '\r')) {
@@ -80,7 +80,7 @@ void check_header(const std::filesystem::path& path, const std::string& ext,
         return;
     }
     std::ifstream in(path, std::ios::binary);
-    std::string head(64 * 1024, '\0');
+    std::string head(std::size_t{64} * 1024, '\0');
     in.read(head.data(), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<std::size_t>(in.gcount()));
     const std::uintmax_t size = std::filesystem::file_size(path);
@@ -271,7 +271,7 @@ SurfaceMesh read_model_file(const std::filesystem::path& path, const std::string
         ModelFlattener flattener(*scene, name, ext == ".gltf" || ext == ".glb");
         mesh = flattener.flatten();
         for (const std::string& m : log.messages()) {
-            diagnostics.warn(name + ": " + m);
+            diagnostics.warn(fmt::format("{}: {}", name, m));
         }
         if (flattener.short_faces() > 0) {
             diagnostics.warn(
