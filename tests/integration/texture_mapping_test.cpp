@@ -12,6 +12,7 @@
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/diagnostics.h"
+#include "rt/image/png_format.h"
 #include "rt/render/film_window.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/read/load_scene.h"
@@ -245,6 +246,87 @@ TEST(TextureMapping, AFlatWhitePrescriptionDrawsThePlainGridsPicture) {
     const auto differ = std::mismatch(with_map.begin(), with_map.end(), without.begin());
     EXPECT_TRUE(differ.first == with_map.end())
         << "first difference at float " << (differ.first - with_map.begin());
+}
+
+// ---- Pictures on the grid --------------------------------------------------------------------
+
+// A 2 x 2 grid over [-1, 1]^2 in z = 0 facing the eye at (0, 0, -10): row 0 at the top (y = 1),
+// u along +x, v along -y, so that the outward side u x v faces the eye. `map_lines` go into the
+// texture map before its (flat, white) elements; the view is `pixels` a side, 0.15 wide a side at
+// distance 1.
+fs::path write_picture_scene(const TempDir& dir, const std::string& map_lines, int pixels,
+                             int lghtick, const std::string& attribute) {
+    dir.write("Attributes", "$ 2\n$ " + attribute + " 1\n$ 1 1 1 2 2 1 0 0 0 0 1 0 0 0 0 2\n");
+    dir.write("sheet",
+              "2 2\n-1 1 0\n0 1 0\n1 1 0\n-1 0 0\n0 0 0\n1 0 0\n-1 -1 0\n0 -1 0\n"
+              "1 -1 0\n");
+    dir.write("map", "2 2\ncentre 1 1\n" + map_lines +
+                         "0 0 0 0 1 1 1\n0 0 0 0 1 1 1\n0 0 0 0 1 1 1\n0 0 0 0 1 1 1\n");
+    // A tiny lamp off to the side, at (3, 0, -4), out of the view.
+    dir.write("lamp", rectangle(-0.01, -0.01, 0.01, 0.01, 0));
+    const double view = 2 * std::atan(0.15) * 180 / std::numbers::pi;
+    return dir.write(
+        "pictures.scn",
+        fmt::format("$ 0 {} 0 0 0 .5 2 0\n$ 0 0 -10 0 0 0\n$ 1\n$ {} {}\n$ 1\n$ {} {}\n"
+                    "$ 0 0 {} {}\n$ Attributes\n$ 1\n$ 1\n$ 1 2 0 lamp 1 3 0 -4 0 0 0\n"
+                    "$ 1\n$ 1 sheet map 1 0 0 0 0 0 0 2 2\n",
+                    lghtick, view, view, pixels, pixels, pixels - 1, pixels - 1));
+}
+
+TEST(TextureMapping, AColourMapLiesOnTheGridAsItsRowsAndColumns) {
+    // 8 x 8 pixels: red, green on top; blue, white below. An ambient-only white surface shows
+    // the picture's colours themselves, bytes over 255.
+    Image8 picture{8, 8, {}};
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            const bool right = x >= 4;
+            const bool low = y >= 4;
+            const std::uint8_t r = !low ? (right ? 0 : 255) : (right ? 255 : 0);
+            const std::uint8_t g = !low ? (right ? 255 : 0) : (right ? 255 : 0);
+            const std::uint8_t b = low ? 255 : 0;
+            picture.rgb.insert(picture.rgb.end(), {r, g, b});
+        }
+    }
+    const TempDir dir;
+    write_png(picture, dir.path() / "quarters.png");
+    const fs::path scene = write_picture_scene(dir, "colour_map quarters.png\n", 30, 0,
+                                               "1 1 1 2 2 0 1 0 0 0 1 0 0 0 0");
+    const std::vector<float> film = render_file(scene, {"-V", "-Da"});
+    ASSERT_EQ(film.size(), 3u * 30 * 30);
+    const auto pixel = [&](int x, int y) {
+        const std::size_t at = 3 * static_cast<std::size_t>(y * 30 + x);
+        return Rgb{film[at], film[at + 1], film[at + 2]};
+    };
+    // Pixel 10 sees x (or y) = -0.45 on the sheet, a quarter of the way in: u = 0.55, picture
+    // pixel 2.2, inside its block. Pixel 19 sees +0.45.
+    EXPECT_EQ(pixel(10, 10), (Rgb{1, 0, 0}));
+    EXPECT_EQ(pixel(19, 10), (Rgb{0, 1, 0}));
+    EXPECT_EQ(pixel(10, 19), (Rgb{0, 0, 1}));
+    EXPECT_EQ(pixel(19, 19), (Rgb{1, 1, 1}));
+    EXPECT_EQ(pixel(0, 0), Rgb{});  // beyond the sheet
+}
+
+TEST(TextureMapping, ANormalMapTurnsTheDiffuseLightByLambertsLaw) {
+    // One pixel, whose ray meets the sheet at the origin; a white, purely diffuse sheet lit by a
+    // lamp of intensity 1 at (3, 0, -4), no attenuation: the pixel is cos of the angle between
+    // the normal and the lamp. The normal map's one pixel (200, 90, 230) means
+    // 2 * byte / 255 - 1 along u (+x), up the picture (-v, which is +y here) and the outward
+    // normal (-z).
+    const TempDir dir;
+    write_png(Image8{1, 1, {200, 90, 230}}, dir.path() / "tilt.png");
+    const std::string diffuse = "1 1 1 2 2 0 0 1 0 0 1 0 0 0 0";
+    const Vec3 to_lamp = normalize(Vec3{3, 0, -4});
+    const auto channel = [](int byte) { return 2.0 * byte / 255.0 - 1.0; };
+    const Vec3 mapped = normalize(Vec3{channel(200), channel(90), -channel(230)});
+    const std::vector<float> flat =
+        render_file(write_picture_scene(dir, "", 1, 2, diffuse), {"-V", "-Da", "-Dl"});
+    const std::vector<float> bumped = render_file(
+        write_picture_scene(dir, "normal_map tilt.png\n", 1, 2, diffuse), {"-V", "-Da", "-Dl"});
+    ASSERT_EQ(flat.size(), 3u);
+    ASSERT_EQ(bumped.size(), 3u);
+    EXPECT_NEAR(flat[1], dot(Vec3{0, 0, -1}, to_lamp), 1e-6);
+    EXPECT_NEAR(bumped[1], dot(mapped, to_lamp), 1e-6);
+    EXPECT_GT(std::fabs(bumped[1] - flat[1]), 0.1);
 }
 
 }  // namespace

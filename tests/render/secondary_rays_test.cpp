@@ -155,6 +155,7 @@ TEST(SecondaryRays, AMappedNormalIsCorrectedLikeASmoothedOne) {
     cell.optical_centre = {0, 0, 0};
     cell.sphere = 1.0 / 1.2;
     b.scene().texture_cells = {cell};
+    b.scene().texture_grids = {TextureGrid{1, 1}};
     b.scene().polygons[0].texture_cell = 0;
     add_square(b, {11, 0, -10}, 0.5, 1.0, 1);  // where the flat mirror sends it
     EXPECT_EQ(trace_once(b.scene(), sharp_rays(), ray), (Rgb{1, 1, 1}));

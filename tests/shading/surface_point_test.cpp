@@ -114,6 +114,7 @@ TEST(SurfacePoint, ATextureCellGivesTheNormalAndTintsTheColour) {
     scene.attributes[0].color = {0.8, 0.6, 0.4};
     EXPECT_EQ(square.hit_at(0.5, 0.5, true).color, (Rgb{0.8, 0.6, 0.4}));
     scene.texture_cells = {sphere_cell()};
+    scene.texture_grids = {TextureGrid{1, 1}};
     scene.polygons[0].texture_cell = 0;
     // Half the radius away from the centre along x: the sphere's normal there, tilted asin(1/2).
     const Vec3 sphere_normal{0.5, 0, std::sqrt(0.75)};

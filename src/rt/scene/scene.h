@@ -14,6 +14,7 @@
 #include "rt/geometry/polygon_view.h"
 #include "rt/scene/attribute.h"
 #include "rt/scene/texture_cell.h"
+#include "rt/scene/texture_image.h"
 
 namespace rt {
 
@@ -108,9 +109,11 @@ struct Scene {
     std::vector<Vec3> model_normals;
     std::vector<std::uint32_t> corners;  ///< polygon corners in loop order, into positions
     std::vector<Polygon> polygons;
-    std::vector<TextureCell> texture_cells;  ///< the cells of the texture-mapped surfaces (-V)
-    std::vector<SourceRef> polygon_origin;   ///< per polygon
-    std::vector<std::string> source_files;   ///< files read, for SourceRef
+    std::vector<TextureCell> texture_cells;    ///< the cells of the texture-mapped surfaces (-V)
+    std::vector<TextureGrid> texture_grids;    ///< one per texture-mapped surface
+    std::vector<TextureImage> texture_images;  ///< the pictures their texture maps name
+    std::vector<SourceRef> polygon_origin;     ///< per polygon
+    std::vector<std::string> source_files;     ///< files read, for SourceRef
 
     Vec3 corner_position(const Polygon& p, std::uint32_t k) const {
         return positions[corners[p.first_corner + k]];
@@ -125,13 +128,6 @@ struct Scene {
     /// normals than positions.
     CornerNormals normals_of(std::uint32_t polygon) const;
     const Attribute& attribute_of(const Polygon& p) const { return attributes[p.attribute]; }
-    /// The polygon's colour: its attribute's, times its texture cell's when it has one.
-    Rgb color_of(const Polygon& p) const {
-        const Rgb& color = attribute_of(p).color;
-        return p.texture_cell == Polygon::kNoTexture
-                   ? color
-                   : color * texture_cells[static_cast<std::size_t>(p.texture_cell)].color;
-    }
     SourceLocation origin_of(std::uint32_t polygon) const;
     /// Smallest box around every position; a box of no size at the origin for an empty scene
     /// (never an empty box: its infinities would spill into every size derived from it).

@@ -23,10 +23,24 @@ struct TextureCell {
     double sphere = 0.0;  ///< curvature 1/radius in world units; > 0 bulges to the outside
     double cylinder = 0.0;     ///< the same, across the cylinder's axis only
     Rgb color{1.0, 1.0, 1.0};  ///< multiplies the attribute's colour
+    std::uint32_t grid = 0;    ///< into Scene::texture_grids
     std::uint32_t row = 0;     ///< where the cell is in its grid
     std::uint32_t column = 0;
 
     bool flat() const { return sphere == 0.0 && cylinder == 0.0; }
+};
+
+/// A texture-mapped surface's grid as a whole: its size, and the pictures its texture map lays on
+/// it (docs/formats.md, "Pictures on the grid").
+struct TextureGrid {
+    /// Not an index into Scene::texture_images: the grid has no such picture.
+    static constexpr std::int32_t kNoImage = -1;
+    std::uint32_t rows = 0;
+    std::uint32_t columns = 0;
+    std::int32_t colour_map = kNoImage;  ///< into Scene::texture_images
+    std::int32_t normal_map = kNoImage;  ///< into Scene::texture_images
+
+    bool has_images() const { return colour_map != kNoImage || normal_map != kNoImage; }
 };
 
 /// The tangent of the tilt of the normal of a sphere or cylinder of curvature k at distance rho

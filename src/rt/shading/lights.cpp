@@ -1,5 +1,7 @@
 #include "rt/shading/lights.h"
 
+#include "rt/scene/textured_point.h"
+
 namespace rt {
 
 namespace {
@@ -25,9 +27,11 @@ std::vector<PointLight> collect_point_lights(const Scene& scene, int lghtick, bo
         if (!a.is_emissive()) {
             continue;
         }
-        const Rgb total = scene.color_of(p) * a.emission;
+        // A texture-mapped emitter gives the light of its colour at its centre.
+        const Vec3 centre = polygon_centre(scene, p);
+        const Rgb total = surface_color(scene, id, centre) * a.emission;
         if (lghtick == 2) {
-            lights.push_back({polygon_centre(scene, p), total, id});
+            lights.push_back({centre, total, id});
             continue;
         }
         const Rgb each = share ? total * (1.0 / static_cast<double>(p.corner_count)) : total;

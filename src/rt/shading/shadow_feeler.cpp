@@ -5,6 +5,7 @@
 
 #include "rt/geometry/ray_polygon.h"
 #include "rt/sampling/directions.h"
+#include "rt/scene/textured_point.h"
 #include "rt/shading/warn_light.h"
 
 namespace rt {
@@ -38,7 +39,8 @@ Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const V
         if (a.is_opaque() || forced_opaque || context.settings.feelers_stop_at_transparent) {
             return {};
         }
-        filter = filter * context.scene.color_of(p) * a.transmission;
+        const Rgb color = surface_color(context.scene, hit->polygon, feeler.at(hit->t));
+        filter = filter * color * a.transmission;
         along.min = hit->t;
     }
     return {};

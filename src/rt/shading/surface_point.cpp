@@ -2,6 +2,7 @@
 
 #include "rt/geometry/normals.h"
 #include "rt/scene/shape_normal.h"
+#include "rt/scene/textured_point.h"
 
 namespace rt {
 
@@ -9,10 +10,6 @@ namespace {
 
 Vec3 outward_shading_normal(const Scene& scene, std::uint32_t id, const Vec3& point) {
     const Polygon& p = scene.polygons[id];
-    if (p.texture_cell != Polygon::kNoTexture) {
-        return element_normal(scene.texture_cells[static_cast<std::size_t>(p.texture_cell)],
-                              p.normal, point);
-    }
     if (p.shape != Polygon::kNoShape && p.mark != PolygonMark::Ordinary &&
         p.mark != PolygonMark::InterpolatesNormals) {
         return shape_normal(scene.shapes[static_cast<std::size_t>(p.shape)], p.mark, point,
@@ -33,10 +30,17 @@ SurfacePoint describe_hit(const Scene& scene, const ShadingSettings& settings, c
     s.position = ray.at(hit.t);
     s.polygon = hit.polygon;
     s.attribute = &scene.attribute_of(p);
-    s.color = scene.color_of(p);
     s.front = dot(ray.direction, p.normal) < 0.0;
     s.facing_normal = s.front ? p.normal : -p.normal;
-    const Vec3 shading = outward_shading_normal(scene, hit.polygon, s.position);
+    Vec3 shading;
+    if (p.texture_cell != Polygon::kNoTexture) {
+        const TexturedPoint textured = textured_point(scene, hit.polygon, s.position);
+        shading = textured.normal;
+        s.color = s.attribute->color * textured.color;
+    } else {
+        shading = outward_shading_normal(scene, hit.polygon, s.position);
+        s.color = s.attribute->color;
+    }
     s.shading_normal = s.front ? shading : -shading;
     // An interpolated or mapped normal may lean past the silhouette; never let it face away from
     // the ray.

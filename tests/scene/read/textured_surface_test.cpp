@@ -3,7 +3,9 @@
 // "expected ..., found ..." (docs/formats.md, "Texture-mapped surfaces").
 #include <cmath>
 
+#include "rt/image/png_format.h"
 #include "rt/scene/read/load_scene.h"
+#include "rt/scene/textured_point.h"
 
 #include <gtest/gtest.h>
 
@@ -92,7 +94,8 @@ TEST_F(TexturedScene, EveryCellIsOnePolygonWithItsTextureCell) {
         EXPECT_EQ(cell.row, id / 3);
         EXPECT_EQ(cell.column, id % 3);
         EXPECT_DOUBLE_EQ(cell.color.g, 0.1 * id);
-        EXPECT_EQ(scene.color_of(p), (Rgb{0.5, 0.5 * cell.color.g, 0.5}));
+        EXPECT_EQ(surface_color(scene, id, scene.corner_position(p, 0)),
+                  (Rgb{0.5, 0.5 * cell.color.g, 0.5}));
         // u (+x) turned to +y, v (+y) to -x; the outward side u x v stays +z.
         expect_near(p.normal, {0, 0, 1});
         expect_near(cell.tangent_u, {0, 1, 0});
@@ -123,7 +126,7 @@ TEST_F(TexturedScene, TexturedSurfacesComeAfterTheEntitiesAndCountInAutoCenterin
     ASSERT_EQ(scene.polygons.size(), 7u);
     EXPECT_EQ(scene.polygons[0].texture_cell, Polygon::kNoTexture);
     EXPECT_EQ(scene.polygons[1].texture_cell, 0);
-    EXPECT_EQ(scene.color_of(scene.polygons[0]), (Rgb{1, 1, 1}));
+    EXPECT_EQ(surface_color(scene, 0, scene.positions[0]), (Rgb{1, 1, 1}));
     // The box around the triangle (z = -5) and the grid (z = 0, up to (3, 2)).
     EXPECT_EQ(scene.view.look, (Vec3{1.5, 1, -2.5}));
 }
@@ -217,7 +220,8 @@ TEST_F(TexturedScene, TheTextureMapIsCheckedLineByLine) {
     EXPECT_EQ(with("centre 1.5 1\n", ""),
               "map:2: expected an optical centre line 'centre u v' before the elements, found '0'");
     EXPECT_EQ(with("centre 1.5 1\n", "center 1.5 1\n"),
-              "map:2: expected 'centre' or the first element of the cells, found 'center'");
+              "map:2: expected 'centre', 'colour_map', 'normal_map' or the first element of the "
+              "cells, found 'center'");
     EXPECT_EQ(with("centre 1.5 1\n", "centre 1.5\n"),
               "map:2: expected the v of optical centre 0, found end of line");
     EXPECT_EQ(with("centre 1.5 1\n", "centre 1.5 1 0\n"),
@@ -244,6 +248,48 @@ TEST_F(TexturedScene, TheTextureMapIsCheckedLineByLine) {
               "map:2: expected the elements of the cells, found end of file");
     EXPECT_EQ(error_with("map", "2 3\n"),
               "map:1: expected an optical centre line 'centre u v', found end of file");
+}
+
+TEST_F(TexturedScene, TheMapNamesAColourMapAndANormalMap) {
+    write_png(Image8{3, 2, std::vector<std::uint8_t>(18, 200)}, dir_.path() / "tint.png");
+    write_png(Image8{1, 1, {128, 128, 255}}, dir_.path() / "bumps.png");
+    std::string map = kMap;
+    map.insert(map.find("0 0.5"), "colour_map tint.png\nnormal_map bumps.png  # flat\n");
+    dir_.write("map", map);
+    const Scene scene = load(scn(line()));
+    ASSERT_EQ(scene.texture_grids.size(), 1u);
+    const TextureGrid& grid = scene.texture_grids[0];
+    EXPECT_EQ(grid.rows, 2u);
+    EXPECT_EQ(grid.columns, 3u);
+    ASSERT_EQ(scene.texture_images.size(), 2u);
+    EXPECT_EQ(scene.texture_images[static_cast<std::size_t>(grid.colour_map)].width, 3);
+    EXPECT_EQ(scene.texture_images[static_cast<std::size_t>(grid.normal_map)].rgb,
+              (std::vector<std::uint8_t>{128, 128, 255}));
+    // The colour map's 200 / 255 on top of cell 4's element (green 0.4) and the attribute's 0.5.
+    const Rgb c = surface_color(scene, 4, scene.corner_position(scene.polygons[4], 0));
+    EXPECT_NEAR(c.g, 0.5 * 0.4 * 200 / 255, 1e-12);
+}
+
+TEST_F(TexturedScene, PictureLinesAreCheckedToo) {
+    write_png(Image8{1, 1, {1, 2, 3}}, dir_.path() / "tint.png");
+    const auto with = [&](const std::string& lines) {
+        std::string map = kMap;
+        map.insert(map.find("0 0.5"), lines);
+        return error_with("map", map);
+    };
+    EXPECT_EQ(with("colour_map tint.png\ncolour_map tint.png\n"),
+              "map:4: a second colour_map line (the first is at line 3)");
+    EXPECT_EQ(with("normal_map\n"),
+              "map:3: expected the file name of the normal_map, found end "
+              "of line");
+    EXPECT_EQ(with("normal_map a b\n"),
+              "map:3: expected the end of the line after the file name of the normal_map, found "
+              "'b'");
+    EXPECT_EQ(with("colour_map none.png\n").substr(0, 40),
+              "map:3: colour map 'none.png': cannot ope");
+    dir_.write("text.png", "not a picture");
+    EXPECT_NE(with("normal_map text.png\n").find("text.png: expected a PNG picture"),
+              std::string::npos);
 }
 
 TEST_F(TexturedScene, MissingFilesAndAttributesAreNamedAtTheScnLine) {

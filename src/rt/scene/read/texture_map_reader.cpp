@@ -32,6 +32,7 @@ private:
     /// The header's records, up to the first element (a record that starts with a number).
     void read_header();
     void read_centre();
+    void read_picture(std::optional<MapPicture>& picture);
     TextureElement read_element(const std::string& name);
     double unit_factor(LineFields& fields, const std::string& what);
 
@@ -87,11 +88,18 @@ void TextureMapReader::read_header() {
             }
             return;  // the first element
         }
-        if (word != "centre") {
+        if (word == "centre") {
+            read_centre();
+        } else if (word == "colour_map") {
+            read_picture(map_.colour_map);
+        } else if (word == "normal_map") {
+            read_picture(map_.normal_map);
+        } else {
             throw expected_found(source_.at(record_.line),
-                                 "'centre' or the first element of the cells", quote_token(word));
+                                 "'centre', 'colour_map', 'normal_map' or the first element of "
+                                 "the cells",
+                                 quote_token(word));
         }
-        read_centre();
     }
 }
 
@@ -114,6 +122,22 @@ void TextureMapReader::read_centre() {
     expect_record_end(source_, record_, 3, name);
     map_.centres.push_back(p);
     trace(fmt::format("{} at u {} v {}", name, p.u, p.v));
+}
+
+void TextureMapReader::read_picture(std::optional<MapPicture>& picture) {
+    const std::string kind(record_.tokens.front().text);
+    if (picture) {
+        throw InputError(source_.at(record_.line), fmt::format("a second {} line (the first is at "
+                                                               "line {})",
+                                                               kind, picture->line));
+    }
+    if (record_.tokens.size() < 2) {
+        throw expected_found(source_.at(record_.line), "the file name of the " + kind,
+                             "end of line");
+    }
+    expect_record_end(source_, record_, 2, "the file name of the " + kind);
+    picture = MapPicture{std::string(record_.tokens[1].text), record_.line};
+    trace(fmt::format("{} '{}'", kind, picture->name));
 }
 
 double TextureMapReader::unit_factor(LineFields& fields, const std::string& what) {

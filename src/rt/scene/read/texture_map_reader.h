@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "rt/core/diagnostics.h"
@@ -29,8 +31,16 @@ struct TextureElement {
     int line = 0;
 };
 
+/// A PNG picture the map lays on the whole grid: a colour map or a normal map.
+struct MapPicture {
+    std::string name;  ///< as written, relative to the texture map's folder
+    int line = 0;      ///< where it is named
+};
+
 struct TextureMap {
     std::vector<GridPoint> centres;
+    std::optional<MapPicture> colour_map;
+    std::optional<MapPicture> normal_map;
     std::vector<TextureElement> elements;  ///< rows x columns, row by row
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "rt/image/png_format.h"
 #include "rt/scene/polygon_geometry.h"
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/grid_file_reader.h"
@@ -118,6 +119,42 @@ void set_frame(const Scene& scene, const Polygon& p, TextureCell& cell) {
                                               : normalize(cross(p.normal, cell.tangent_u));
 }
 
+// Reads a picture the texture map names (relative to the map's folder) into Scene::texture_images.
+std::int32_t read_picture(Scene& scene, const SourceText& map_file, const MapPicture& picture,
+                          const char* kind) {
+    const std::filesystem::path path =
+        std::filesystem::path(map_file.name).parent_path() / picture.name;
+    Image8 image;
+    try {
+        image = read_png(path);
+    } catch (const IoError& e) {
+        throw InputError(map_file.at(picture.line),
+                         fmt::format("{} '{}': {}", kind, picture.name, e.what()));
+    }
+    if (scene.texture_images.size() >=
+        static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+        throw InputError(map_file.at(picture.line), "the scene has too many pictures");
+    }
+    scene.texture_images.push_back({image.width, image.height, std::move(image.rgb)});
+    return static_cast<std::int32_t>(scene.texture_images.size() - 1);
+}
+
+// The grid's entry in Scene::texture_grids, with the pictures its map names.
+std::uint32_t add_grid(Scene& scene, const ScnTexturedSurface& entry, const TextureMap& map,
+                       const SourceText& map_file) {
+    TextureGrid grid;
+    grid.rows = static_cast<std::uint32_t>(entry.rows);
+    grid.columns = static_cast<std::uint32_t>(entry.columns);
+    if (map.colour_map) {
+        grid.colour_map = read_picture(scene, map_file, *map.colour_map, "colour map");
+    }
+    if (map.normal_map) {
+        grid.normal_map = read_picture(scene, map_file, *map.normal_map, "normal map");
+    }
+    scene.texture_grids.push_back(grid);
+    return static_cast<std::uint32_t>(scene.texture_grids.size() - 1);
+}
+
 }  // namespace
 
 void add_textured_surface(SceneBuilder& builder, Scene& scene, const ScnTexturedSurface& entry,
@@ -131,6 +168,7 @@ void add_textured_surface(SceneBuilder& builder, Scene& scene, const ScnTextured
     if (std::ssize(scene.texture_cells) + cells > std::numeric_limits<std::int32_t>::max()) {
         throw InputError(entry.where, "the scene has too many texture-mapped cells");
     }
+    const std::uint32_t grid_index = add_grid(scene, entry, map, texture_map_file);
     const auto first_cell = static_cast<std::int32_t>(scene.texture_cells.size());
     scene.texture_cells.resize(scene.texture_cells.size() + static_cast<std::size_t>(cells));
     const SurfaceMesh mesh = grid_mesh(grid_file, grid, first_cell, diagnostics);
@@ -166,6 +204,7 @@ void add_textured_surface(SceneBuilder& builder, Scene& scene, const ScnTextured
         cell.sphere = e.sphere * to_world;
         cell.cylinder = e.cylinder * to_world;
         cell.color = e.color;
+        cell.grid = grid_index;
         cell.row = static_cast<std::uint32_t>(static_cast<std::int64_t>(k) / entry.columns);
         cell.column = static_cast<std::uint32_t>(static_cast<std::int64_t>(k) % entry.columns);
     }
