@@ -2,9 +2,7 @@
 
 namespace rt {
 
-namespace {
-
-void split_tokens(std::string_view line, std::size_t from, int line_number, DollarLine& out) {
+void append_words(std::string_view line, std::size_t from, int line_number, DollarLine& out) {
     std::size_t i = from;
     while (i < line.size()) {
         while (i < line.size() && is_blank(line[i])) {
@@ -20,8 +18,6 @@ void split_tokens(std::string_view line, std::size_t from, int line_number, Doll
         }
     }
 }
-
-}  // namespace
 
 bool DollarLineReader::next(DollarLine& out) {
     while (pos_ < text_.size()) {
@@ -42,7 +38,7 @@ bool DollarLineReader::next(DollarLine& out) {
         out.line = line_;
         out.end_column = static_cast<int>(line.size()) + 1;
         out.tokens.clear();
-        split_tokens(line, first + 1, line_, out);
+        append_words(line, first + 1, line_, out);
         if (!out.tokens.empty()) {
             return true;
         }

@@ -17,6 +17,10 @@ struct DollarLine {
     std::vector<Token> tokens;
 };
 
+/// Appends the words of `line` from column `from` on (split at blanks) to `out.tokens`, each with
+/// its line and 1-based column.
+void append_words(std::string_view line, std::size_t from, int line_number, DollarLine& out);
+
 class DollarLineReader {
 public:
     /// The source must outlive the reader and every token it yields.

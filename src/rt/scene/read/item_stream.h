@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
+#include "rt/core/vec3.h"
 #include "rt/scene/read/dollar_lines.h"
 #include "rt/scene/read/field_reader.h"
 
@@ -22,6 +24,10 @@ public:
     /// Takes the next token; at the end of the file, "expected <what>, found end of file".
     Token take(std::string_view what);
     double number(std::string_view what) { return number_from(source_, take(what), what); }
+    /// Three numbers, named "<what> x", "<what> y" and "<what> z" in messages.
+    Vec3 triple(const std::string& what) {
+        return {number(what + " x"), number(what + " y"), number(what + " z")};
+    }
     std::int64_t integer(std::string_view what) { return integer_from(source_, take(what), what); }
     std::int64_t count(std::string_view what, std::int64_t limit) {
         return count_from(source_, take(what), what, limit);

@@ -21,19 +21,7 @@ bool RecordReader::next(DollarLine& out) {
         out.line = line_;
         out.end_column = static_cast<int>(line.size()) + 1;
         out.tokens.clear();
-        for (std::size_t i = 0; i < line.size();) {
-            while (i < line.size() && is_blank(line[i])) {
-                ++i;
-            }
-            const std::size_t start = i;
-            while (i < line.size() && !is_blank(line[i])) {
-                ++i;
-            }
-            if (i > start) {
-                out.tokens.push_back(
-                    {line.substr(start, i - start), line_, static_cast<int>(start) + 1});
-            }
-        }
+        append_words(line, 0, line_, out);
         if (!out.tokens.empty()) {
             return true;
         }

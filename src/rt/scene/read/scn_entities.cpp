@@ -13,14 +13,6 @@ namespace rt {
 
 namespace {
 
-Vec3 triple(ItemStream& scn, const std::string& what) {
-    Vec3 v;
-    v.x = scn.number(what + " x");
-    v.y = scn.number(what + " y");
-    v.z = scn.number(what + " z");
-    return v;
-}
-
 // A number where the file name was, without -Po/-Pt, is most likely a smooth-shade field.
 double read_scale(ItemStream& scn, const ScnSurface& s, const ReaderDialect& dialect) {
     const std::string what = "the scale of optical surface '" + s.surface.file + "'";
@@ -57,8 +49,8 @@ void read_surface_fields(ItemStream& scn, const ReaderDialect& dialect, ScnSurfa
     }
     o.file = std::string(scn.take("the optical surface file name").text);
     s.placement.scale = read_scale(scn, s, dialect);
-    s.placement.translation = triple(scn, "the translation");
-    s.placement.rotation_degrees = triple(scn, "the rotation about");
+    s.placement.translation = scn.triple("the translation");
+    s.placement.rotation_degrees = scn.triple("the rotation about");
     if (o.filetype == 1 && o.smooth_shaded) {
         throw InputError(o.where, "optical surface '" + o.file +
                                       "' has filetype 1 (Phigs+), whose polygons cannot be "

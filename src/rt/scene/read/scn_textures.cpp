@@ -10,14 +10,6 @@ namespace rt {
 
 namespace {
 
-Vec3 triple(ItemStream& scn, const std::string& what) {
-    Vec3 v;
-    v.x = scn.number(what + " x");
-    v.y = scn.number(what + " y");
-    v.z = scn.number(what + " z");
-    return v;
-}
-
 NamedFile file_name(ItemStream& scn, const std::string& what) {
     const Token token = scn.take(what);
     return {std::string(token.text), location_of(scn.source(), token)};
@@ -63,8 +55,8 @@ ScnTexturedSurface read_textured_surface(ItemStream& scn) {
     if (s.placement.scale == 0.0) {
         throw InputError(location_of(scn.source(), scale), "the scale" + of + " must not be 0");
     }
-    s.placement.translation = triple(scn, "the translation");
-    s.placement.rotation_degrees = triple(scn, "the rotation about");
+    s.placement.translation = scn.triple("the translation");
+    s.placement.rotation_degrees = scn.triple("the rotation about");
     read_grid_size(scn, s);
     return s;
 }

@@ -22,16 +22,26 @@ std::string errno_reason(int error) {
     return std::error_code(error, std::generic_category()).message();
 }
 
-// Reads the bytes, or returns why not ("No such file or directory").
-bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::string& reason) {
+using OpenFile = std::unique_ptr<std::FILE, FileCloser>;
+
+// The file opened for reading, or null with why not ("No such file or directory").
+OpenFile open_for_reading(const std::filesystem::path& path, std::string& reason) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         reason = errno_reason(EISDIR);
-        return false;
+        return nullptr;
     }
-    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    OpenFile file(std::fopen(path.c_str(), "rb"));
     if (!file) {
         reason = errno_reason(errno);
+    }
+    return file;
+}
+
+// Reads the bytes, or returns why not.
+bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::string& reason) {
+    const OpenFile file = open_for_reading(path, reason);
+    if (!file) {
         return false;
     }
     // Read in blocks rather than trusting a size: pipes and special files have none.
@@ -53,17 +63,7 @@ bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::stri
 
 // Whether the file can be opened, or why not.
 bool can_open(const std::filesystem::path& path, std::string& reason) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        reason = errno_reason(EISDIR);
-        return false;
-    }
-    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) {
-        reason = errno_reason(errno);
-        return false;
-    }
-    return true;
+    return open_for_reading(path, reason) != nullptr;
 }
 
 bool is_forbidden_control(unsigned char c) {
