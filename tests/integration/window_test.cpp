@@ -200,12 +200,13 @@ TEST(Window, NeverWaitsWithoutADisplayOrATerminal) {
     }
     {
         SCOPED_TRACE("a display, standard input not a terminal: the window opens and closes");
-        SpawnedProgram rt("rt",
-                          {scene_path("twocubes4"), "-n", "-L150", "--threads", "1", "--output",
-                           "b.ppm", "--quiet"},
-                          dir.path(), {x.name(), false});
-        const Image8 shown = screenshot_until(x, "rt: " + scene_path("twocubes4"), seconds(20),
-                                              [](const Image8&) { return true; });
+        // Slow enough (about 10 s of work) that the window is seen before rt ends on a busy
+        // machine.
+        const std::string slow = slow_twocubes(dir);
+        SpawnedProgram rt("rt", {slow, "-n", "-L250", "--output", "b.ppm", "--quiet"}, dir.path(),
+                          {x.name(), false});
+        const Image8 shown =
+            screenshot_until(x, "rt: " + slow, seconds(20), [](const Image8&) { return true; });
         EXPECT_EQ(shown.width, 512) << "no window opened";
         EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
     }
