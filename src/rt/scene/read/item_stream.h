@@ -22,6 +22,8 @@ public:
     /// Takes the next token; at the end of the file, "expected <what>, found end of file".
     Token take(std::string_view what);
     double number(std::string_view what) { return number_from(source_, take(what), what); }
+    /// A number within the coordinate range (reader_limits.h).
+    double coordinate(std::string_view what) { return coordinate_from(source_, take(what), what); }
     std::int64_t integer(std::string_view what) { return integer_from(source_, take(what), what); }
     std::int64_t count(std::string_view what, std::int64_t limit) {
         return count_from(source_, take(what), what, limit);

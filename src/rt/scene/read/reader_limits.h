@@ -26,5 +26,9 @@ inline constexpr int kMaxRayDepth = 64;
 /// SEADS voxels a side (header sptncde) and octree depth (header octr).
 inline constexpr int kMaxSeadsVoxels = 1024;
 inline constexpr int kMaxOctreeDepth = 20;
+/// The largest |coordinate| of a placed vertex, a shape's point, the eye and the look point, and
+/// the largest screen distance and shape radius: the world's extent, voxel sizes and Embree's float
+/// rays stay finite and keep a useful precision.
+inline constexpr double kMaxCoordinate = 1e15;
 
 }  // namespace rt

@@ -21,6 +21,15 @@ Vec3 triple(ItemStream& scn, const std::string& what) {
     return v;
 }
 
+// A translation beyond the coordinate range would place every vertex outside it.
+Vec3 translation(ItemStream& scn) {
+    Vec3 v;
+    v.x = scn.coordinate("the translation x");
+    v.y = scn.coordinate("the translation y");
+    v.z = scn.coordinate("the translation z");
+    return v;
+}
+
 // A number where the file name was, without -Po/-Pt, is most likely a smooth-shade field.
 double read_scale(ItemStream& scn, const ScnSurface& s, const ReaderDialect& dialect) {
     const std::string what = "the scale of optical surface '" + s.surface.file + "'";
@@ -57,7 +66,7 @@ void read_surface_fields(ItemStream& scn, const ReaderDialect& dialect, ScnSurfa
     }
     o.file = std::string(scn.take("the optical surface file name").text);
     s.placement.scale = read_scale(scn, s, dialect);
-    s.placement.translation = triple(scn, "the translation");
+    s.placement.translation = translation(scn);
     s.placement.rotation_degrees = triple(scn, "the rotation about");
     if (o.filetype == 1 && o.smooth_shaded) {
         throw InputError(o.where, "optical surface '" + o.file +
