@@ -291,6 +291,12 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     if (stack.strike_check() != nullptr) {
         console.note(stack.strike_check()->summary());
     }
+    if (statistics.unrepresentable_samples > 0) {
+        console.warning(
+            fmt::format("{} samples had an intensity that is not a finite number "
+                        "within the float range; they were counted as black",
+                        statistics.unrepresentable_samples));
+    }
     stamp(film, options);
     if (options.debug_color) {
         print_colors(film, console);

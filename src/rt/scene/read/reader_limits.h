@@ -30,5 +30,8 @@ inline constexpr int kMaxOctreeDepth = 20;
 /// the largest screen distance and shape radius: the world's extent, voxel sizes and Embree's float
 /// rays stay finite and keep a useful precision.
 inline constexpr double kMaxCoordinate = 1e15;
+/// The largest |value| of an attribute's colour channels and weights (e a d s t): a light or a
+/// surface can be bright, but not so bright that a few bounces leave the float range.
+inline constexpr double kMaxIntensity = 1e6;
 
 }  // namespace rt
