@@ -134,6 +134,33 @@ TEST_F(RtProgram, UnknownOutputFormatIsRefusedBeforeRendering) {
     EXPECT_NE(r.err.find(".jpg"), std::string::npos);
 }
 
+// A missing folder is found before the render, not after it.
+TEST_F(RtProgram, OutputIntoAMissingFolderIsRefusedBeforeRendering) {
+    write_small_scene("small.scn", "200 300 209 309");
+    const ProgramResult r = rt({"scenes/small", "--output", "good.png", "--output", "nodir/a.png"});
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find("cannot write nodir/a.png: the folder nodir does not exist"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(at("small.gro")));
+    EXPECT_FALSE(fs::exists(at("good.png")));
+}
+
+// One output that fails at the end (a folder in the way of a.png) does not cost the others:
+// every output is written, each failure reported, and the exit status says one failed.
+TEST_F(RtProgram, EveryOutputIsWrittenWhenOneFails) {
+    write_small_scene("small.scn", "200 300 209 309");
+    fs::create_directory(at("a.png"));
+    fs::create_directory(at("c.ppm"));
+    const ProgramResult r =
+        rt({"scenes/small", "--output", "a.png", "--output", "good.png", "--output", "c.ppm"});
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find("rt: cannot write a.png"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("rt: cannot write c.ppm"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(at("small.gro")));
+    EXPECT_TRUE(fs::exists(at("good.png")));
+}
+
 TEST_F(RtProgram, BadSceneLeavesAnExistingOutputAlone) {
     dir_.write("broken.gro", "precious");
     dir_.write("broken.scn", "$ 0 2 0 0 3 .5 2 1\n$ 1 2 x\n");
