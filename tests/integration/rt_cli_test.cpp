@@ -9,6 +9,7 @@
 
 #include "support/run_program.h"
 #include "support/temp_dir.h"
+#include <unistd.h>
 
 namespace rt::test {
 namespace {
@@ -143,6 +144,25 @@ TEST_F(RtProgram, OutputIntoAMissingFolderIsRefusedBeforeRendering) {
               std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(at("small.gro")));
+    EXPECT_FALSE(fs::exists(at("good.png")));
+}
+
+// The .gro goes into the current folder, which is checked the same way.
+TEST_F(RtProgram, GroIntoAReadOnlyFolderIsRefusedBeforeRendering) {
+    write_small_scene("small.scn", "200 300 209 309");
+    fs::create_directory(at("ro"));
+    fs::permissions(at("ro"), fs::perms::owner_read | fs::perms::owner_exec);
+    if (::access(at("ro").c_str(), W_OK) == 0) {
+        GTEST_SKIP() << "running as root: a read-only folder is writable";
+    }
+    const ProgramResult r =
+        run_program("rt", {"../scenes/small", "--output", "../good.png"}, at("ro"));
+    fs::permissions(at("ro"), fs::perms::owner_all);
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(
+        r.err.find("cannot write small.gro: the folder . is not writable (Permission denied)"),
+        std::string::npos)
+        << r.err;
     EXPECT_FALSE(fs::exists(at("good.png")));
 }
 

@@ -259,6 +259,10 @@ RunOutcome run(const Options& options, const RunConsole& console) {
         (void)image_format_for(output);
         check_output_folder(output);
     }
+    if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
+        check_output_folder(options.model.empty() ? default_gro_path(options.scene)
+                                                  : model_gro_path(options.model));
+    }
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
     diagnostics.set_note_sink(console.note);
