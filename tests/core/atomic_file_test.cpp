@@ -93,5 +93,19 @@ TEST(AtomicFile, AMissingFolderIsAnIoErrorBeforeAnythingIsWritten) {
     EXPECT_FALSE(fs::exists(path.parent_path()));
 }
 
+// "cannot create X.tmpPID" alone left the user guessing; the reason comes from the system.
+TEST(AtomicFile, CannotCreateSaysWhy) {
+    const test::TempDir dir;
+    const fs::path path = dir.path() / "no_such_folder" / "out.txt";
+    try {
+        write_file_atomically(path, [](std::ostream&) {});
+        FAIL() << "no error";
+    } catch (const IoError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(": cannot create "), std::string::npos) << message;
+        EXPECT_NE(message.find(": No such file or directory"), std::string::npos) << message;
+    }
+}
+
 }  // namespace
 }  // namespace rt

@@ -9,6 +9,7 @@
 
 #include "support/run_program.h"
 #include "support/temp_dir.h"
+#include <unistd.h>
 
 namespace rt::test {
 namespace {
@@ -132,6 +133,52 @@ TEST_F(RtProgram, UnknownOutputFormatIsRefusedBeforeRendering) {
     const ProgramResult r = rt({"scenes/small", "--output", "a.jpg"});
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find(".jpg"), std::string::npos);
+}
+
+// A missing folder is found before the render, not after it.
+TEST_F(RtProgram, OutputIntoAMissingFolderIsRefusedBeforeRendering) {
+    write_small_scene("small.scn", "200 300 209 309");
+    const ProgramResult r = rt({"scenes/small", "--output", "good.png", "--output", "nodir/a.png"});
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find("cannot write nodir/a.png: the folder nodir does not exist"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(at("small.gro")));
+    EXPECT_FALSE(fs::exists(at("good.png")));
+}
+
+// The .gro goes into the current folder, which is checked the same way.
+TEST_F(RtProgram, GroIntoAReadOnlyFolderIsRefusedBeforeRendering) {
+    write_small_scene("small.scn", "200 300 209 309");
+    fs::create_directory(at("ro"));
+    fs::permissions(at("ro"), fs::perms::owner_read | fs::perms::owner_exec);
+    if (::access(at("ro").c_str(), W_OK) == 0) {
+        GTEST_SKIP() << "running as root: a read-only folder is writable";
+    }
+    const ProgramResult r =
+        run_program("rt", {"../scenes/small", "--output", "../good.png"}, at("ro"));
+    fs::permissions(at("ro"), fs::perms::owner_all);
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(
+        r.err.find("cannot write small.gro: the folder . is not writable (Permission denied)"),
+        std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(at("good.png")));
+}
+
+// One output that fails at the end (a folder in the way of a.png) does not cost the others:
+// every output is written, each failure reported, and the exit status says one failed.
+TEST_F(RtProgram, EveryOutputIsWrittenWhenOneFails) {
+    write_small_scene("small.scn", "200 300 209 309");
+    fs::create_directory(at("a.png"));
+    fs::create_directory(at("c.ppm"));
+    const ProgramResult r =
+        rt({"scenes/small", "--output", "a.png", "--output", "good.png", "--output", "c.ppm"});
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find("rt: cannot write a.png"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("rt: cannot write c.ppm"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(at("small.gro")));
+    EXPECT_TRUE(fs::exists(at("good.png")));
 }
 
 TEST_F(RtProgram, BadSceneLeavesAnExistingOutputAlone) {

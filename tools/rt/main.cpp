@@ -118,7 +118,10 @@ int run(const std::vector<std::string>& args) {
     const rt::RunConsole console = make_console(options, progress.get());
     if (rt::run(options, console) == rt::RunOutcome::Interrupted) {
         console.trace("rt: interrupted; the finished lines were written");  // printed as is
-        return kInterrupted;
+        // The shell's convention: 128 + the signal (130 for Ctrl-C, 143 for SIGTERM); a window
+        // closed by the user counts as Ctrl-C.
+        const int signal = rt::interrupt_signal();
+        return signal != 0 ? 128 + signal : kInterrupted;
     }
     return kOk;
 }

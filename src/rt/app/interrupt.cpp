@@ -10,8 +10,11 @@ namespace rt {
 namespace {
 
 std::atomic<bool> g_interrupted{false};
+std::atomic<int> g_signal{0};  // the first signal received
 
 extern "C" void on_interrupt(int signal) {
+    int none = 0;
+    g_signal.compare_exchange_strong(none, signal);
     if (g_interrupted.exchange(true)) {
         // A second Ctrl-C: the user really wants out.
         ::_exit(128 + signal);
@@ -27,6 +30,10 @@ void install_interrupt_handler() {
 
 bool interrupt_requested() {
     return g_interrupted.load();
+}
+
+int interrupt_signal() {
+    return g_signal.load();
 }
 
 }  // namespace rt

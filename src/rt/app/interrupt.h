@@ -1,10 +1,12 @@
-// Ctrl-C: the first press asks the render to stop and keep what it finished; a second press
-// ends the program at once.
+// Ctrl-C (SIGINT) or SIGTERM: the first asks the render to stop and keep what it finished; a
+// second ends the program at once.
 #pragma once
 
 namespace rt {
 
 void install_interrupt_handler();
 bool interrupt_requested();
+/// The signal that asked to stop (SIGINT or SIGTERM); 0 if none did.
+int interrupt_signal();
 
 }  // namespace rt

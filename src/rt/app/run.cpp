@@ -1,8 +1,10 @@
 #include "rt/app/run.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <ctime>
+#include <system_error>
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
@@ -20,6 +22,8 @@
 #include "rt/scene/read/model_scene.h"
 
 #include <fmt/format.h>
+
+#include <unistd.h>
 
 namespace rt {
 
@@ -117,13 +121,42 @@ void stamp(Film& film, const Options& options) {
                        utc_now()};
 }
 
-void write_outputs(const Film& film, const Options& options) {
-    if (!options.no_gro) {
-        write_image(film, options.model.empty() ? default_gro_path(options.scene)
-                                                : model_gro_path(options.model));
+// The folder an output goes into must exist and be writable: found out after the render, it
+// would cost the render.
+void check_output_folder(const std::filesystem::path& output) {
+    const std::filesystem::path folder =
+        output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) {
+        throw IoError(fmt::format("cannot write {}: the folder {} does not exist", output.string(),
+                                  folder.string()));
     }
-    for (const std::string& output : options.outputs) {
-        write_image(film, output);
+    if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+        throw IoError(fmt::format("cannot write {}: the folder {} is not writable ({})",
+                                  output.string(), folder.string(),
+                                  std::generic_category().message(errno)));
+    }
+}
+
+// Every output is attempted: one that cannot be written does not cost the others. The failures
+// are reported together, one line each, as one IoError.
+void write_outputs(const Film& film, const Options& options) {
+    std::vector<std::filesystem::path> paths;
+    if (!options.no_gro) {
+        paths.emplace_back(options.model.empty() ? default_gro_path(options.scene)
+                                                 : model_gro_path(options.model));
+    }
+    paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
+    std::string failures;
+    for (const std::filesystem::path& path : paths) {
+        try {
+            write_image(film, path);
+        } catch (const IoError& e) {
+            failures += (failures.empty() ? "" : "\nrt: ") + std::string(e.what());
+        }
+    }
+    if (!failures.empty()) {
+        throw IoError(failures);
     }
 }
 
@@ -221,7 +254,14 @@ std::filesystem::path model_gro_path(const std::string& model_argument) {
 
 RunOutcome run(const Options& options, const RunConsole& console) {
     for (const std::string& output : options.outputs) {
-        (void)image_format_for(output);  // refuse an unknown format before hours of rendering
+        // Refuse an unknown format or a folder that cannot take the file before hours of
+        // rendering.
+        (void)image_format_for(output);
+        check_output_folder(output);
+    }
+    if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
+        check_output_folder(options.model.empty() ? default_gro_path(options.scene)
+                                                  : model_gro_path(options.model));
     }
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
@@ -290,6 +330,12 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     times.trace_seconds = seconds_since(phase);
     if (stack.strike_check() != nullptr) {
         console.note(stack.strike_check()->summary());
+    }
+    if (statistics.unrepresentable_samples > 0) {
+        console.warning(
+            fmt::format("{} samples had an intensity that is not a finite number "
+                        "within the float range; they were counted as black",
+                        statistics.unrepresentable_samples));
     }
     stamp(film, options);
     if (options.debug_color) {

@@ -1,5 +1,6 @@
 #include "rt/core/atomic_file.h"
 
+#include <cerrno>
 #include <fstream>
 #include <string>
 #include <system_error>
@@ -24,9 +25,13 @@ void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
     const std::filesystem::path tmp = temporary_beside(path);
     try {
+        errno = 0;
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) {
-            throw IoError("cannot write " + path.string() + ": cannot create " + tmp.string());
+            // The stream says only that it failed; the open underneath left the reason in errno.
+            const int reason = errno;
+            throw IoError("cannot write " + path.string() + ": cannot create " + tmp.string() +
+                          (reason != 0 ? ": " + std::generic_category().message(reason) : ""));
         }
         write(out);
         out.flush();

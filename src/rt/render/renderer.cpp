@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cfloat>
+#include <cmath>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -28,6 +30,7 @@ struct RenderJob {
     Film& film;
     std::atomic<int> next_row_index{0};  // rows are handed out bottom first
     std::atomic<bool> stopping{false};
+    std::atomic<std::uint64_t> unrepresentable_samples{0};
     std::mutex observer_mutex;   // guards the observer, finished and rows_done
     std::vector<char> finished;  // per window row
     int rows_done = 0;
@@ -43,6 +46,11 @@ struct RenderJob {
           film(f),
           finished(static_cast<std::size_t>(rs.window.height()), 0) {}
 };
+
+// Whether every channel is a number the film's floats can hold.
+bool representable(const Rgb& c) {
+    return std::fabs(c.r) <= FLT_MAX && std::fabs(c.g) <= FLT_MAX && std::fabs(c.b) <= FLT_MAX;
+}
 
 // Whether the centre rays of the four neighbouring pixels see the same surface (SurfaceSeen: one
 // polygon in the same light, or all miss): a polygon's edge or a shadow's edge can pass between
@@ -78,8 +86,14 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
             job.pixel_strata.point(k, j1, j2, px, py);
         }
         SampleContext sample{stream, counters, report.tree, {}};
-        const Rgb value = job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1,
-                                           false, sample);
+        Rgb value = job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1, false,
+                                     sample);
+        // An intensity beyond the float range (or not a number) would spoil the pixel and the
+        // outputs: the sample counts as black, and the run says how many there were.
+        if (!representable(value)) {
+            ++job.unrepresentable_samples;
+            value = Rgb{};
+        }
         return SeenSample<SurfaceSeen>{value, sample.last_seen};
     };
     const auto neighbours_agree = [&](const SurfaceSeen& seen) {
@@ -91,7 +105,12 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
     const RunningStatistics statistics = adaptive_mean(
         total, sampling.adaptive ? &sampling.pixel_stop : nullptr, take, neighbours_agree);
     report.samples = statistics.count();
-    return statistics.mean();
+    const Rgb mean = statistics.mean();
+    if (!representable(mean)) {  // finite samples whose sum overflows
+        job.unrepresentable_samples += statistics.count();
+        return Rgb{};
+    }
+    return mean;
 }
 
 void record_finished_row(RenderJob& job, int y, std::uint64_t samples) {
@@ -171,6 +190,7 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
     statistics.rows_done = job.rows_done;
     statistics.threads = n;
     statistics.interrupted = job.stopping && !film.complete();
+    statistics.unrepresentable_samples = job.unrepresentable_samples;
     return film;
 }
 

@@ -66,6 +66,8 @@ struct RenderStatistics {
     int rows_done = 0;
     int threads = 0;  ///< worker threads the render used (settings.threads resolved)
     bool interrupted = false;
+    /// Samples whose intensity was not a number or beyond the float range: counted as black.
+    std::uint64_t unrepresentable_samples = 0;
 };
 
 /// Renders the window into a new film. If the observer asks to stop, the rows finished so far

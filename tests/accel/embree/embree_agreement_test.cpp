@@ -85,5 +85,24 @@ TEST(EmbreeAgreement, EmptyScene) {
     EXPECT_FALSE(embree->occluded({{0, 0, 0}, {0, 0, 1}}, Interval{}, counters));
 }
 
+// Embree asserts on a ray whose origin is beyond 1.844e18 or not a number; the backend answers a
+// miss instead of passing it on.
+TEST(EmbreeAgreement, RaysEmbreeCallsInvalidMiss) {
+    const Scene sphere = test::make_tessellated_sphere(100);
+    const std::unique_ptr<Accelerator> embree = embree_or_skip(sphere);
+    if (!embree) {
+        GTEST_SKIP() << "this rt was built without Embree";
+    }
+    TraceCounters counters;
+    const double nan = std::nan("");
+    for (const Ray& ray : {Ray{{0, 0, -1e19}, {0, 0, 1}}, Ray{{0, 0, nan}, {0, 0, 1}},
+                           Ray{{0, 0, -10}, {0, nan, 1}}}) {
+        EXPECT_FALSE(embree->closest_hit(ray, Interval{}, counters));
+        EXPECT_FALSE(embree->occluded(ray, Interval{}, counters));
+    }
+    // The same ray from nearer by hits: the sphere is there.
+    EXPECT_TRUE(embree->closest_hit({{0, 0, -1e6}, {0, 0, 1}}, Interval{}, counters));
+}
+
 }  // namespace
 }  // namespace rt

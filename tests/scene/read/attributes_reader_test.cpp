@@ -133,11 +133,26 @@ TEST(AttributesFile, Errors) {
         error("$ 1\n$ 1 1 1 2 2 0 0 1 0 0 1 0 0 0 0 white\n"),
         "Attributes:2: expected the attribute's index number (a whole number), found 'white'");
     EXPECT_EQ(error("$ 1\n$ 1 nan 1 2 2 0 0 1 0 0 1 0 0 0 0 1\n"),
-              "Attributes:2: expected the green intensity, found 'nan'");
+              "Attributes:2: expected the green intensity (-1e+06 to 1e+06), found 'nan'");
     EXPECT_EQ(error("$ 1\n$ 1 1 1 2 2 0 0 1 0 0 inf 0 0 0 0 1\n"),
               "Attributes:2: expected the index of refraction, found 'inf'");
     EXPECT_EQ(error("$ 1\n$ 1 1 1 2 2 0 0 1 0 0 0 0 0 0 0 1\n"),
               "Attributes:2: attribute 1: the index of refraction must be more than 0, found 0");
+}
+
+// Colours and weights beyond kMaxIntensity would leave the float range after a few bounces; they
+// are refused at their line, the edge of the range is accepted.
+TEST(AttributesFile, ColoursAndWeightsHaveALimit) {
+    EXPECT_EQ(error("$ 1\n$ 1e39 1 1 2 2 0 0 1 0 0 1 0 0 0 0 1\n"),
+              "Attributes:2: expected the red intensity (-1e+06 to 1e+06), found '1e39'");
+    EXPECT_EQ(error("$ 1\n$ 1 1 1 2 2 2e6 0 1 0 0 1 0 0 0 0 1\n"),
+              "Attributes:2: expected the emitted weight e (-1e+06 to 1e+06), found '2e6'");
+    EXPECT_EQ(error("$ 1\n$ 1 1 1 2 2 0 0 1 0 -1e7 1 0 0 0 0 1\n"),
+              "Attributes:2: expected the transmitted weight t (-1e+06 to 1e+06), found '-1e7'");
+    Diagnostics d;
+    const std::vector<Attribute> a = read("$ 1\n$ 1e6 1 1 2 2 1e6 0 1 0 0 1 0 0 0 0 1\n", {}, d);
+    ASSERT_EQ(a.size(), 1u);
+    EXPECT_EQ(a[0].emission, 1e6);
 }
 
 TEST(AttributesFile, DialectMismatchesNameTheMissingField) {

@@ -321,13 +321,16 @@ TEST(ScnReader, HeaderAndViewErrors) {
     EXPECT_EQ(with("$ 0 2 1 4 3 .5 2 1", "$ 0 2 1 4 3 nan 2 1"),
               "s.scn:2: expected the header's normallength, found 'nan'");
     EXPECT_EQ(with("$ 0 2 1 4 3 .5 2 1", "$ 0 2 99999 4 3 .5 2 1"),
-              "s.scn:2: expected the header's sptncde (0 to 1024), found '99999'");
+              "s.scn:2: expected the header's sptncde (0 to 322), found '99999'");
+    // SEADS builds at most 322 voxels a side: the reader refuses more, at the header's line.
+    EXPECT_EQ(with("$ 0 2 1 4 3 .5 2 1", "$ 0 2 323 0 3 .5 2 1"),
+              "s.scn:2: expected the header's sptncde (0 to 322), found '323'");
     EXPECT_EQ(with("$ 10.0 30.0 -75.0 0.0 0.0 0.0", "$ 1 2 3 1 2 3"),
               "s.scn:4: the eye point and the look point are the same (1, 2, 3)");
     EXPECT_EQ(with("$ 10.0 30.0 -75.0 0.0 0.0 0.0", "$ 10.0 30.0 -75.0 0.0 0.0 x"),
-              "s.scn:4: expected the look point's z, found 'x'");
+              "s.scn:4: expected the look point's z (-1e+15 to 1e+15), found 'x'");
     EXPECT_EQ(with("$ 25.0", "$ 0"),
-              "s.scn:6: expected the screen distance (more than 0), found '0'");
+              "s.scn:6: expected the screen distance (between 0 and 1e+15), found '0'");
     EXPECT_EQ(with("$ 32.0 25.0", "$ 180 25.0"),
               "s.scn:8: expected the view angle x in degrees (between 0 and 180), found '180'");
     EXPECT_EQ(with("$ 32.0 25.0", "$ 32.0 -inf"),

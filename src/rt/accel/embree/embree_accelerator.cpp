@@ -18,6 +18,19 @@ float to_float_limit(double t) {
     return static_cast<float>(std::fmin(std::fmax(t, -FLT_MAX), FLT_MAX));
 }
 
+// Embree asserts (debug builds) or misbehaves on a ray it calls invalid: an origin or direction
+// component beyond FLT_LARGE (1.844e18) or not a number. No scene the reader accepts makes one
+// (docs/formats.md, the coordinate range); for other callers such a ray misses.
+bool embree_accepts(const RTCRay& r) {
+    constexpr float kLarge = 1.844e18f;  // Embree's FLT_LARGE
+    for (const float v : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z}) {
+        if (!(std::fabs(v) <= kLarge)) {
+            return false;
+        }
+    }
+    return r.tnear <= r.tfar;  // also false when either is not a number
+}
+
 class EmbreeAccelerator : public Accelerator {
 public:
     explicit EmbreeAccelerator(const Scene& scene);
@@ -131,6 +144,9 @@ std::optional<Hit> EmbreeAccelerator::closest_hit(const Ray& ray, Interval t,
     hit.ray = embree_ray(ray, t);
     hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     hit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    if (!embree_accepts(hit.ray)) {
+        return std::nullopt;
+    }
     rtcIntersect1(scene_, &context, &hit);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
         return std::nullopt;
@@ -142,6 +158,9 @@ bool EmbreeAccelerator::occluded(const Ray& ray, Interval t, TraceCounters& /*co
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r = embree_ray(ray, t);
+    if (!embree_accepts(r)) {
+        return false;
+    }
     rtcOccluded1(scene_, &context, &r);
     return r.tfar < 0.0f && std::isinf(r.tfar);
 }

@@ -86,18 +86,18 @@ Attribute read_attribute_line(const SourceText& source, const DollarLine& line,
     LineFields f(source, line);
     Attribute a;
     a.where = f.location();
-    a.color.r = f.number("the red intensity");
-    a.color.g = f.number("the green intensity");
-    a.color.b = f.number("the blue intensity");
+    a.color.r = f.number_within("the red intensity", kMaxIntensity);
+    a.color.g = f.number_within("the green intensity", kMaxIntensity);
+    a.color.b = f.number_within("the blue intensity", kMaxIntensity);
     if (!dialect.no_power_fields) {
         a.specular_exponent = f.number("the specular exponent pow");
         a.transmit_exponent = f.number("the refraction exponent tpow");
     }
-    a.emission = f.number("the emitted weight e");
-    a.ambient = f.number("the ambient weight a");
-    a.diffuse = f.number("the diffuse weight d");
-    a.specular = f.number("the specular weight s");
-    a.transmission = f.number("the transmitted weight t");
+    a.emission = f.number_within("the emitted weight e", kMaxIntensity);
+    a.ambient = f.number_within("the ambient weight a", kMaxIntensity);
+    a.diffuse = f.number_within("the diffuse weight d", kMaxIntensity);
+    a.specular = f.number_within("the specular weight s", kMaxIntensity);
+    a.transmission = f.number_within("the transmitted weight t", kMaxIntensity);
     read_refraction(f, dialect, a);
     a.reflect_cone_degrees = f.number("the reflection cone angle theta");
     a.reflect_cone_exponent = f.number("the reflection cone exponent n");

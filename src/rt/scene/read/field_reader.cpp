@@ -1,6 +1,9 @@
 #include "rt/scene/read/field_reader.h"
 
+#include <cmath>
+
 #include "rt/core/text.h"
+#include "rt/scene/read/reader_limits.h"
 
 #include <fmt/format.h>
 
@@ -11,6 +14,21 @@ double number_from(const SourceText& source, const Token& token, std::string_vie
         return *value;
     }
     throw expected_found(location_of(source, token), std::string(what), quote_token(token.text));
+}
+
+double number_within(const SourceText& source, const Token& token, std::string_view what,
+                     double limit) {
+    const auto value = parse_double(token.text);
+    if (value && std::fabs(*value) <= limit) {
+        return *value;
+    }
+    throw expected_found(location_of(source, token),
+                         fmt::format("{} ({:g} to {:g})", what, -limit, limit),
+                         quote_token(token.text));
+}
+
+double coordinate_from(const SourceText& source, const Token& token, std::string_view what) {
+    return number_within(source, token, what, kMaxCoordinate);
 }
 
 std::int64_t integer_from(const SourceText& source, const Token& token, std::string_view what) {

@@ -19,6 +19,11 @@ inline SourceLocation location_of(const SourceText& source, const Token& token) 
 
 /// A finite number, or "expected <what>, found 'tok'".
 double number_from(const SourceText& source, const Token& token, std::string_view what);
+/// A number from -limit to limit, or "expected <what> (-L to L), found 'tok'".
+double number_within(const SourceText& source, const Token& token, std::string_view what,
+                     double limit);
+/// number_within kMaxCoordinate (reader_limits.h).
+double coordinate_from(const SourceText& source, const Token& token, std::string_view what);
 /// A whole number, or "expected <what> (a whole number), found 'tok'".
 std::int64_t integer_from(const SourceText& source, const Token& token, std::string_view what);
 /// A whole number in lo..hi, or "expected <what> (lo to hi), found 'tok'".

@@ -24,9 +24,15 @@ public:
     /// Takes the next token; at the end of the file, "expected <what>, found end of file".
     Token take(std::string_view what);
     double number(std::string_view what) { return number_from(source_, take(what), what); }
+    /// A number within the coordinate range (reader_limits.h).
+    double coordinate(std::string_view what) { return coordinate_from(source_, take(what), what); }
     /// Three numbers, named "<what> x", "<what> y" and "<what> z" in messages.
     Vec3 triple(const std::string& what) {
         return {number(what + " x"), number(what + " y"), number(what + " z")};
+    }
+    /// Three numbers within the coordinate range, named as triple() names them.
+    Vec3 coordinates(const std::string& what) {
+        return {coordinate(what + " x"), coordinate(what + " y"), coordinate(what + " z")};
     }
     std::int64_t integer(std::string_view what) { return integer_from(source_, take(what), what); }
     std::int64_t count(std::string_view what, std::int64_t limit) {

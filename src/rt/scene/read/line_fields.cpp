@@ -10,4 +10,8 @@ Token LineFields::take(std::string_view what) {
     return line_.tokens[next_++];
 }
 
+double LineFields::number_within(std::string_view what, double limit) {
+    return rt::number_within(source_, take(what), what, limit);
+}
+
 }  // namespace rt

@@ -17,6 +17,8 @@ public:
     LineFields(const SourceText& source, const DollarLine& line) : source_(source), line_(line) {}
 
     double number(std::string_view what) { return number_from(source_, take(what), what); }
+    /// A number from -limit to limit, or "expected <what> (-L to L), found 'tok'".
+    double number_within(std::string_view what, double limit);
     std::int64_t integer(std::string_view what) { return integer_from(source_, take(what), what); }
     SourceLocation location() const { return source_.at(line_.line); }
 

@@ -99,6 +99,7 @@ std::vector<std::uint32_t> PhigsReader::read_boundary(const std::string& name) {
     for (std::int64_t k = 0; k < n; ++k) {
         loop.push_back(static_cast<std::uint32_t>(mesh_.vertices.size()));
         mesh_.vertices.push_back(in_.point(fmt::format("corner {} of {}", k + 1, name)));
+        mesh_.vertex_lines.push_back(in_.lexer().line());  // the line of the corner's z
     }
     return loop;
 }

@@ -99,6 +99,7 @@ IndexTable PolygonFileReader::read_vertices() {
         const Vec3 p = in_.point(fmt::format("vertex {}", index));
         vertices.define(index, static_cast<std::uint32_t>(mesh_.vertices.size()), at);
         mesh_.vertices.push_back(p);
+        mesh_.vertex_lines.push_back(at.line);
         trace(at.line, fmt::format("vertex {} = {}", index, show_point(p.x, p.y, p.z)));
     }
     return vertices;

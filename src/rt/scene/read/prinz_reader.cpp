@@ -126,6 +126,7 @@ void PrinzReader::read_node(int line) {
     in_.expect("}", "'}' after the position of " + name);
     in_.expect("}", "'}' closing " + name);
     mesh_.vertices.push_back(p);
+    mesh_.vertex_lines.push_back(line);
     trace(line, fmt::format("{} = {}", name, show_point(p.x, p.y, p.z)));
 }
 

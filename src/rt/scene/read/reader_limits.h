@@ -23,8 +23,16 @@ inline constexpr std::int64_t kMaxOpticalCentres = 1'000'000;
 inline constexpr int kMaxViewSide = 16384;
 inline constexpr int kMaxSampleResolution = 64;
 inline constexpr int kMaxRayDepth = 64;
-/// SEADS voxels a side (header sptncde) and octree depth (header octr).
-inline constexpr int kMaxSeadsVoxels = 1024;
+/// SEADS voxels a side (header sptncde): SEADS builds at most 2^25 voxels (seads_grid.h), 322
+/// a side. And the octree depth (header octr).
+inline constexpr int kMaxSeadsVoxels = 322;
 inline constexpr int kMaxOctreeDepth = 20;
+/// The largest |coordinate| of a placed vertex, a shape's point, the eye and the look point, and
+/// the largest screen distance and shape radius: the world's extent, voxel sizes and Embree's float
+/// rays stay finite and keep a useful precision.
+inline constexpr double kMaxCoordinate = 1e15;
+/// The largest |value| of an attribute's colour channels and weights (e a d s t): a light or a
+/// surface can be bright, but not so bright that a few bounces leave the float range.
+inline constexpr double kMaxIntensity = 1e6;
 
 }  // namespace rt

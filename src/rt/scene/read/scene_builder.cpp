@@ -4,6 +4,7 @@
 
 #include "rt/scene/polygon_geometry.h"
 #include "rt/scene/read/field_reader.h"
+#include "rt/scene/read/reader_limits.h"
 
 #include <fmt/format.h>
 
@@ -37,6 +38,19 @@ void check_shape_use(const Shape& s, PolygonMark mark, const SourceLocation& use
     if (mark != PolygonMark::Sphere && s.first == s.second) {
         throw InputError(s.where, use + ", but its two axis points are the same");
     }
+}
+
+// Every placed coordinate stays within kMaxCoordinate (NaN fails too), so that the world's extent,
+// the voxel sizes and Embree's float rays stay finite.
+bool within_range(const Vec3& p) {
+    return std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+           std::fabs(p.z) <= kMaxCoordinate;
+}
+
+std::string out_of_range(std::string_view what, const Vec3& from, const Vec3& to) {
+    return fmt::format("{} {} is placed at {}, outside the coordinate range {:g} to {:g}", what,
+                       show_point(from.x, from.y, from.z), show_point(to.x, to.y, to.z),
+                       -kMaxCoordinate, kMaxCoordinate);
 }
 
 }  // namespace
@@ -111,7 +125,7 @@ void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
         placing.entry.surface.smooth_shaded || polygon.mark == PolygonMark::InterpolatesNormals;
     out.texture_cell = polygon.texture_cell;
     for (const std::uint32_t vertex : loop) {
-        scene_.corners.push_back(position_index(placing, vertex));
+        scene_.corners.push_back(position_index(placing, polygon, vertex));
     }
     if (out.smooth && !placing.mesh.corner_normals.empty()) {
         add_corner_normals(placing, polygon, out.first_corner);
@@ -184,10 +198,22 @@ std::int32_t SceneBuilder::shape_index(Placing& placing, const MeshPolygon& poly
     Shape shape = file_shapes_[static_cast<std::size_t>(polygon.shape_number)];
     check_shape_use(shape, mark, at);
     const SurfaceTransform& t = placing.transform;
-    shape.first = t.point(shape.first);
-    shape.second = t.point(shape.second);
+    for (Vec3* p : {&shape.first, &shape.second}) {
+        const Vec3 placed = t.point(*p);
+        if (!within_range(placed)) {
+            throw InputError(shape.where, out_of_range(fmt::format("shape {}'s point", shape.index),
+                                                       *p, placed));
+        }
+        *p = placed;
+    }
     if (mark != PolygonMark::Cone) {
         shape.radius_or_angle *= std::fabs(t.scale());  // a cone's angle survives a uniform scale
+        if (!(shape.radius_or_angle <= kMaxCoordinate)) {
+            throw InputError(
+                shape.where,
+                fmt::format("shape {}'s radius is placed at {}, more than {:g}", shape.index,
+                            show_number(shape.radius_or_angle), kMaxCoordinate));
+        }
     }
     scene_.shapes.push_back(shape);
     const auto index = static_cast<std::int32_t>(scene_.shapes.size() - 1);
@@ -195,11 +221,25 @@ std::int32_t SceneBuilder::shape_index(Placing& placing, const MeshPolygon& poly
     return index;
 }
 
-std::uint32_t SceneBuilder::position_index(Placing& placing, std::uint32_t vertex) {
+std::uint32_t SceneBuilder::position_index(Placing& placing, const MeshPolygon& polygon,
+                                           std::uint32_t vertex) {
     std::uint32_t& slot = placing.position_of[vertex];
     if (slot == kUnplaced) {
+        const Vec3& p = placing.mesh.vertices[vertex];
+        const Vec3 placed = placing.transform.point(p);
+        if (!within_range(placed)) {
+            const std::vector<int>& lines = placing.mesh.vertex_lines;
+            const SourceLocation at =
+                vertex < lines.size()
+                    ? SourceLocation{scene_.source_files[placing.file], lines[vertex], 0}
+                    : polygon_location(placing, polygon);
+            throw InputError(
+                at, out_of_range("the vertex", p, placed) +
+                        fmt::format(" by optical surface '{}' ({})", placing.entry.surface.file,
+                                    placing.entry.surface.where.to_string()));
+        }
         slot = static_cast<std::uint32_t>(scene_.positions.size());
-        scene_.positions.push_back(placing.transform.point(placing.mesh.vertices[vertex]));
+        scene_.positions.push_back(placed);
     }
     return slot;
 }

@@ -36,7 +36,10 @@ private:
                             std::uint32_t first_corner);
     std::uint32_t attribute_index(const Placing& placing, const MeshPolygon& polygon) const;
     std::int32_t shape_index(Placing& placing, const MeshPolygon& polygon);
-    std::uint32_t position_index(Placing& placing, std::uint32_t vertex);
+    /// The vertex's place in Scene::positions, placing it on first use; an error at its line
+    /// (or the polygon's) when it lands outside kMaxCoordinate.
+    std::uint32_t position_index(Placing& placing, const MeshPolygon& polygon,
+                                 std::uint32_t vertex);
     SourceLocation polygon_location(const Placing& placing, const MeshPolygon& polygon) const;
 
     Scene& scene_;

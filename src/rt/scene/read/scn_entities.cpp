@@ -49,7 +49,8 @@ void read_surface_fields(ItemStream& scn, const ReaderDialect& dialect, ScnSurfa
     }
     o.file = std::string(scn.take("the optical surface file name").text);
     s.placement.scale = read_scale(scn, s, dialect);
-    s.placement.translation = scn.triple("the translation");
+    // A translation beyond the coordinate range would place every vertex outside it.
+    s.placement.translation = scn.coordinates("the translation");
     s.placement.rotation_degrees = scn.triple("the rotation about");
     if (o.filetype == 1 && o.smooth_shaded) {
         throw InputError(o.where, "optical surface '" + o.file +

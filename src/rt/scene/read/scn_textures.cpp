@@ -55,7 +55,7 @@ ScnTexturedSurface read_textured_surface(ItemStream& scn) {
     if (s.placement.scale == 0.0) {
         throw InputError(location_of(scn.source(), scale), "the scale" + of + " must not be 0");
     }
-    s.placement.translation = scn.triple("the translation");
+    s.placement.translation = scn.coordinates("the translation");
     s.placement.rotation_degrees = scn.triple("the rotation about");
     read_grid_size(scn, s);
     return s;

@@ -31,8 +31,8 @@ double number_between(ItemStream& scn, std::string_view what, double lo, double 
     const Token token = scn.take(what);
     const double value = number_from(scn.source(), token, what);
     if (value <= lo || (hi >= 0 && value >= hi)) {
-        const std::string range =
-            hi >= 0 ? fmt::format("between {} and {}", lo, hi) : fmt::format("more than {}", lo);
+        const std::string range = hi >= 0 ? fmt::format("between {:g} and {:g}", lo, hi)
+                                          : fmt::format("more than {}", lo);
         throw expected_found(location_of(scn.source(), token), fmt::format("{} ({})", what, range),
                              quote_token(token.text));
     }
@@ -41,9 +41,9 @@ double number_between(ItemStream& scn, std::string_view what, double lo, double 
 
 Vec3 point(ItemStream& scn, const std::string& name) {
     Vec3 p;
-    p.x = scn.number("the " + name + "'s x");
-    p.y = scn.number("the " + name + "'s y");
-    p.z = scn.number("the " + name + "'s z");
+    p.x = scn.coordinate("the " + name + "'s x");
+    p.y = scn.coordinate("the " + name + "'s y");
+    p.z = scn.coordinate("the " + name + "'s z");
     return p;
 }
 
@@ -115,7 +115,7 @@ SceneView read_view(ItemStream& scn, const SceneHeader& header, SourceLocation& 
         throw InputError(eye_at, "the eye point and the look point are the same " +
                                      show_point(v.eye.x, v.eye.y, v.eye.z));
     }
-    v.screen_distance = number_between(scn, "the screen distance", 0.0, -1.0);
+    v.screen_distance = number_between(scn, "the screen distance", 0.0, kMaxCoordinate);
     scn.end_item();
     trace(scn, diagnostics, "screendist " + show_number(v.screen_distance));
     v.view_angle_x_degrees = number_between(scn, "the view angle x in degrees", 0.0, 180.0);

@@ -33,6 +33,9 @@ struct MeshMaterial {
 
 struct SurfaceMesh {
     std::vector<Vec3> vertices;
+    /// The line defining each vertex, for messages; empty (or short) where the reader keeps none,
+    /// and then a vertex is named by its polygon's line.
+    std::vector<int> vertex_lines;
     std::vector<std::uint32_t> corners;  ///< into vertices, loop order
     std::vector<MeshPolygon> polygons;
     /// Model files only: the file's normal at each entry of `corners` (zero where it gives none),
