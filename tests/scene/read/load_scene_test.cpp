@@ -324,6 +324,9 @@ TEST_F(SmallScene, Errors) {
     EXPECT_EQ(
         error(scn("$@nothere\n$ 0\n"), m),
         "s.scn:10: cannot open the shape file 'nothere' (nothere): No such file or directory");
+    EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 /dev/zero 1 0 0 0 0 0 0\n")),
+              "s.scn:12: cannot open optical surface file '/dev/zero' (/dev/zero): a device, not "
+              "a file");
     EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 9 0 tri 1 0 0 0 0 0 0\n")),
               "s.scn:12: optical surface 'tri' uses attribute 9, which is not defined");
     dir_.write("offset", "3 0 0 0 0 1 1 0 0 2 0 1 0 3 0 0 1 1 1 2 2 2 0 1\n0 3 0 1 2 0 0 1 5");

@@ -31,6 +31,12 @@ OpenFile open_for_reading(const std::filesystem::path& path, std::string& reason
         reason = errno_reason(EISDIR);
         return nullptr;
     }
+    // A device such as /dev/zero or /dev/random would be read up to the size cap (a GiB) before
+    // being refused; pipes stay allowed (a scene may come from a shell's process substitution).
+    if (std::filesystem::is_character_file(path, ec) || std::filesystem::is_block_file(path, ec)) {
+        reason = "a device, not a file";
+        return nullptr;
+    }
     OpenFile file(std::fopen(path.c_str(), "rb"));
     if (!file) {
         reason = errno_reason(errno);
