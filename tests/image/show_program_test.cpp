@@ -1,6 +1,8 @@
 // The show program end to end: exit codes, messages and files.
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "rt/image/display_mapping.h"
@@ -76,6 +78,28 @@ TEST_F(ShowProgram, InfoDescribesThePicture) {
     EXPECT_NE(o.out.find("-Dd -m2"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("rt 0.1.0"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("2024-01-02T03:04:05Z"), std::string::npos) << o.out;
+}
+
+// A 16384 x 16384 picture holds 3 GiB of pixels: --info reads its header and the file's size only.
+// The pixel block is a hole in a sparse file, so the test costs no disk and no time.
+TEST_F(ShowProgram, InfoReadsOnlyTheHeaderOfAHugePicture) {
+    const std::string header =
+        "GRO rt 1\nview 16384 16384\nwindow 0 0 16383 16383\nfirst_finished_row 0\n"
+        "display_multiplier 1\ndisplay_clip on\nscene big\nswitches -n\nprogram rt 0.1.0\n"
+        "created 2026-12-01T00:00:00Z\npixels rgb-float32-le\nend\n";
+    const std::filesystem::path big = dir_.path() / "big.gro";
+    {
+        std::ofstream out(big, std::ios::binary);
+        out << header;
+    }
+    std::filesystem::resize_file(big, header.size() + std::uint64_t{16384} * 16384 * 3 * 4);
+    const Outcome o = run("big --info");
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.out.find("16384 x 16384 pixels"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("16384 of 16384 finished"), std::string::npos) << o.out;
+    // A file that does not hold its pixels is still refused.
+    std::filesystem::resize_file(big, header.size() + 12);
+    EXPECT_EQ(run("big --info").code, 1);
 }
 
 TEST_F(ShowProgram, OutputConvertsWithTheStoredMapping) {

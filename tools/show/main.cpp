@@ -10,6 +10,7 @@
 
 #include "rt/core/error.h"
 #include "rt/image/film_summary.h"
+#include "rt/image/gro_format.h"
 #include "rt/image/image_writer.h"
 
 #include "command_line/command_line.h"
@@ -72,6 +73,14 @@ int run(const ShowArgs& s) {
     }
     const bool in_window = s.outputs.empty() && !s.info;  // the manual's "show name"
     const std::filesystem::path path = picture_path(s.name);
+    if (s.info && s.outputs.empty() && path.extension() == ".gro") {
+        // The header says it all: the pixels, gigabytes for a large view, are never read.
+        rt::GroHeader header = rt::read_gro_header_only(path);
+        header.mapping.multiplier = s.multiplier.value_or(header.mapping.multiplier);
+        header.mapping.clip = header.mapping.clip && !s.no_clip;
+        std::cout << rt::header_summary(header);
+        return kOk;
+    }
     rt::Film film = in_window ? rt::show::picture_for_window(path) : rt::read_linear_image(path);
     film.mapping.multiplier = s.multiplier.value_or(film.mapping.multiplier);
     film.mapping.clip = film.mapping.clip && !s.no_clip;

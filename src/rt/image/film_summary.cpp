@@ -12,24 +12,36 @@ std::string or_unknown(const std::string& text) {
 
 }  // namespace
 
-std::string film_summary(const Film& film) {
-    const PixelRect& w = film.window();
-    const int rows_done = w.bottom + 1 - std::max(film.first_finished_row(), w.top);
+std::string header_summary(const GroHeader& header) {
+    const PixelRect& w = header.window;
+    const int rows_done = w.bottom + 1 - std::max(header.first_finished_row, w.top);
+    const bool complete = header.first_finished_row <= w.top;
     std::string text;
-    text += fmt::format("size      {} x {} pixels (the view area)\n", film.view_width(),
-                        film.view_height());
+    text += fmt::format("size      {} x {} pixels (the view area)\n", header.view_width,
+                        header.view_height);
     text += fmt::format("window    {} {} {} {} (left top right bottom: {} x {} pixels)\n", w.left,
                         w.top, w.right, w.bottom, w.width(), w.height());
     text += fmt::format("rows      {} of {} finished{}\n", rows_done, w.height(),
-                        film.complete() ? "" : " (from the bottom up)");
-    text += fmt::format("display   multiplier {}, clipping {}\n", film.mapping.multiplier,
-                        film.mapping.clip ? "on" : "off");
-    text += fmt::format("scene     {}\n", or_unknown(film.provenance.scene));
+                        complete ? "" : " (from the bottom up)");
+    text += fmt::format("display   multiplier {}, clipping {}\n", header.mapping.multiplier,
+                        header.mapping.clip ? "on" : "off");
+    text += fmt::format("scene     {}\n", or_unknown(header.provenance.scene));
     text += fmt::format("switches  {}\n",
-                        film.provenance.switches.empty() ? "(none)" : film.provenance.switches);
-    text += fmt::format("program   {}\n", or_unknown(film.provenance.program));
-    text += fmt::format("created   {}\n", or_unknown(film.provenance.created));
+                        header.provenance.switches.empty() ? "(none)" : header.provenance.switches);
+    text += fmt::format("program   {}\n", or_unknown(header.provenance.program));
+    text += fmt::format("created   {}\n", or_unknown(header.provenance.created));
     return text;
+}
+
+std::string film_summary(const Film& film) {
+    GroHeader header;
+    header.view_width = film.view_width();
+    header.view_height = film.view_height();
+    header.window = film.window();
+    header.first_finished_row = film.first_finished_row();
+    header.mapping = film.mapping;
+    header.provenance = film.provenance;
+    return header_summary(header);
 }
 
 }  // namespace rt

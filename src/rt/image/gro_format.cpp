@@ -142,6 +142,20 @@ void read_pixels(std::istream& in, const GroHeader& h, Film& film, const std::st
     }
 }
 
+// Opens the .gro for reading, with the reason in the error when it cannot be.
+std::ifstream open_gro(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw IoError("cannot read " + file + ": it is a folder");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw IoError("cannot open " + file + ": " + std::generic_category().message(errno));
+    }
+    return in;
+}
+
 }  // namespace
 
 void write_gro(const Film& film, const std::filesystem::path& path) {
@@ -157,16 +171,16 @@ void write_gro(const Film& film, const std::filesystem::path& path) {
     });
 }
 
+GroHeader read_gro_header_only(const std::filesystem::path& path) {
+    std::ifstream in = open_gro(path);
+    const GroHeader header = read_gro_header(in, path.string());
+    check_pixel_bytes(header, file_size_of(path), path.string());
+    return header;
+}
+
 Film read_gro(const std::filesystem::path& path) {
     const std::string file = path.string();
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw IoError("cannot read " + file + ": it is a folder");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw IoError("cannot open " + file + ": " + std::generic_category().message(errno));
-    }
+    std::ifstream in = open_gro(path);
     const GroHeader header = read_gro_header(in, file);
     check_pixel_bytes(header, file_size_of(path), file);
     Film film(header.view_width, header.view_height, header.window);

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "rt/image/film.h"
+#include "rt/image/gro_header.h"
 
 namespace rt {
 
@@ -29,5 +30,9 @@ void check_storable(const Film& film);
 /// Reads a .gro file, validating it strictly. Throws rt::InputError ("file:line: expected ...,
 /// found ...") for a malformed file and rt::IoError if it cannot be read.
 Film read_gro(const std::filesystem::path& path);
+
+/// Reads and validates a .gro file's header, and checks that the file holds its pixels, without
+/// reading or storing them: what `show --info` needs, at any picture size.
+GroHeader read_gro_header_only(const std::filesystem::path& path);
 
 }  // namespace rt
