@@ -35,7 +35,12 @@ const char* driver_named() {
 }
 
 constexpr std::uint32_t kFrameMilliseconds = 16;  // about 60 redraws a second, at most
-const double kExposureStep = std::sqrt(2.0);      // half a stop per key press
+// The whole picture is drawn again this often, changed or not: a draw made before the X server
+// mapped the window is lost without an expose event on some servers (Xvfb without a window
+// manager, under load), and only this brings the unchanged rows (the wireframe) back. A blit of
+// the mapped picture costs far less than a frame.
+constexpr std::uint32_t kWholeRedrawMilliseconds = 250;
+const double kExposureStep = std::sqrt(2.0);  // half a stop per key press
 
 bool is_close_key(const SDL_Keysym& key) {
     return key.sym == SDLK_ESCAPE || (key.sym == SDLK_c && (key.mod & KMOD_CTRL) != 0);
@@ -91,6 +96,7 @@ private:
     void loop() {
         std::vector<std::uint8_t> rgb;
         bool redraw = true;
+        std::uint32_t last_whole = SDL_GetTicks();
         while (!stopping_) {
             SDL_Event event;
             if (SDL_WaitEventTimeout(&event, static_cast<int>(kFrameMilliseconds)) != 0) {
@@ -98,8 +104,10 @@ private:
                 continue;  // drain the queue before drawing
             }
             PictureBoard::Rows rows = board_.update(rgb);
-            if (redraw) {
+            const std::uint32_t now = SDL_GetTicks();
+            if (redraw || now - last_whole >= kWholeRedrawMilliseconds) {
                 rows = {0, board_.height() - 1};
+                last_whole = now;
             }
             if (rows.top <= rows.bottom && !closed_) {
                 draw(rgb, rows);
@@ -120,6 +128,7 @@ private:
                     return false;
                 }
                 return event.window.event == SDL_WINDOWEVENT_EXPOSED ||
+                       event.window.event == SDL_WINDOWEVENT_SHOWN ||
                        event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED;
             case SDL_KEYDOWN:
                 if (is_close_key(event.key.keysym)) {
