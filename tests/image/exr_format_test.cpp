@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/sample_films.h"
 #include "support/temp_dir.h"
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -25,39 +26,10 @@ namespace rt {
 namespace {
 
 Film sample_film() {
-    Film film(6, 5, PixelRect{1, 1, 4, 3});  // 4 x 3 window
-    for (std::size_t i = 0; i < film.data().size(); ++i) {
-        film.data()[i] = static_cast<float>(i) * 0.37F - 2.0F;
-    }
-    // Values a half float could not hold, whose bits must survive exactly.
-    film.data()[0] = -0.0F;
-    film.data()[1] = std::numeric_limits<float>::denorm_min();
-    film.data()[2] = std::numeric_limits<float>::max();
-    film.data()[3] = 1.0F / 3.0F;
-    film.set_first_finished_row(2);
-    film.mapping = {2.5, false};
-    film.provenance = {"twocubes", "-Dd -m2.5 -c", "rt 0.1.0", "2024-05-06T07:08:09Z"};
-    return film;
+    return test::sample_film(2);
 }
 
-void expect_same_film(const Film& a, const Film& b) {
-    EXPECT_EQ(a.view_width(), b.view_width());
-    EXPECT_EQ(a.view_height(), b.view_height());
-    EXPECT_EQ(a.window(), b.window());
-    EXPECT_EQ(a.first_finished_row(), b.first_finished_row());
-    EXPECT_EQ(a.mapping.multiplier, b.mapping.multiplier);
-    EXPECT_EQ(a.mapping.clip, b.mapping.clip);
-    EXPECT_EQ(a.provenance.scene, b.provenance.scene);
-    EXPECT_EQ(a.provenance.switches, b.provenance.switches);
-    EXPECT_EQ(a.provenance.program, b.provenance.program);
-    EXPECT_EQ(a.provenance.created, b.provenance.created);
-    ASSERT_EQ(a.data().size(), b.data().size());
-    for (std::size_t i = 0; i < a.data().size(); ++i) {
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(a.data()[i]),
-                  std::bit_cast<std::uint32_t>(b.data()[i]))
-            << "value " << i;
-    }
-}
+using test::expect_same_film;
 
 std::string input_error(const std::filesystem::path& path) {
     try {
