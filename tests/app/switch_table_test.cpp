@@ -40,17 +40,17 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",        "-w",      "-m",        "-tv",     "-c",         "-od",       "-oo",
-        "-ol",       "-on",     "-of",       "-op",     "-ss",        "-p",        "-r",
-        "-Sp",       "-Sg",     "-Stg",      "-Stb",    "-R",         "-Wr",       "-Wc",
-        "-Wt",       "-A",      "-T",        "-Co",     "-Ci",        "-Cf",       "-Dx",
-        "-De",       "-Dd",     "-Dt",       "-Da",     "-Dl",        "-Ds",       "-Dr",
-        "-Df",       "-Dp",     "-Db",       "-Po",     "-Pt",        "-Ot",       "-Oi",
-        "-Of",       "-O1",     "-K",        "-I",      "-L",         "-E",        "-F",
-        "-Xp",       "-Xr",     "-M",        "-V",      "-dc",        "-ds",       "-dsp",
-        "-dso",      "-dl",     "-doo",      "-doi",    "-dof",       "-df",       "-dd",
-        "-dx",       "-de",     "--output",  "--model", "--help",     "--version", "--seed",
-        "--threads", "--accel", "--zbuffer", "--quiet", "--no-window"};
+        "-n",        "-w",     "-m",       "-tv",       "-c",      "-od",        "-oo",
+        "-ol",       "-on",    "-of",      "-op",       "-ss",     "-p",         "-r",
+        "-Sp",       "-Sg",    "-Stg",     "-Stb",      "-R",      "-Wr",        "-Wc",
+        "-Wt",       "-A",     "-T",       "-Co",       "-Ci",     "-Cf",        "-Dx",
+        "-De",       "-Dd",    "-Dt",      "-Da",       "-Dl",     "-Ds",        "-Dr",
+        "-Df",       "-Dp",    "-Db",      "-Po",       "-Pt",     "-Ot",        "-Oi",
+        "-Of",       "-O1",    "-K",       "-I",        "-L",      "-E",         "-F",
+        "-Xp",       "-Xr",    "-M",       "-V",        "-dc",     "-ds",        "-dsp",
+        "-dso",      "-dl",    "-doo",     "-doi",      "-dof",    "-df",        "-dd",
+        "-dx",       "-de",    "--output", "--model",   "--help",  "--version",  "--seed",
+        "--threads", "--tile", "--accel",  "--zbuffer", "--quiet", "--no-window"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -316,6 +316,11 @@ std::map<std::string_view, Expectation> expectations() {
         {"--model", {{}, [](const Options& o) { return o.model == "scenes/models/bunny.ply"; }}},
         {"--seed", {{}, [](const Options& o) { return o.shading.sampling.seed == 7; }}},
         {"--threads", {{}, [](const Options& o) { return o.threads == 2; }}},
+        {"--tile",
+         {{},
+          [](const Options& o) {
+              return o.tile == PicturePart{2, 3};
+          }}},
         {"--accel", {{}, [](const Options& o) { return o.accel.method.kind == AccelKind::Bvh; }}},
         {"--zbuffer", {{}, [](const Options& o) { return o.accel.zbuffer_first_hits; }}},
         {"--quiet", flag(&Options::quiet)},

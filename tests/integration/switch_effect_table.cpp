@@ -645,6 +645,7 @@ const std::vector<OtherSwitch>& other_switches() {
         {"--version", "RtProgram.HelpAndVersion"},
         {"--quiet", "RtProgram tests: nothing printed"},
         {"--no-window", "Window.NeverWaitsWithoutADisplayOrATerminal: no window, no wait"},
+        {"--tile", "TileMerge tests: three parts merged equal the single render, pixel for pixel"},
     };
     return all;
 }

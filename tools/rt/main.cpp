@@ -17,6 +17,11 @@
 #include "rt/app/run.h"
 #include "rt/app/switch_parser.h"
 #include "rt/core/error.h"
+#ifdef RT_WITH_MPI
+#include "rt/cluster/cluster_error.h"
+#include "rt/cluster/cluster_run.h"
+#include "rt/cluster/mpi_world.h"
+#endif
 
 #include <unistd.h>
 
@@ -28,6 +33,7 @@ constexpr int kBadInput = 1;
 constexpr int kUsage = 2;
 constexpr int kIo = 3;
 constexpr int kInternal = 4;
+constexpr int kClusterFailure = 5;  // a rank of an MPI job failed or was stopped
 constexpr int kInterrupted = 130;
 
 void print_line(const std::string& line) {
@@ -99,8 +105,9 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
     return console;
 }
 
-int run(const std::vector<std::string>& args) {
-    const rt::Options options = rt::parse_command_line(args);
+int run(int argc, char** argv) {
+    const rt::Options options =
+        rt::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
     if (options.show_usage) {
         std::cout << rt::usage_text();
         return kOk;
@@ -116,7 +123,16 @@ int run(const std::vector<std::string>& args) {
     rt::install_interrupt_handler();
     const std::unique_ptr<rt::ProgressReport> progress = make_progress(options);
     const rt::RunConsole console = make_console(options, progress.get());
-    if (rt::run(options, console) == rt::RunOutcome::Interrupted) {
+#ifdef RT_WITH_MPI
+    // Under mpirun, every process runs this; rank 0 alone prints, renders with the others and
+    // writes (docs/distributed.md).
+    const rt::RunOutcome outcome = rt::cluster::started_by_mpi_launcher()
+                                       ? rt::cluster::run_in_cluster(options, console, argc, argv)
+                                       : rt::run(options, console);
+#else
+    const rt::RunOutcome outcome = rt::run(options, console);
+#endif
+    if (outcome == rt::RunOutcome::Interrupted) {
         console.trace("rt: interrupted; the finished lines were written");  // printed as is
         // The shell's convention: 128 + the signal (130 for Ctrl-C, 143 for SIGTERM); a window
         // closed by the user counts as Ctrl-C.
@@ -130,10 +146,15 @@ int run(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
     try {
-        return run(std::vector<std::string>(argv + 1, argv + argc));
+        return run(argc, argv);
     } catch (const rt::InputError& e) {
         print_line(e.what());
         return kBadInput;
+#ifdef RT_WITH_MPI
+    } catch (const rt::cluster::ClusterError& e) {
+        print_line(std::string("rt: ") + e.what());
+        return kClusterFailure;
+#endif
     } catch (const rt::SettingError& e) {
         // The library names settings; say which switch sets each.
         print_line("rt: " + rt::name_the_switches(e.what()));

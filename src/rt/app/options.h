@@ -10,6 +10,7 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/image/film.h"
+#include "rt/image/picture_parts.h"
 #include "rt/scene/read/dialect.h"
 #include "rt/shading/shading_settings.h"
 
@@ -44,6 +45,7 @@ struct Options {
     // --- output -------------------------------------------------------------------------------
     std::vector<std::string> outputs;  ///< --output FILE (repeatable); format from the extension
     bool no_gro = false;               ///< -n
+    std::optional<PicturePart> tile;   ///< --tile I/N: render part I of N into a part file
 
     // --- what else to do or print ---------------------------------------------------------------
     bool wireframe_only = false;            ///< -w (not implemented yet)
@@ -65,6 +67,8 @@ struct Options {
 
     /// The switches exactly as given (not the scene, not long options), for the .gro header.
     std::vector<std::string> given_switches;
+    /// The long options exactly as given (--seed 7, --accel bvh, ...), for a part file's header.
+    std::vector<std::string> given_long_options;
 };
 
 }  // namespace rt

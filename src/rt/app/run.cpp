@@ -11,10 +11,12 @@
 #include "rt/app/inspection_runs.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
+#include "rt/app/switch_parser.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
 #include "rt/image/display_mapping.h"
 #include "rt/image/image_writer.h"
+#include "rt/image/picture_parts.h"
 #include "rt/render/film_window.h"
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
@@ -113,12 +115,48 @@ void print_colors(const Film& film, const RunConsole& console) {
     }
 }
 
+}  // namespace
+
+std::string picture_switches(const Options& options) {
+    std::vector<std::string> words = options.given_switches;
+    for (const std::string& option : options.given_long_options) {
+        // "--seed 7" or "--seed=7": the spelling ends at the space or the '='.
+        const SwitchSpec* spec = match_switch(option.substr(0, option.find_first_of(" =")));
+        const std::string_view spelling = spec != nullptr ? spec->spelling : "";
+        if (spelling != "--tile" && spelling != "--output" && spelling != "--threads" &&
+            spelling != "--quiet" && spelling != "--no-window") {
+            words.push_back(option);
+        }
+    }
+    return join(words);
+}
+
+namespace {
+
 // What made the picture, and how to show it.
 void stamp(Film& film, const Options& options) {
     film.mapping = options.display;
     film.provenance = {options.model.empty() ? options.scene : "--model " + options.model,
                        join(options.given_switches), std::string("rt ") + std::string(kVersion),
                        utc_now()};
+    if (options.tile) {
+        film.part = {format_part_line(*options.tile), picture_switches(options)};
+    }
+}
+
+// --tile writes its part file and nothing else: the images come from merge.
+void check_tile_options(const Options& options) {
+    if (!options.tile) {
+        return;
+    }
+    if (options.no_gro) {
+        throw UsageError("--tile writes a part file, which -n would leave out: drop -n");
+    }
+    if (!options.outputs.empty()) {
+        throw UsageError(
+            "--tile writes only its part file: merge writes the images (merge PARTS... "
+            "--output FILE)");
+    }
 }
 
 // The folder an output goes into must exist and be writable: found out after the render, it
@@ -143,8 +181,7 @@ void check_output_folder(const std::filesystem::path& output) {
 void write_outputs(const Film& film, const Options& options) {
     std::vector<std::filesystem::path> paths;
     if (!options.no_gro) {
-        paths.emplace_back(options.model.empty() ? default_gro_path(options.scene)
-                                                 : model_gro_path(options.model));
+        paths.emplace_back(gro_output_path(options));
     }
     paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
     std::string failures;
@@ -252,16 +289,29 @@ std::filesystem::path model_gro_path(const std::string& model_argument) {
     return name;
 }
 
-RunOutcome run(const Options& options, const RunConsole& console) {
+std::filesystem::path part_path(const std::filesystem::path& gro, PicturePart part) {
+    std::filesystem::path name = gro;
+    name.replace_extension();
+    name += fmt::format(".part-{}-of-{}.gro", part.index, part.count);
+    return name;
+}
+
+std::filesystem::path gro_output_path(const Options& options) {
+    const std::filesystem::path gro =
+        options.model.empty() ? default_gro_path(options.scene) : model_gro_path(options.model);
+    return options.tile ? part_path(gro, *options.tile) : gro;
+}
+
+RunOutcome run(const Options& options, const RunConsole& console, const RenderStep& step) {
     for (const std::string& output : options.outputs) {
         // Refuse an unknown format or a folder that cannot take the file before hours of
         // rendering.
         (void)image_format_for(output);
         check_output_folder(output);
     }
+    check_tile_options(options);
     if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
-        check_output_folder(options.model.empty() ? default_gro_path(options.scene)
-                                                  : model_gro_path(options.model));
+        check_output_folder(gro_output_path(options));
     }
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
@@ -282,6 +332,9 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     settings.shading = run_shading(options);
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
+    if (options.tile) {
+        settings.window = part_window(settings.window, *options.tile);
+    }
     settings.threads = options.threads;
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
     if (run_without_tracing(scene, options, settings.window, console, shown)) {
@@ -326,7 +379,12 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     if (console.progress) {
         console.progress(0, settings.window.height(), 0);
     }
-    Film film = render(scene, *accel, settings, observer, statistics);
+    std::optional<Film> rendered = step ? step(scene, *accel, settings, observer, statistics)
+                                        : render(scene, *accel, settings, observer, statistics);
+    if (!rendered) {
+        return RunOutcome::Finished;  // a helping process of a cluster run: rank 0 writes
+    }
+    Film film = std::move(*rendered);
     times.trace_seconds = seconds_since(phase);
     if (stack.strike_check() != nullptr) {
         console.note(stack.strike_check()->summary());

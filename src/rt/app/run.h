@@ -7,10 +7,12 @@
 #include <functional>
 #include <istream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
 #include "rt/app/options.h"
+#include "rt/render/renderer.h"
 #include "rt/window/picture_window.h"
 
 namespace rt {
@@ -50,7 +52,26 @@ std::filesystem::path default_gro_path(const std::string& scene_argument);
 /// ("models/bunny.ply" -> "bunny.gro").
 std::filesystem::path model_gro_path(const std::string& model_argument);
 
-/// Renders as the options say and writes the outputs. Throws rt::Error subclasses.
-RunOutcome run(const Options& options, const RunConsole& console);
+/// The part file of `--tile I/N` beside the .gro gro: "twocubes.gro" -> "twocubes.part-2-of-3.gro".
+std::filesystem::path part_path(const std::filesystem::path& gro, PicturePart part);
+
+/// The .gro a run writes: the scene's (or the model's) name, or with --tile its part file.
+std::filesystem::path gro_output_path(const Options& options);
+
+/// The switches that decide the pixels, long options included: every switch but --tile and those
+/// that only say where the outputs go or how the run looks (--output, --threads, --quiet,
+/// --no-window). A part file's header holds them, so that merge joins only parts of one render.
+std::string picture_switches(const Options& options);
+
+/// How a run renders its film once the scene and the accelerator are ready. By default the
+/// renderer's render() on this process's threads; a cluster run (src/rt/cluster) shares the rows
+/// among the processes of an MPI job. Returns nothing on a process that only helps: it writes
+/// no output.
+using RenderStep = std::function<std::optional<Film>(
+    const Scene&, const Accelerator&, const RenderSettings&, RenderObserver&, RenderStatistics&)>;
+
+/// Renders as the options say (with `step`, if given) and writes the outputs. Throws
+/// rt::Error subclasses.
+RunOutcome run(const Options& options, const RunConsole& console, const RenderStep& step = {});
 
 }  // namespace rt

@@ -228,6 +228,8 @@ void parse_switch(std::string_view word, ArgumentCursor& cursor, Options& option
     }
     if (!spec.is_long_option()) {
         options.given_switches.push_back(verbatim);
+    } else {
+        options.given_long_options.push_back(verbatim);
     }
     if (spec.status == Status::NotYet && seen.not_yet == nullptr) {
         seen.not_yet = &spec;

@@ -453,6 +453,13 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .first = {"N", whole(0, 1024)},
      .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
      .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2"},
+    {.spelling = "--tile", .form = Text, .topic = Program, .first = {"I/N", {}},
+     .apply = [](Options& o, A a) { o.tile = parse_picture_part(a.text); },
+     .summary = "Render only part I of N into a part file, for merge",
+     .details = "Cuts the window into N bands of rows from the top and renders band I into "
+                "NAME.part-I-of-N.gro; the program merge joins the N part files into the .gro "
+                "and images a single run writes, pixel for pixel (docs/distributed.md). Not "
+                "with -n or --output.", .section = "new", .example = "--tile 2/3"},
     {.spelling = "--accel", .form = Text, .topic = SpatialEncoding,
      .first = {"NAME", {}}, .apply = set_accel_kind,
      .summary = "Intersection method: brute, octree, seads, bvh or embree",

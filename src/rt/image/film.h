@@ -24,6 +24,14 @@ struct FilmProvenance {
     std::string created;   ///< UTC time, ISO 8601
 };
 
+/// What a part file (`rt --tile I/N`) adds to its header; empty for a whole picture.
+struct FilmPart {
+    std::string part;  ///< "I N"
+    /// The switches that decide the pixels, long options included (--seed, --accel), --tile and
+    /// the output names left out: `merge` joins only parts whose lines agree.
+    std::string switches;
+};
+
 class Film {
 public:
     Film() = default;
@@ -47,6 +55,7 @@ public:
 
     DisplayMapping mapping;
     FilmProvenance provenance;
+    FilmPart part;
 
     /// Throws rt::Error unless the window is non-empty and data() holds exactly its pixels; writers
     /// call it so a program bug never becomes a broken file.

@@ -30,6 +30,10 @@ std::string header_summary(const GroHeader& header) {
                         header.provenance.switches.empty() ? "(none)" : header.provenance.switches);
     text += fmt::format("program   {}\n", or_unknown(header.provenance.program));
     text += fmt::format("created   {}\n", or_unknown(header.provenance.created));
+    if (!header.part.part.empty()) {
+        text += fmt::format("part      {} (for merge; switches {})\n", header.part.part,
+                            header.part.switches);
+    }
     return text;
 }
 

@@ -188,6 +188,7 @@ Film read_gro(const std::filesystem::path& path) {
     film.set_first_finished_row(header.first_finished_row);
     film.mapping = header.mapping;
     film.provenance = header.provenance;
+    film.part = header.part;
     return film;
 }
 

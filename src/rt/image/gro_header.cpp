@@ -154,6 +154,12 @@ void read_text(GroHeader& h, std::string_view value, const SourceLocation& /*whe
     h.provenance.*field = value;
 }
 
+// Reads one field of a part file's.
+template <std::string FilmPart::*field>
+void read_part(GroHeader& h, std::string_view value, const SourceLocation& /*where*/) {
+    h.part.*field = value;
+}
+
 using KeyReader = void (*)(GroHeader&, std::string_view, const SourceLocation&);
 
 struct KeySpec {
@@ -174,6 +180,8 @@ constexpr std::array kKeys = {
     KeySpec{"switches", false, read_text<&FilmProvenance::switches>},
     KeySpec{"program", false, read_text<&FilmProvenance::program>},
     KeySpec{"created", false, read_text<&FilmProvenance::created>},
+    KeySpec{"part", false, read_part<&FilmPart::part>},
+    KeySpec{"part_switches", false, read_part<&FilmPart::switches>},
 };
 
 bool valid_key(std::string_view key) {
@@ -269,6 +277,7 @@ GroHeader read_gro_header(std::istream& in, const std::string& file) {
                 fmt::format("one '{}' line (the first is line {})", key, previous->second),
                 "a second");
         }
+        header.fields.emplace_back(key, value);
         for (const KeySpec& spec : kKeys) {
             if (spec.key == key) {
                 spec.read(header, value, lines.location());
@@ -308,6 +317,10 @@ std::string format_gro_header(const Film& film) {
     text += "switches " + header_text(p.switches) + "\n";
     text += "program " + header_text(p.program) + "\n";
     text += "created " + header_text(p.created) + "\n";
+    if (!film.part.part.empty()) {  // a part file (rt --tile), which merge joins
+        text += "part " + header_text(film.part.part) + "\n";
+        text += "part_switches " + header_text(film.part.switches) + "\n";
+    }
     text += fmt::format("pixels {}\n", kGroPixelEncoding);
     text += "end\n";
     return text;

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <istream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "rt/image/film.h"
 
@@ -17,6 +19,9 @@ struct GroHeader {
     int first_finished_row = 0;
     DisplayMapping mapping;
     FilmProvenance provenance;
+    FilmPart part;
+    /// Every 'key value' line as read, in order, unknown keys included (merge compares them).
+    std::vector<std::pair<std::string, std::string>> fields;
     int lines = 0;            ///< header lines, the magic line and 'end' included
     std::uint64_t bytes = 0;  ///< header bytes, the newline after 'end' included
 };

@@ -138,11 +138,20 @@ void render_rows(RenderJob& job, KindCounters& counters) {
     const bool pixel_events = job.observer.wants_pixel_events();
     const bool sample_events = job.observer.wants_sample_reports();
     while (!job.stopping) {
-        const int index = job.next_row_index++;
-        if (index >= w.height()) {
-            return;
+        int y = 0;
+        if (job.settings.rows != nullptr) {
+            const std::optional<int> row = job.settings.rows->next_row();
+            if (!row) {
+                return;
+            }
+            y = *row;
+        } else {
+            const int index = job.next_row_index++;
+            if (index >= w.height()) {
+                return;
+            }
+            y = w.bottom - index;
         }
-        const int y = w.bottom - index;
         std::uint64_t samples = 0;
         for (int x = w.left; x <= w.right; ++x) {
             if (pixel_events) {

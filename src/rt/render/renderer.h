@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "rt/accel/accelerator.h"
@@ -14,10 +15,24 @@
 
 namespace rt {
 
+/// Hands out the rows to render, one at a time, to the worker threads. Without one, the renderer
+/// takes every window row from the bottom up; a cluster run (src/rt/cluster) feeds each process
+/// the rows its coordinator hands it.
+class RowSource {
+public:
+    virtual ~RowSource() = default;
+    /// The next row (a view row inside the window), or nothing when there are no more. May block
+    /// until one comes; called from several worker threads at once.
+    virtual std::optional<int> next_row() = 0;
+};
+
 struct RenderSettings {
     ShadingSettings shading;
     PixelRect window;  ///< the part of the view area to render (output matrix, -L)
     int threads = 0;   ///< 0: one per core
+    /// Null: every window row. A pixel's samples depend only on its coordinates and the seed, so
+    /// a row renders the same whichever process or thread takes it.
+    RowSource* rows = nullptr;
 };
 
 /// How a pixel was sampled (-dx).

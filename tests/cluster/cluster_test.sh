@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# rt under mpirun (docs/distributed.md), run by CTest when RT_WITH_MPI is on:
+#   cluster_test.sh BIN_DIR SOURCE_DIR CASE
+# CASE same-picture: 3 ranks write the single process's pixels, bit for bit;
+#      killed-rank: a rank killed mid-render fails the run and leaves the outputs as they were;
+#      failing-rank: a rank that cannot read the scene is named by rank 0, nothing is written;
+#      other-picture: a rank started with other switches is refused.
+set -u
+bin=$1
+source=$2
+case_name=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+mkdir scenes empty
+cp -r "$source"/scenes/. scenes/
+# A 64 x 60 window of twocubes (the cube's edge, its shadow, the checkerboard) at sample
+# resolution N: small.scn (3) takes a fraction of a second, slow.scn (12, with -Dx every sample
+# is taken) a few seconds, to be killed in the middle.
+make_scene() {
+    sed -e 's/^\$ 0 0 511 399$/$ 200 170 263 229/' -e "/^sample resolution/{n;s/.*/\$ $2/}" \
+        scenes/twocubes.scn > "scenes/$1.scn"
+}
+make_scene small 3
+make_scene slow 12
+
+mpi=(mpirun --oversubscribe)
+if [ "$(id -u)" -eq 0 ]; then
+    mpi+=(--allow-run-as-root)
+fi
+
+fail() {
+    echo "FAIL: $*"
+    exit 1
+}
+
+# The pixel bytes of a .gro: everything after the header's 'end' line.
+pixels() {
+    local end
+    end=$(grep -abo -m1 '^end$' "$1" | cut -d: -f1)
+    tail -c +$((end + 5)) "$1"
+}
+
+case $case_name in
+same-picture)
+    "$bin/rt" scenes/small --seed 3 --threads 2 --quiet --output single.png 2> /dev/null ||
+        fail "the single render failed"
+    mv small.gro single.gro
+    # One row per hand-out: the most messages, every rank's rows interleaved.
+    RT_CLUSTER_ROWS=1 "${mpi[@]}" -n 3 -x RT_CLUSTER_ROWS "$bin/rt" scenes/small --seed 3 \
+        --threads 1 --quiet --output cluster.png 2> err.txt || {
+        cat err.txt
+        fail "mpirun -n 3 failed"
+    }
+    cmp <(pixels single.gro) <(pixels small.gro) || fail "the .gro pixels differ"
+    cmp single.png cluster.png || fail "the PNGs differ"
+    [ "$(grep -c 'warning' err.txt)" -le 1 ] || fail "the warnings were printed by every rank"
+    [ "$(pixels small.gro | wc -c)" -eq $((64 * 60 * 12)) ] || fail "the .gro holds the wrong size"
+    ;;
+killed-rank)
+    echo "an earlier picture" > slow.gro
+    echo "an earlier PNG" > out.png
+    cp slow.gro before.gro
+    cp out.png before.png
+    "${mpi[@]}" -n 3 "$bin/rt" scenes/slow -Dx --threads 1 --quiet --output out.png \
+        > out.txt 2> err.txt &
+    launcher=$!
+    # Rank 1, found among mpirun's children by its MPI rank, is killed once it is rendering.
+    victim=""
+    for _ in $(seq 100); do
+        for child in $(pgrep -P "$launcher"); do
+            if tr '\0' '\n' < "/proc/$child/environ" 2> /dev/null |
+                grep -qx 'OMPI_COMM_WORLD_RANK=1'; then
+                victim=$child
+            fi
+        done
+        [ -n "$victim" ] && break
+        sleep 0.05
+    done
+    [ -n "$victim" ] || fail "rank 1 never started"
+    sleep 0.3
+    kill -KILL "$victim"
+    wait "$launcher"
+    status=$?
+    cat err.txt
+    [ "$status" -ne 0 ] || fail "mpirun exited 0 after a rank was killed"
+    grep -q 'rank 1' err.txt || fail "no message names rank 1"
+    cmp slow.gro before.gro || fail "the .gro was replaced"
+    cmp out.png before.png || fail "the PNG was replaced"
+    ;;
+failing-rank)
+    echo "an earlier picture" > small.gro
+    cp small.gro before.gro
+    # Rank 2 starts in a folder without the scene: it cannot read it.
+    "${mpi[@]}" -n 2 "$bin/rt" scenes/small --threads 1 --quiet : \
+        -n 1 --wdir "$work/empty" "$bin/rt" scenes/small --threads 1 --quiet 2> err.txt
+    status=$?
+    cat err.txt
+    [ "$status" -ne 0 ] || fail "mpirun exited 0 though rank 2 failed"
+    grep -q '^rt: rank 2 failed: .*small.scn' err.txt || fail "rank 0 does not name rank 2"
+    cmp small.gro before.gro || fail "the .gro was replaced"
+    ;;
+other-picture)
+    "${mpi[@]}" -n 2 "$bin/rt" scenes/small --threads 1 --quiet : \
+        -n 1 "$bin/rt" scenes/small -Dd --threads 1 --quiet 2> err.txt
+    status=$?
+    cat err.txt
+    [ "$status" -ne 0 ] || fail "mpirun exited 0 though rank 2 rendered another picture"
+    grep -q "^rt: rank 2 renders another picture: 'scenes/small -Dd" err.txt ||
+        fail "rank 0 does not name rank 2's switches"
+    [ ! -e small.gro ] || fail "a picture was written"
+    ;;
+*)
+    fail "unknown case $case_name"
+    ;;
+esac
+echo "PASS: $case_name"
