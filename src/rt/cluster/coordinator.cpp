@@ -178,6 +178,9 @@ Film Coordinator::render(const Scene& scene, const Accelerator& accel,
             gather(row.y, row.samples, row.pixels, 0);
             busy = true;
         }
+        if (local.failed()) {
+            (void)local.join();  // rethrows: rank 0's own rows will never come
+        }
         if (rows_gathered == rows_total_ && everyone_finished() && local.done()) {
             break;
         }

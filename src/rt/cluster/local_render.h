@@ -34,6 +34,8 @@ public:
     std::vector<FinishedRow> take_finished();
     /// Whether the renderer has returned (its queue closed and empty, or stopped).
     bool done() const { return done_; }
+    /// Whether the renderer has ended with an error (join() rethrows it).
+    bool failed() const { return done_ && error_ != nullptr; }
     /// Drops the rows not yet started; the threads finish their current row and end.
     void stop();
     /// Waits for the renderer; rethrows what it threw. The statistics are its own rows'.
