@@ -43,15 +43,21 @@ pixels() {
 
 case $case_name in
 same-picture)
-    "$bin/rt" scenes/small --seed 3 --threads 2 --quiet --output single.png 2> /dev/null ||
-        fail "the single render failed"
+    "$bin/rt" scenes/small --seed 3 --threads 2 --quiet -p --output single.png \
+        > single.txt 2> /dev/null || fail "the single render failed"
     mv small.gro single.gro
     # One row per hand-out: the most messages, every rank's rows interleaved.
     RT_CLUSTER_ROWS=1 "${mpi[@]}" -n 3 -x RT_CLUSTER_ROWS "$bin/rt" scenes/small --seed 3 \
-        --threads 1 --quiet --output cluster.png 2> err.txt || {
+        --threads 1 --quiet -p --output cluster.png > cluster.txt 2> err.txt || {
         cat err.txt
         fail "mpirun -n 3 failed"
     }
+    # -p's ray counts: every ray of every rank, the same as one process traces.
+    rays() {
+        grep -E '^  [a-z][a-z ]* +[0-9]+ +[0-9]+ ' "$1"
+    }
+    rays single.txt | grep -q '^  all ' || fail "no ray table in rt -p's output"
+    diff <(rays single.txt) <(rays cluster.txt) || fail "-p counts other rays than one process"
     cmp <(pixels single.gro) <(pixels small.gro) || fail "the .gro pixels differ"
     cmp single.png cluster.png || fail "the PNGs differ"
     [ "$(grep -c 'warning' err.txt)" -le 1 ] || fail "the warnings were printed by every rank"

@@ -12,6 +12,7 @@
 #include "rt/cluster/local_render.h"
 #include "rt/cluster/protocol.h"
 #include "rt/core/text.h"
+#include "rt/render/ray_kinds.h"
 
 #include <fmt/format.h>
 
@@ -75,6 +76,7 @@ Film Coordinator::render(const Scene& scene, const Accelerator& accel,
     int rows_gathered = 0;
     std::uint64_t samples = 0;
     std::uint64_t unrepresentable = 0;
+    KindCounters others_rays;  // the other ranks' rays, for -p
     std::string failure;
     const auto row_floats = static_cast<std::size_t>(w.width()) * 3;
 
@@ -127,8 +129,11 @@ Film Coordinator::render(const Scene& scene, const Accelerator& accel,
             }
             case kDone: {
                 std::uint64_t n = 0;
-                (void)in.get(n);
-                unrepresentable += n;
+                KindCounters rays;
+                if (in.get(n) && in.get(rays)) {
+                    unrepresentable += n;
+                    others_rays += rays;
+                }
                 finished_[static_cast<std::size_t>(m.from)] = 1;
                 break;
             }
@@ -193,7 +198,8 @@ Film Coordinator::render(const Scene& scene, const Accelerator& accel,
         throw ClusterError(failure);
     }
     const RenderStatistics own = local.join();
-    statistics.by_kind += own.by_kind;  // rank 0's rays only
+    statistics.by_kind += own.by_kind;
+    statistics.by_kind += others_rays;
     statistics.counters = statistics.by_kind.total();
     statistics.rows_done = rows_gathered;
     statistics.threads = own.threads;

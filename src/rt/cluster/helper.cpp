@@ -8,6 +8,7 @@
 #include "rt/cluster/cluster_error.h"
 #include "rt/cluster/local_render.h"
 #include "rt/cluster/protocol.h"
+#include "rt/render/ray_kinds.h"
 
 #include <fmt/format.h>
 
@@ -69,11 +70,12 @@ void Helper::render(const Scene& scene, const Accelerator& accel, const RenderSe
         }
     }
     const RenderStatistics statistics = local.join();
-    last_message(kDone, Packer().put(statistics.unrepresentable_samples).bytes);
+    last_message(kDone,
+                 Packer().put(statistics.unrepresentable_samples).put(statistics.by_kind).bytes);
 }
 
 void Helper::finish() {
-    last_message(kDone, Packer().put(std::uint64_t{0}).bytes);
+    last_message(kDone, Packer().put(std::uint64_t{0}).put(KindCounters{}).bytes);
 }
 
 void Helper::fail(const std::string& message) {

@@ -19,7 +19,8 @@ enum Tag : int {
                    ///< count 0: there are no more
     kStop = 4,     ///< 0 -> rank: stop now (another rank failed); answer with kDone
     kRow = 5,      ///< rank -> 0: a finished row: y, its samples, its pixels
-    kDone = 6,     ///< rank -> 0: finished (its last message): the unrepresentable samples
+    kDone = 6,     ///< rank -> 0: finished (its last message): the unrepresentable samples and
+                   ///< the rays it traced by kind (KindCounters), for -p
     kFailed = 7,   ///< rank -> 0: failed (its last message): the error message
 };
 
