@@ -62,6 +62,12 @@ same-picture)
     cmp single.png cluster.png || fail "the PNGs differ"
     [ "$(grep -c 'warning' err.txt)" -le 1 ] || fail "the warnings were printed by every rank"
     [ "$(pixels small.gro | wc -c)" -eq $((64 * 60 * 12)) ] || fail "the .gro holds the wrong size"
+    # A part of the picture (rt --tile) renders the same under mpirun too.
+    "$bin/rt" scenes/small --tile 2/3 --quiet 2> /dev/null || fail "the single part failed"
+    mv small.part-2-of-3.gro single-part.gro
+    "${mpi[@]}" -n 2 "$bin/rt" scenes/small --tile 2/3 --threads 1 --quiet 2> /dev/null ||
+        fail "mpirun -n 2 --tile 2/3 failed"
+    cmp <(pixels single-part.gro) <(pixels small.part-2-of-3.gro) || fail "the parts differ"
     ;;
 killed-rank)
     echo "an earlier picture" > slow.gro

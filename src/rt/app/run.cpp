@@ -144,21 +144,6 @@ void stamp(Film& film, const Options& options) {
     }
 }
 
-// --tile writes its part file and nothing else: the images come from merge.
-void check_tile_options(const Options& options) {
-    if (!options.tile) {
-        return;
-    }
-    if (options.no_gro) {
-        throw UsageError("--tile writes a part file, which -n would leave out: drop -n");
-    }
-    if (!options.outputs.empty()) {
-        throw UsageError(
-            "--tile writes only its part file: merge writes the images (merge PARTS... "
-            "--output FILE)");
-    }
-}
-
 // The folder an output goes into must exist and be writable: found out after the render, it
 // would cost the render.
 void check_output_folder(const std::filesystem::path& output) {
@@ -309,7 +294,6 @@ RunOutcome run(const Options& options, const RunConsole& console, const RenderSt
         (void)image_format_for(output);
         check_output_folder(output);
     }
-    check_tile_options(options);
     if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
         check_output_folder(gro_output_path(options));
     }

@@ -236,7 +236,23 @@ void parse_switch(std::string_view word, ArgumentCursor& cursor, Options& option
     }
 }
 
+// --tile writes its part file and nothing else: the images come from merge.
+void check_tile(const Options& options) {
+    if (!options.tile) {
+        return;
+    }
+    if (options.no_gro) {
+        throw UsageError("--tile writes a part file, which -n would leave out: drop -n");
+    }
+    if (!options.outputs.empty()) {
+        throw UsageError(
+            "--tile writes only its part file: merge writes the images (merge PARTS... "
+            "--output FILE)");
+    }
+}
+
 void check_complete(const Options& options, const Seen& seen) {
+    check_tile(options);
     if (options.early == EarlyVersion::OldVersion && options.given_switches.size() > 1) {
         throw UsageError("-O1 must be used alone, without other switches");
     }
