@@ -29,20 +29,26 @@ class Packer {
 public:
     template <typename T>
     Packer& put(const T& value) {
-        const auto* p = reinterpret_cast<const std::byte*>(&value);
-        bytes.insert(bytes.end(), p, p + sizeof(T));
-        return *this;
+        return append(&value, sizeof(T));
     }
     template <typename T>
     Packer& put_all(std::span<const T> values) {
-        const auto* p = reinterpret_cast<const std::byte*>(values.data());
-        bytes.insert(bytes.end(), p, p + values.size_bytes());
+        return append(values.data(), values.size_bytes());
+    }
+    Packer& put_text(const std::string& text) { return append(text.data(), text.size()); }
+    std::vector<std::byte> bytes;
+
+private:
+    // resize and memcpy rather than insert, which GCC 12 warns about falsely
+    // (-Wstringop-overflow).
+    Packer& append(const void* data, std::size_t size) {
+        const std::size_t at = bytes.size();
+        bytes.resize(at + size);
+        if (size > 0) {
+            std::memcpy(bytes.data() + at, data, size);
+        }
         return *this;
     }
-    Packer& put_text(const std::string& text) {
-        return put_all(std::span<const char>(text.data(), text.size()));
-    }
-    std::vector<std::byte> bytes;
 };
 
 class Unpacker {
