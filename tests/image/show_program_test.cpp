@@ -38,7 +38,7 @@ protected:
             }
         }
         film.set_first_finished_row(1);
-        film.provenance = {"twocubes", "-Dd -m2", "rt 0.1.0", "2024-01-02T03:04:05Z"};
+        film.provenance = {"twocubes", "-Dd -m2", "rt 0.1.0", "2024-01-02T03:04:05Z", "", "", ""};
         film.mapping.multiplier = 2.0;
         write_gro(film, dir_.path() / "pic.gro");
         film_ = film;

@@ -8,8 +8,10 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
+#include "rt/app/input_digest.h"
 #include "rt/app/inspection_runs.h"
 #include "rt/app/profile_report.h"
+#include "rt/app/resume.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
 #include "rt/core/diagnostics.h"
@@ -17,6 +19,7 @@
 #include "rt/image/image_writer.h"
 #include "rt/render/film_window.h"
 #include "rt/render/random_rays.h"
+#include "rt/render/ray_tree_bound.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/read/load_scene.h"
 #include "rt/scene/read/model_scene.h"
@@ -113,12 +116,30 @@ void print_colors(const Film& film, const RunConsole& console) {
     }
 }
 
-// What made the picture, and how to show it.
-void stamp(Film& film, const Options& options) {
+// What made the picture, and how to show it; with what --resume needs to render the same.
+void stamp(Film& film, const Options& options, const std::string& inputs) {
     film.mapping = options.display;
     film.provenance = {options.model.empty() ? options.scene : "--model " + options.model,
-                       join(options.given_switches), std::string("rt ") + std::string(kVersion),
-                       utc_now()};
+                       join(options.given_switches),
+                       std::string("rt ") + std::string(kVersion),
+                       utc_now(),
+                       encode_arguments(options.render_arguments),
+                       std::to_string(options.shading.sampling.seed),
+                       inputs};
+}
+
+// The files the picture goes to: the .gro (the resumed one with --resume, none with -n), then
+// every --output.
+std::vector<std::filesystem::path> output_paths(const Options& options) {
+    std::vector<std::filesystem::path> paths;
+    if (!options.resume.empty()) {
+        paths.emplace_back(options.resume);
+    } else if (!options.no_gro) {
+        paths.emplace_back(options.model.empty() ? default_gro_path(options.scene)
+                                                 : model_gro_path(options.model));
+    }
+    paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
+    return paths;
 }
 
 // The folder an output goes into must exist and be writable: found out after the render, it
@@ -141,12 +162,7 @@ void check_output_folder(const std::filesystem::path& output) {
 // Every output is attempted: one that cannot be written does not cost the others. The failures
 // are reported together, one line each, as one IoError.
 void write_outputs(const Film& film, const Options& options) {
-    std::vector<std::filesystem::path> paths;
-    if (!options.no_gro) {
-        paths.emplace_back(options.model.empty() ? default_gro_path(options.scene)
-                                                 : model_gro_path(options.model));
-    }
-    paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
+    const std::vector<std::filesystem::path> paths = output_paths(options);
     std::string failures;
     for (const std::filesystem::path& path : paths) {
         try {
@@ -157,6 +173,25 @@ void write_outputs(const Film& film, const Options& options) {
     }
     if (!failures.empty()) {
         throw IoError(failures);
+    }
+}
+
+// Where maxdepth and surfaces that both reflect and transmit (or distribute their rays) let the
+// ray tree grow past a million rays per sample, the user hears it before the render starts, with
+// the two ways out.
+void warn_of_exploding_tree(const Scene& scene, const ShadingSettings& shading,
+                            const RunConsole& console) {
+    if (shading.weight_cutoff > 0.0 || !console.warning) {
+        return;  // the user has already bounded the tree
+    }
+    const RayTreeBound bound = ray_tree_bound(scene, shading);
+    if (bound.rays_per_sample > kExplodingRayTree) {
+        console.warning(fmt::format(
+            "the ray tree may send up to {:.3g} rays per sample (maxdepth {}, and a hit can send "
+            "{:g} secondary rays): the render may take very long; lower maxdepth in the scene "
+            "header or give --cutoff W (e.g. --cutoff 0.01) to stop branches whose weight falls "
+            "below W",
+            bound.rays_per_sample, scene.header.maxdepth, bound.widest_branching));
     }
 }
 
@@ -198,14 +233,15 @@ void close_window(std::unique_ptr<PictureWindow> window, const RunConsole& conso
 
 // -doi's session and -w's wireframe, which trace nothing; true when the run is over.
 bool run_without_tracing(const Scene& scene, const Options& options, const PixelRect& window,
-                         const RunConsole& console, std::unique_ptr<PictureWindow>& shown) {
+                         const std::string& inputs, const RunConsole& console,
+                         std::unique_ptr<PictureWindow>& shown) {
     if (options.debug_octree_interactive) {
         inspect_octree(scene, options, console);
         return true;
     }
     if (options.wireframe_only) {
         Film film = wireframe_picture(scene, options, window, console);
-        stamp(film, options);
+        stamp(film, options, inputs);
         if (shown) {
             shown->board().show_film(film);
         }
@@ -252,16 +288,19 @@ std::filesystem::path model_gro_path(const std::string& model_argument) {
     return name;
 }
 
-RunOutcome run(const Options& options, const RunConsole& console) {
-    for (const std::string& output : options.outputs) {
-        // Refuse an unknown format or a folder that cannot take the file before hours of
-        // rendering.
-        (void)image_format_for(output);
-        check_output_folder(output);
-    }
-    if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
-        check_output_folder(options.model.empty() ? default_gro_path(options.scene)
-                                                  : model_gro_path(options.model));
+namespace {
+
+// The run itself; `resume` is the interrupted picture to complete, or null.
+RunOutcome render_run(const Options& options, const RunConsole& console, const Film* resume) {
+    // Refuse an unknown format or a folder that cannot take the file before hours of rendering
+    // (-doi and -r write no .gro).
+    const bool writes_gro = !options.debug_octree_interactive && !options.random_rays;
+    for (const std::filesystem::path& output : output_paths(options)) {
+        if (writes_gro || std::find(options.outputs.begin(), options.outputs.end(),
+                                    output.string()) != options.outputs.end()) {
+            (void)image_format_for(output);
+            check_output_folder(output);
+        }
     }
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
@@ -276,6 +315,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     PhaseTimes times;
     auto phase = Clock::now();
     Scene scene = read_scene(options, diagnostics);
+    const std::string inputs = input_digest(scene);
     times.load_seconds = seconds_since(phase);
 
     RenderSettings settings;
@@ -283,8 +323,16 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
+    settings.stop_now = console.stop_now;
+    if (resume != nullptr) {
+        check_resumable(*resume, inputs, scene.view.width, scene.view.height, settings.window);
+        settings.resume = resume;
+    }
+    if (!options.wireframe_only && !options.debug_octree_interactive && !options.random_rays) {
+        warn_of_exploding_tree(scene, settings.shading, console);
+    }
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
-    if (run_without_tracing(scene, options, settings.window, console, shown)) {
+    if (run_without_tracing(scene, options, settings.window, inputs, console, shown)) {
         return RunOutcome::Finished;
     }
 
@@ -337,7 +385,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
                         "within the float range; they were counted as black",
                         statistics.unrepresentable_samples));
     }
-    stamp(film, options);
+    stamp(film, options, inputs);
     if (options.debug_color) {
         print_colors(film, console);
     }
@@ -347,6 +395,16 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     print_profile(statistics.by_kind);
     close_window(std::move(shown), console);
     return statistics.interrupted ? RunOutcome::Interrupted : RunOutcome::Finished;
+}
+
+}  // namespace
+
+RunOutcome run(const Options& options, const RunConsole& console) {
+    if (options.resume.empty()) {
+        return render_run(options, console, nullptr);
+    }
+    const ResumePlan plan = plan_resume(options);
+    return render_run(plan.options, console, &plan.done);
 }
 
 }  // namespace rt

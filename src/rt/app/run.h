@@ -2,6 +2,7 @@
 // parses the command line, calls this and turns errors into messages and exit codes.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -25,6 +26,9 @@ struct RunConsole {
     /// starts, then after every row. May be empty.
     std::function<void(int rows_done, int rows_total, std::uint64_t samples)> progress;
     std::function<bool()> should_stop;  ///< Ctrl-C; may be empty
+    /// Set by Ctrl-C: the render polls it inside the ray tree and stops within a fraction of a
+    /// second. May be null.
+    const std::atomic<bool>* stop_now = nullptr;
     /// -doi: where the octree session reads its commands and writes its answers (rt: standard
     /// input and output), and the prompt before each command (empty when no one types them).
     std::istream* commands = nullptr;

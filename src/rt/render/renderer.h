@@ -3,6 +3,7 @@
 // the thread count.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <span>
 
@@ -18,6 +19,12 @@ struct RenderSettings {
     ShadingSettings shading;
     PixelRect window;  ///< the part of the view area to render (output matrix, -L)
     int threads = 0;   ///< 0: one per core
+    /// Set from elsewhere (a signal handler) to stop at once: the ray trees in progress are cut
+    /// short and their rows abandoned, the finished rows kept. May be null.
+    const std::atomic<bool>* stop_now = nullptr;
+    /// An interrupted render of the same scene and settings (--resume): its finished rows are
+    /// taken as they are and only the rest are rendered. May be null.
+    const Film* resume = nullptr;
 };
 
 /// How a pixel was sampled (-dx).
@@ -70,8 +77,9 @@ struct RenderStatistics {
     std::uint64_t unrepresentable_samples = 0;
 };
 
-/// Renders the window into a new film. If the observer asks to stop, the rows finished so far
-/// (a contiguous run from the bottom) are kept and the film says where they begin.
+/// Renders the window into a new film. If the observer asks to stop, or settings.stop_now is set,
+/// the rows finished so far (a contiguous run from the bottom) are kept and the film says where
+/// they begin.
 Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
             RenderObserver& observer, RenderStatistics& statistics);
 
