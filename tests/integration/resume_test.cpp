@@ -88,6 +88,10 @@ TEST(InterruptedRender, SigtermExits143AndResumeCompletesItBitForBit) {
     EXPECT_NE(header.provenance.arguments.find("glass"), std::string::npos);
     EXPECT_EQ(header.provenance.seed, "0");
     EXPECT_EQ(header.provenance.inputs.rfind("fnv1a64:", 0), 0U) << header.provenance.inputs;
+    const ProgramResult info = run_program("show", {"part.gro", "--info"}, dir.path());
+    EXPECT_NE(info.out.find("resume    rt --resume FILE.gro renders the missing rows"),
+              std::string::npos)
+        << info.out;
 
     // Resumed on three threads, from the recorded scene and switches.
     const ProgramResult resumed = run_program(

@@ -30,6 +30,16 @@ std::string header_summary(const GroHeader& header) {
                         header.provenance.switches.empty() ? "(none)" : header.provenance.switches);
     text += fmt::format("program   {}\n", or_unknown(header.provenance.program));
     text += fmt::format("created   {}\n", or_unknown(header.provenance.created));
+    const FilmProvenance& p = header.provenance;
+    if (!p.arguments.empty()) {
+        text += fmt::format("seed      {}\n", p.seed);
+        text += fmt::format("inputs    {}\n", p.inputs);
+    }
+    if (!complete) {
+        text += p.arguments.empty()
+                    ? "resume    not possible: the file does not record what rendered it\n"
+                    : "resume    rt --resume FILE.gro renders the missing rows\n";
+    }
     return text;
 }
 
