@@ -224,6 +224,17 @@ std::unique_ptr<PictureWindow> open_window(const Scene& scene, const Options& op
     return shown;
 }
 
+// The rows an interrupted render finished, in the window (--resume).
+void show_finished_rows(const Film& film, PictureBoard& board) {
+    const PixelRect& w = film.window();
+    const auto row_floats = static_cast<std::size_t>(w.width()) * 3;
+    for (int y = std::max(w.top, film.first_finished_row()); y <= w.bottom; ++y) {
+        board.show_row(w.left, y,
+                       std::span<const float>(film.data())
+                           .subspan(static_cast<std::size_t>(y - w.top) * row_floats, row_floats));
+    }
+}
+
 // The outputs are written: the window stays until the viewer is done with it.
 void close_window(std::unique_ptr<PictureWindow> window, const RunConsole& console) {
     if (window && !window->closed() && console.keep_window_open) {
@@ -332,6 +343,9 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
         warn_of_exploding_tree(scene, settings.shading, console);
     }
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
+    if (shown && resume != nullptr) {
+        show_finished_rows(*resume, shown->board());  // over the wireframe, as if just drawn
+    }
     if (run_without_tracing(scene, options, settings.window, inputs, console, shown)) {
         return RunOutcome::Finished;
     }
