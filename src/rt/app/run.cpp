@@ -301,10 +301,9 @@ std::filesystem::path model_gro_path(const std::string& model_argument) {
 
 namespace {
 
-// The run itself; `resume` is the interrupted picture to complete, or null.
-RunOutcome render_run(const Options& options, const RunConsole& console, const Film* resume) {
-    // Refuse an unknown format or a folder that cannot take the file before hours of rendering
-    // (-doi and -r write no .gro).
+// Refuses an unknown format or a folder that cannot take the file before hours of rendering
+// (-doi and -r write no .gro, only the --output files are checked).
+void check_outputs(const Options& options) {
     const bool writes_gro = !options.debug_octree_interactive && !options.random_rays;
     for (const std::filesystem::path& output : output_paths(options)) {
         if (writes_gro || std::find(options.outputs.begin(), options.outputs.end(),
@@ -313,6 +312,45 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
             check_output_folder(output);
         }
     }
+}
+
+// The settings of the render, the scene prepared for them (-E, -K, ...); with --resume, once the
+// inputs are checked to be the interrupted render's.
+RenderSettings render_settings(Scene& scene, const Options& options, const RunConsole& console,
+                               const Film* resume, const std::string& inputs) {
+    RenderSettings settings;
+    settings.shading = run_shading(options);
+    prepare_scene(scene, options, settings.shading);
+    settings.window = film_window(scene.view.window, options.start_line);
+    settings.threads = options.threads;
+    settings.stop_now = console.stop_now;
+    if (resume != nullptr) {
+        check_resumable(*resume, inputs, scene.view.width, scene.view.height, settings.window);
+        settings.resume = resume;
+    }
+    if (!options.wireframe_only && !options.debug_octree_interactive && !options.random_rays) {
+        warn_of_exploding_tree(scene, settings.shading, console);
+    }
+    return settings;
+}
+
+// What the render found on its way: the strike check's summary, samples counted as black.
+void report_render(const AcceleratorStack& stack, const RenderStatistics& statistics,
+                   const RunConsole& console) {
+    if (stack.strike_check() != nullptr) {
+        console.note(stack.strike_check()->summary());
+    }
+    if (statistics.unrepresentable_samples > 0) {
+        console.warning(
+            fmt::format("{} samples had an intensity that is not a finite number "
+                        "within the float range; they were counted as black",
+                        statistics.unrepresentable_samples));
+    }
+}
+
+// The run itself; `resume` is the interrupted picture to complete, or null.
+RunOutcome render_run(const Options& options, const RunConsole& console, const Film* resume) {
+    check_outputs(options);
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
     diagnostics.set_note_sink(console.note);
@@ -329,19 +367,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
     const std::string inputs = input_digest(scene);
     times.load_seconds = seconds_since(phase);
 
-    RenderSettings settings;
-    settings.shading = run_shading(options);
-    prepare_scene(scene, options, settings.shading);
-    settings.window = film_window(scene.view.window, options.start_line);
-    settings.threads = options.threads;
-    settings.stop_now = console.stop_now;
-    if (resume != nullptr) {
-        check_resumable(*resume, inputs, scene.view.width, scene.view.height, settings.window);
-        settings.resume = resume;
-    }
-    if (!options.wireframe_only && !options.debug_octree_interactive && !options.random_rays) {
-        warn_of_exploding_tree(scene, settings.shading, console);
-    }
+    const RenderSettings settings = render_settings(scene, options, console, resume, inputs);
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
     if (shown && resume != nullptr) {
         show_finished_rows(*resume, shown->board());  // over the wireframe, as if just drawn
@@ -390,15 +416,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
     }
     Film film = render(scene, *accel, settings, observer, statistics);
     times.trace_seconds = seconds_since(phase);
-    if (stack.strike_check() != nullptr) {
-        console.note(stack.strike_check()->summary());
-    }
-    if (statistics.unrepresentable_samples > 0) {
-        console.warning(
-            fmt::format("{} samples had an intensity that is not a finite number "
-                        "within the float range; they were counted as black",
-                        statistics.unrepresentable_samples));
-    }
+    report_render(stack, statistics, console);
     stamp(film, options, inputs);
     if (options.debug_color) {
         print_colors(film, console);
