@@ -40,17 +40,18 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",        "-w",     "-m",       "-tv",       "-c",      "-od",        "-oo",
-        "-ol",       "-on",    "-of",      "-op",       "-ss",     "-p",         "-r",
-        "-Sp",       "-Sg",    "-Stg",     "-Stb",      "-R",      "-Wr",        "-Wc",
-        "-Wt",       "-A",     "-T",       "-Co",       "-Ci",     "-Cf",        "-Dx",
-        "-De",       "-Dd",    "-Dt",      "-Da",       "-Dl",     "-Ds",        "-Dr",
-        "-Df",       "-Dp",    "-Db",      "-Po",       "-Pt",     "-Ot",        "-Oi",
-        "-Of",       "-O1",    "-K",       "-I",        "-L",      "-E",         "-F",
-        "-Xp",       "-Xr",    "-M",       "-V",        "-dc",     "-ds",        "-dsp",
-        "-dso",      "-dl",    "-doo",     "-doi",      "-dof",    "-df",        "-dd",
-        "-dx",       "-de",    "--output", "--model",   "--help",  "--version",  "--seed",
-        "--threads", "--tile", "--accel",  "--zbuffer", "--quiet", "--no-window"};
+        "-n",     "-w",       "-m",        "-tv",      "-c",        "-od",     "-oo",
+        "-ol",    "-on",      "-of",       "-op",      "-ss",       "-p",      "-r",
+        "-Sp",    "-Sg",      "-Stg",      "-Stb",     "-R",        "-Wr",     "-Wc",
+        "-Wt",    "-A",       "-T",        "-Co",      "-Ci",       "-Cf",     "-Dx",
+        "-De",    "-Dd",      "-Dt",       "-Da",      "-Dl",       "-Ds",     "-Dr",
+        "-Df",    "-Dp",      "-Db",       "-Po",      "-Pt",       "-Ot",     "-Oi",
+        "-Of",    "-O1",      "-K",        "-I",       "-L",        "-E",      "-F",
+        "-Xp",    "-Xr",      "-M",        "-V",       "-dc",       "-ds",     "-dsp",
+        "-dso",   "-dl",      "-doo",      "-doi",     "-dof",      "-df",     "-dd",
+        "-dx",    "-de",      "--output",  "--resume", "--model",   "--help",  "--version",
+        "--seed", "--cutoff", "--threads", "--tile",   "--accel",   "--zbuffer", "--quiet",
+        "--no-window"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -314,7 +315,9 @@ std::map<std::string_view, Expectation> expectations() {
          {{},
           [](const Options& o) { return o.outputs == std::vector<std::string>{"twocubes.png"}; }}},
         {"--model", {{}, [](const Options& o) { return o.model == "scenes/models/bunny.ply"; }}},
+        {"--resume", {{}, [](const Options& o) { return o.resume == "twocubes.gro"; }}},
         {"--seed", {{}, [](const Options& o) { return o.shading.sampling.seed == 7; }}},
+        {"--cutoff", {{}, [](const Options& o) { return o.shading.weight_cutoff == 0.01; }}},
         {"--threads", {{}, [](const Options& o) { return o.threads == 2; }}},
         {"--tile",
          {{},

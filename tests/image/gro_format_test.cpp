@@ -55,7 +55,7 @@ TEST(GroFormat, HeaderIsReadableTextAndPixelsAreLittleEndian) {
     Film film(2, 1, PixelRect{0, 0, 1, 0});
     film.set_pixel(0, 0, Rgb{1.0, 0.0, -2.0});
     film.set_first_finished_row(0);
-    film.provenance = {"a\nb", "", "rt", "t"};  // a newline must not break the header
+    film.provenance = {"a\nb", "", "rt", "t", "", "", ""};  // a newline must not break the header
     write_gro(film, dir.path() / "le.gro");
     const std::string bytes = test::read_text(dir.path() / "le.gro");
     const std::string header =

@@ -26,7 +26,7 @@ inline Film sample_film(int first_finished_row) {
     film.data()[3] = 1.0F / 3.0F;
     film.set_first_finished_row(first_finished_row);
     film.mapping = {2.5, false};
-    film.provenance = {"twocubes", "-Dd -m2.5 -c", "rt 0.1.0", "2024-05-06T07:08:09Z"};
+    film.provenance = {"twocubes", "-Dd -m2.5 -c", "rt 0.1.0", "2024-05-06T07:08:09Z", "", "", ""};
     return film;
 }
 

@@ -38,7 +38,7 @@ protected:
             }
         }
         film.set_first_finished_row(1);
-        film.provenance = {"twocubes", "-Dd -m2", "rt 0.1.0", "2024-01-02T03:04:05Z"};
+        film.provenance = {"twocubes", "-Dd -m2", "rt 0.1.0", "2024-01-02T03:04:05Z", "", "", ""};
         film.mapping.multiplier = 2.0;
         write_gro(film, dir_.path() / "pic.gro");
         film_ = film;
@@ -78,6 +78,8 @@ TEST_F(ShowProgram, InfoDescribesThePicture) {
     EXPECT_NE(o.out.find("-Dd -m2"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("rt 0.1.0"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("2024-01-02T03:04:05Z"), std::string::npos) << o.out;
+    // Unfinished, but written without the record a resume needs.
+    EXPECT_NE(o.out.find("resume    not possible"), std::string::npos) << o.out;
 }
 
 // A 16384 x 16384 picture holds 3 GiB of pixels: --info reads its header and the file's size only.

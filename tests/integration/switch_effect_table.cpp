@@ -641,6 +641,10 @@ const std::vector<OtherSwitch>& other_switches() {
          "OctreeSession tests and RtOctreeSession: a session on standard input, no picture"},
         {"--output", "every row here: the PPM each picture is read from"},
         {"--model", "ModelProgram tests: a scene of its own, made around the model"},
+        {"--resume",
+         "InterruptedRender.SigtermExits143AndResumeCompletesItBitForBit: the interrupted "
+         "picture completed, the same as an uninterrupted one"},
+        {"--cutoff", "RayTreeCutoff tests: far fewer rays on nested glass; at 0 the same picture"},
         {"--help", "RtProgram.HelpAndVersion"},
         {"--version", "RtProgram.HelpAndVersion"},
         {"--quiet", "RtProgram tests: nothing printed"},

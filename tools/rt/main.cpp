@@ -80,6 +80,7 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
         };
     }
     console.should_stop = rt::interrupt_requested;
+    console.stop_now = &rt::interrupt_flag();
     // -doi reads its commands here; a prompt only for a person typing them.
     console.commands = &std::cin;
     console.answers = &std::cout;

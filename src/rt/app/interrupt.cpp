@@ -10,6 +10,7 @@ namespace rt {
 namespace {
 
 std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 std::atomic<int> g_signal{0};  // the first signal received
 
 extern "C" void on_interrupt(int signal) {
@@ -30,6 +31,10 @@ void install_interrupt_handler() {
 
 bool interrupt_requested() {
     return g_interrupted.load();
+}
+
+const std::atomic<bool>& interrupt_flag() {
+    return g_interrupted;
 }
 
 int interrupt_signal() {

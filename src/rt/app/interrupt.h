@@ -2,10 +2,14 @@
 // second ends the program at once.
 #pragma once
 
+#include <atomic>
+
 namespace rt {
 
 void install_interrupt_handler();
 bool interrupt_requested();
+/// The flag the first signal sets, for a render to poll cheaply wherever it is.
+const std::atomic<bool>& interrupt_flag();
 /// The signal that asked to stop (SIGINT or SIGTERM); 0 if none did.
 int interrupt_signal();
 

@@ -64,11 +64,13 @@ struct Options {
     bool quiet = false;         ///< --quiet: no progress, no notes
     int threads = 0;            ///< --threads (0: all cores)
     bool no_window = false;     ///< --no-window: never open a window, even on a display
+    std::string resume;         ///< --resume FILE.gro: continue that interrupted render
 
     /// The switches exactly as given (not the scene, not long options), for the .gro header.
     std::vector<std::string> given_switches;
-    /// The long options exactly as given (--seed 7, --accel bvh, ...), for a part file's header.
-    std::vector<std::string> given_long_options;
+    /// The scene and every switch that decides the picture, each as its words on the command
+    /// line ({"-m", "2.0"}, {"--seed=7"}): what a .gro records for --resume.
+    std::vector<std::vector<std::string>> render_arguments;
 };
 
 }  // namespace rt

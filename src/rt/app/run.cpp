@@ -8,8 +8,10 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
+#include "rt/app/input_digest.h"
 #include "rt/app/inspection_runs.h"
 #include "rt/app/profile_report.h"
+#include "rt/app/resume.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
 #include "rt/app/version.h"
@@ -19,6 +21,7 @@
 #include "rt/image/picture_parts.h"
 #include "rt/render/film_window.h"
 #include "rt/render/random_rays.h"
+#include "rt/render/ray_tree_bound.h"
 #include "rt/render/renderer.h"
 #include "rt/scene/read/load_scene.h"
 #include "rt/scene/read/model_scene.h"
@@ -115,33 +118,33 @@ void print_colors(const Film& film, const RunConsole& console) {
     }
 }
 
-}  // namespace
-
-std::string picture_switches(const Options& options) {
-    std::vector<std::string> words = options.given_switches;
-    for (const std::string& option : options.given_long_options) {
-        // "--seed 7" or "--seed=7": the spelling ends at the space or the '='.
-        const SwitchSpec* spec = match_switch(option.substr(0, option.find_first_of(" =")));
-        const std::string_view spelling = spec != nullptr ? spec->spelling : "";
-        if (spelling != "--tile" && spelling != "--output" && spelling != "--threads" &&
-            spelling != "--quiet" && spelling != "--no-window") {
-            words.push_back(option);
-        }
-    }
-    return join(words);
-}
-
-namespace {
-
-// What made the picture, and how to show it.
-void stamp(Film& film, const Options& options) {
+// What made the picture, and how to show it; with what --resume and merge need to check that
+// they join the same render.
+void stamp(Film& film, const Options& options, const std::string& inputs) {
     film.mapping = options.display;
     film.provenance = {options.model.empty() ? options.scene : "--model " + options.model,
-                       join(options.given_switches), std::string("rt ") + std::string(kVersion),
-                       utc_now()};
+                       join(options.given_switches),
+                       std::string("rt ") + std::string(kVersion),
+                       utc_now(),
+                       encode_arguments(options.render_arguments),
+                       std::to_string(options.shading.sampling.seed),
+                       inputs};
     if (options.tile) {
-        film.part = {format_part_line(*options.tile), picture_switches(options)};
+        film.part = {format_part_line(*options.tile)};
     }
+}
+
+// The files the picture goes to: the .gro (the resumed one with --resume, the part file with
+// --tile, none with -n), then every --output.
+std::vector<std::filesystem::path> output_paths(const Options& options) {
+    std::vector<std::filesystem::path> paths;
+    if (!options.resume.empty()) {
+        paths.emplace_back(options.resume);
+    } else if (!options.no_gro) {
+        paths.emplace_back(gro_output_path(options));
+    }
+    paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
+    return paths;
 }
 
 // The folder an output goes into must exist and be writable: found out after the render, it
@@ -164,11 +167,7 @@ void check_output_folder(const std::filesystem::path& output) {
 // Every output is attempted: one that cannot be written does not cost the others. The failures
 // are reported together, one line each, as one IoError.
 void write_outputs(const Film& film, const Options& options) {
-    std::vector<std::filesystem::path> paths;
-    if (!options.no_gro) {
-        paths.emplace_back(gro_output_path(options));
-    }
-    paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
+    const std::vector<std::filesystem::path> paths = output_paths(options);
     std::string failures;
     for (const std::filesystem::path& path : paths) {
         try {
@@ -179,6 +178,25 @@ void write_outputs(const Film& film, const Options& options) {
     }
     if (!failures.empty()) {
         throw IoError(failures);
+    }
+}
+
+// Where maxdepth and surfaces that both reflect and transmit (or distribute their rays) let the
+// ray tree grow past a million rays per sample, the user hears it before the render starts, with
+// the two ways out.
+void warn_of_exploding_tree(const Scene& scene, const ShadingSettings& shading,
+                            const RunConsole& console) {
+    if (shading.weight_cutoff > 0.0 || !console.warning) {
+        return;  // the user has already bounded the tree
+    }
+    const RayTreeBound bound = ray_tree_bound(scene, shading);
+    if (bound.rays_per_sample > kExplodingRayTree) {
+        console.warning(fmt::format(
+            "the ray tree may send up to {:.3g} rays per sample (maxdepth {}, and a hit can send "
+            "{:g} secondary rays): the render may take very long; lower maxdepth in the scene "
+            "header or give --cutoff W (e.g. --cutoff 0.01) to stop branches whose weight falls "
+            "below W",
+            bound.rays_per_sample, scene.header.maxdepth, bound.widest_branching));
     }
 }
 
@@ -211,6 +229,17 @@ std::unique_ptr<PictureWindow> open_window(const Scene& scene, const Options& op
     return shown;
 }
 
+// The rows an interrupted render finished, in the window (--resume).
+void show_finished_rows(const Film& film, PictureBoard& board) {
+    const PixelRect& w = film.window();
+    const auto row_floats = static_cast<std::size_t>(w.width()) * 3;
+    for (int y = std::max(w.top, film.first_finished_row()); y <= w.bottom; ++y) {
+        board.show_row(w.left, y,
+                       std::span<const float>(film.data())
+                           .subspan(static_cast<std::size_t>(y - w.top) * row_floats, row_floats));
+    }
+}
+
 // The outputs are written: the window stays until the viewer is done with it.
 void close_window(std::unique_ptr<PictureWindow> window, const RunConsole& console) {
     if (window && !window->closed() && console.keep_window_open) {
@@ -220,14 +249,15 @@ void close_window(std::unique_ptr<PictureWindow> window, const RunConsole& conso
 
 // -doi's session and -w's wireframe, which trace nothing; true when the run is over.
 bool run_without_tracing(const Scene& scene, const Options& options, const PixelRect& window,
-                         const RunConsole& console, std::unique_ptr<PictureWindow>& shown) {
+                         const std::string& inputs, const RunConsole& console,
+                         std::unique_ptr<PictureWindow>& shown) {
     if (options.debug_octree_interactive) {
         inspect_octree(scene, options, console);
         return true;
     }
     if (options.wireframe_only) {
         Film film = wireframe_picture(scene, options, window, console);
-        stamp(film, options);
+        stamp(film, options, inputs);
         if (shown) {
             shown->board().show_film(film);
         }
@@ -287,16 +317,62 @@ std::filesystem::path gro_output_path(const Options& options) {
     return options.tile ? part_path(gro, *options.tile) : gro;
 }
 
-RunOutcome run(const Options& options, const RunConsole& console, const RenderStep& step) {
-    for (const std::string& output : options.outputs) {
-        // Refuse an unknown format or a folder that cannot take the file before hours of
-        // rendering.
-        (void)image_format_for(output);
-        check_output_folder(output);
+namespace {
+
+// Refuses an unknown format or a folder that cannot take the file before hours of rendering
+// (-doi and -r write no .gro, only the --output files are checked).
+void check_outputs(const Options& options) {
+    const bool writes_gro = !options.debug_octree_interactive && !options.random_rays;
+    for (const std::filesystem::path& output : output_paths(options)) {
+        if (writes_gro || std::find(options.outputs.begin(), options.outputs.end(),
+                                    output.string()) != options.outputs.end()) {
+            (void)image_format_for(output);
+            check_output_folder(output);
+        }
     }
-    if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
-        check_output_folder(gro_output_path(options));
+}
+
+// The settings of the render, the scene prepared for them (-E, -K, ...); with --resume, once the
+// inputs are checked to be the interrupted render's.
+RenderSettings render_settings(Scene& scene, const Options& options, const RunConsole& console,
+                               const Film* resume, const std::string& inputs) {
+    RenderSettings settings;
+    settings.shading = run_shading(options);
+    prepare_scene(scene, options, settings.shading);
+    settings.window = film_window(scene.view.window, options.start_line);
+    if (options.tile) {
+        settings.window = part_window(settings.window, *options.tile);
     }
+    settings.threads = options.threads;
+    settings.stop_now = console.stop_now;
+    if (resume != nullptr) {
+        check_resumable(*resume, inputs, scene.view.width, scene.view.height, settings.window);
+        settings.resume = resume;
+    }
+    if (!options.wireframe_only && !options.debug_octree_interactive && !options.random_rays) {
+        warn_of_exploding_tree(scene, settings.shading, console);
+    }
+    return settings;
+}
+
+// What the render found on its way: the strike check's summary, samples counted as black.
+void report_render(const AcceleratorStack& stack, const RenderStatistics& statistics,
+                   const RunConsole& console) {
+    if (stack.strike_check() != nullptr) {
+        console.note(stack.strike_check()->summary());
+    }
+    if (statistics.unrepresentable_samples > 0) {
+        console.warning(
+            fmt::format("{} samples had an intensity that is not a finite number "
+                        "within the float range; they were counted as black",
+                        statistics.unrepresentable_samples));
+    }
+}
+
+// The run itself; `resume` is the interrupted picture to complete, or null.
+RunOutcome render_run(const Options& options, const RunConsole& console, const Film* resume,
+                      const RenderStep& step) {
+    check_outputs(options);
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
     diagnostics.set_note_sink(console.note);
@@ -310,18 +386,15 @@ RunOutcome run(const Options& options, const RunConsole& console, const RenderSt
     PhaseTimes times;
     auto phase = Clock::now();
     Scene scene = read_scene(options, diagnostics);
+    const std::string inputs = input_digest(scene);
     times.load_seconds = seconds_since(phase);
 
-    RenderSettings settings;
-    settings.shading = run_shading(options);
-    prepare_scene(scene, options, settings.shading);
-    settings.window = film_window(scene.view.window, options.start_line);
-    if (options.tile) {
-        settings.window = part_window(settings.window, *options.tile);
-    }
-    settings.threads = options.threads;
+    const RenderSettings settings = render_settings(scene, options, console, resume, inputs);
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
-    if (run_without_tracing(scene, options, settings.window, console, shown)) {
+    if (shown && resume != nullptr) {
+        show_finished_rows(*resume, shown->board());  // over the wireframe, as if just drawn
+    }
+    if (run_without_tracing(scene, options, settings.window, inputs, console, shown)) {
         return RunOutcome::Finished;
     }
 
@@ -370,16 +443,8 @@ RunOutcome run(const Options& options, const RunConsole& console, const RenderSt
     }
     Film film = std::move(*rendered);
     times.trace_seconds = seconds_since(phase);
-    if (stack.strike_check() != nullptr) {
-        console.note(stack.strike_check()->summary());
-    }
-    if (statistics.unrepresentable_samples > 0) {
-        console.warning(
-            fmt::format("{} samples had an intensity that is not a finite number "
-                        "within the float range; they were counted as black",
-                        statistics.unrepresentable_samples));
-    }
-    stamp(film, options);
+    report_render(stack, statistics, console);
+    stamp(film, options, inputs);
     if (options.debug_color) {
         print_colors(film, console);
     }
@@ -389,6 +454,20 @@ RunOutcome run(const Options& options, const RunConsole& console, const RenderSt
     print_profile(statistics.by_kind);
     close_window(std::move(shown), console);
     return statistics.interrupted ? RunOutcome::Interrupted : RunOutcome::Finished;
+}
+
+}  // namespace
+
+RunOutcome run(const Options& options, const RunConsole& console, const RenderStep& step) {
+    if (options.resume.empty()) {
+        return render_run(options, console, nullptr, step);
+    }
+    if (step) {
+        // The finished rows are in one file on one machine; the ranks would render them again.
+        throw UsageError("--resume completes a picture on one process: run it without mpirun");
+    }
+    const ResumePlan plan = plan_resume(options);
+    return render_run(plan.options, console, &plan.done, step);
 }
 
 }  // namespace rt

@@ -2,6 +2,7 @@
 // parses the command line, calls this and turns errors into messages and exit codes.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -27,6 +28,9 @@ struct RunConsole {
     /// starts, then after every row. May be empty.
     std::function<void(int rows_done, int rows_total, std::uint64_t samples)> progress;
     std::function<bool()> should_stop;  ///< Ctrl-C; may be empty
+    /// Set by Ctrl-C: the render polls it inside the ray tree and stops within a fraction of a
+    /// second. May be null.
+    const std::atomic<bool>* stop_now = nullptr;
     /// -doi: where the octree session reads its commands and writes its answers (rt: standard
     /// input and output), and the prompt before each command (empty when no one types them).
     std::istream* commands = nullptr;
@@ -57,11 +61,6 @@ std::filesystem::path part_path(const std::filesystem::path& gro, PicturePart pa
 
 /// The .gro a run writes: the scene's (or the model's) name, or with --tile its part file.
 std::filesystem::path gro_output_path(const Options& options);
-
-/// The switches that decide the pixels, long options included: every switch but --tile and those
-/// that only say where the outputs go or how the run looks (--output, --threads, --quiet,
-/// --no-window). A part file's header holds them, so that merge joins only parts of one render.
-std::string picture_switches(const Options& options);
 
 /// How a run renders its film once the scene and the accelerator are ready. By default the
 /// renderer's render() on this process's threads; a cluster run (src/rt/cluster) shares the rows

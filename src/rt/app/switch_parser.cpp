@@ -216,9 +216,11 @@ void parse_switch(std::string_view word, ArgumentCursor& cursor, Options& option
         unknown_switch(word, true);
     }
     std::string verbatim(word);
+    std::vector<std::string> words{std::string(word)};
     if (!glued && takes_separate(spec.form) && !cursor.done()) {
         text = cursor.take();
         verbatim += cat({" ", text});
+        words.emplace_back(text);
     }
     const SwitchArgument argument = read_argument(spec, text);
     check_combination(spec, seen);
@@ -228,8 +230,9 @@ void parse_switch(std::string_view word, ArgumentCursor& cursor, Options& option
     }
     if (!spec.is_long_option()) {
         options.given_switches.push_back(verbatim);
-    } else {
-        options.given_long_options.push_back(verbatim);
+    }
+    if (spec.recorded) {
+        options.render_arguments.push_back(std::move(words));
     }
     if (spec.status == Status::NotYet && seen.not_yet == nullptr) {
         seen.not_yet = &spec;
@@ -255,6 +258,9 @@ void check_complete(const Options& options, const Seen& seen) {
     check_tile(options);
     if (options.early == EarlyVersion::OldVersion && options.given_switches.size() > 1) {
         throw UsageError("-O1 must be used alone, without other switches");
+    }
+    if (!options.resume.empty() && seen.scenes.empty() && options.model.empty()) {
+        return;  // the .gro names the scene
     }
     if (!options.model.empty()) {
         if (!seen.scenes.empty()) {
@@ -312,6 +318,9 @@ Options parse_command_line(const std::vector<std::string>& args) {
     }
     check_complete(options, seen);
     options.scene = seen.scenes.empty() ? std::string() : seen.scenes[0];
+    if (!options.scene.empty()) {
+        options.render_arguments.insert(options.render_arguments.begin(), {options.scene});
+    }
     if (seen.not_yet != nullptr) {
         throw NotImplementedError(
             cat({seen.not_yet->spelling, ": ", seen.not_yet->feature, " is not implemented yet"}));

@@ -27,6 +27,7 @@ using enum Status;
 constexpr Range kPositive{0.0, 0.0, true, false, false};
 constexpr Range kNonNegative{0.0, 0.0, false, false, false};
 constexpr Range kProbability{0.0, 1.0, true, true, true};
+constexpr Range kWeight{0.0, 1.0, false, false, true};
 constexpr Range kAngle{0.0, std::numbers::pi, true, false, true};
 constexpr Range kMicrofacetSlope{kLeastMicrofacetSlope, 0.0, false, false, false};
 
@@ -432,7 +433,16 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Also write the picture to FILE (.gro, .exr, .png or .ppm)",
      .details = "Repeatable; the format follows the extension. .gro and .exr keep the linear "
                 "intensities (32-bit floats); .png and .ppm the 8-bit picture.", .section = "new",
-     .example = "--output twocubes.png"},
+     .example = "--output twocubes.png", .recorded = false},
+    {.spelling = "--resume", .form = Text, .topic = Program, .first = {"FILE.gro", {}},
+     .apply = [](Options& o, A a) { o.resume = a.text; },
+     .summary = "Continue the interrupted render FILE.gro",
+     .details = "Renders the rows FILE.gro lacks with the scene, switches and seed its header "
+                "records, and writes it back complete: the same picture, bit for bit, as a "
+                "render that was never interrupted. Refused if the scene's files have changed or "
+                "if a scene or switches are given that differ from the recorded ones (none may be "
+                "given: the recorded ones are used). Run it in the folder the render started in.",
+     .section = "new", .example = "--resume twocubes.gro", .recorded = false},
     {.spelling = "--model", .form = Text, .topic = Program, .first = {"FILE", {}},
      .apply = [](Options& o, A a) { o.model = a.text; },
      .summary = "Render the model FILE (.obj, .ply, .stl, .gltf, .off, ...) without a scene",
@@ -441,25 +451,34 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "switch applies; -Po or -Pt smooth-shade the model. The picture is FILE's stem "
                 "with .gro.", .section = "new", .example = "--model scenes/models/bunny.ply"},
     {.spelling = "--help", .topic = Program, .apply = [](Options& o, A) { o.show_help = true; },
-     .summary = "Print this help and stop", .section = "new", .example = "--help"},
+     .summary = "Print this help and stop", .section = "new", .example = "--help", .recorded = false},
     {.spelling = "--version", .topic = Program,
      .apply = [](Options& o, A) { o.show_version = true; }, .summary = "Print the version and stop",
-     .section = "new", .example = "--version"},
+     .section = "new", .example = "--version", .recorded = false},
     {.spelling = "--seed", .form = Integer, .topic = Program, .first = {"N", kNonNegative},
      .apply = [](Options& o, A a) { o.shading.sampling.seed = static_cast<std::uint64_t>(a.integer); },
      .summary = "Seed of the random numbers (the same seed, the same picture)", .section = "new",
      .example = "--seed 7"},
+    {.spelling = "--cutoff", .form = Number, .topic = Illumination, .first = {"W", kWeight},
+     .apply = [](Options& o, A a) { o.shading.weight_cutoff = a.first; },
+     .summary = "Trace no secondary ray whose weight is below W (0: trace all)",
+     .details = "A ray's weight is the product of the reflection and transmission coefficients "
+                "on its path from the eye (for a colour, its largest channel); a branch lighter "
+                "than W is left out, as adaptive tree-depth control does (Hall and Greenberg). "
+                "Tames ray trees that double at every level; off by default, so pictures are "
+                "the manual's (docs/rendering.md).", .section = "new",
+     .example = "--cutoff 0.01"},
     {.spelling = "--threads", .form = Integer, .topic = Program,
      .first = {"N", whole(0, 1024)},
      .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
-     .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2"},
+     .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2", .recorded = false},
     {.spelling = "--tile", .form = Text, .topic = Program, .first = {"I/N", {}},
      .apply = [](Options& o, A a) { o.tile = parse_picture_part(a.text); },
      .summary = "Render only part I of N into a part file, for merge",
      .details = "Cuts the window into N bands of rows from the top and renders band I into "
                 "NAME.part-I-of-N.gro; the program merge joins the N part files into the .gro "
                 "and images a single run writes, pixel for pixel (docs/distributed.md). Not "
-                "with -n or --output.", .section = "new", .example = "--tile 2/3"},
+                "with -n or --output.", .section = "new", .example = "--tile 2/3", .recorded = false},
     {.spelling = "--accel", .form = Text, .topic = SpatialEncoding,
      .first = {"NAME", {}}, .apply = set_accel_kind,
      .summary = "Intersection method: brute, octree, seads, bvh or embree",
@@ -478,7 +497,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "No progress and no notes; warnings and errors still show",
      .details = "Without it, progress goes to standard error: a bar on a terminal, a line every "
                 "5 seconds elsewhere.", .section = "new",
-     .example = "--quiet"},
+     .example = "--quiet", .recorded = false},
     {.spelling = "--no-window", .topic = Program,
      .apply = [](Options& o, A) { o.no_window = true; },
      .summary = "Render without a window, even on a display",
@@ -486,7 +505,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "it, fills the lines in as they finish and at the end waits for Enter (or for "
                 "the window to close; at once when standard input is not a terminal). Without "
                 "a display it renders without one (docs/window.md).",
-     .section = "1.2.2", .example = "--no-window"},
+     .section = "1.2.2", .example = "--no-window", .recorded = false},
 });
 #pragma GCC diagnostic pop
 // clang-format on

@@ -91,6 +91,9 @@ struct SwitchSpec {
     /// The library's name for the setting the switch sets, as its SettingErrors say it
     /// ("octree node limit"), or empty.
     std::string_view setting;
+    /// Whether it decides the picture, so that a .gro records it for --resume; false for the
+    /// options that only say where and how to run (--output, --threads, --quiet, ...).
+    bool recorded = true;
 
     bool is_long_option() const { return spelling.starts_with("--"); }
 };

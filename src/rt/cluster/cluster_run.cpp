@@ -1,6 +1,7 @@
 #include "rt/cluster/cluster_run.h"
 
 #include "rt/app/interrupt.h"
+#include "rt/app/resume.h"
 #include "rt/cluster/cluster_error.h"
 #include "rt/cluster/coordinator.h"
 #include "rt/cluster/helper.h"
@@ -14,8 +15,7 @@ namespace {
 
 // What every rank must agree on, checked by rank 0 against its own before any row is shared.
 std::string identity(const Options& options) {
-    return (options.model.empty() ? options.scene : "--model " + options.model) + " " +
-           picture_switches(options);
+    return encode_arguments(options.render_arguments);
 }
 
 // A helping rank prints nothing and writes nothing: rank 0 speaks for the job.

@@ -38,6 +38,9 @@ constexpr const char* kScene = "rtScene";
 constexpr const char* kSwitches = "rtSwitches";
 constexpr const char* kProgram = "rtProgram";
 constexpr const char* kCreated = "rtCreated";
+constexpr const char* kArguments = "rtArguments";
+constexpr const char* kSeed = "rtSeed";
+constexpr const char* kInputs = "rtInputs";
 constexpr const char* kChannels[3] = {"R", "G", "B"};
 
 // OpenEXR writes through its own stream interface; this one forwards to the temporary file that
@@ -74,6 +77,11 @@ Imf::Header header_for(const Film& film) {
     header.insert(kSwitches, Imf::StringAttribute(film.provenance.switches));
     header.insert(kProgram, Imf::StringAttribute(film.provenance.program));
     header.insert(kCreated, Imf::StringAttribute(film.provenance.created));
+    if (!film.provenance.arguments.empty()) {  // as in the .gro: only when known
+        header.insert(kArguments, Imf::StringAttribute(film.provenance.arguments));
+        header.insert(kSeed, Imf::StringAttribute(film.provenance.seed));
+        header.insert(kInputs, Imf::StringAttribute(film.provenance.inputs));
+    }
     return header;
 }
 
@@ -171,8 +179,10 @@ void restore_attributes(const Imf::Header& header, Film& film, const std::string
         }
         film.set_first_finished_row(f->value());
     }
-    film.provenance = {text_of(header, kScene), text_of(header, kSwitches),
-                       text_of(header, kProgram), text_of(header, kCreated)};
+    film.provenance = {text_of(header, kScene),     text_of(header, kSwitches),
+                       text_of(header, kProgram),   text_of(header, kCreated),
+                       text_of(header, kArguments), text_of(header, kSeed),
+                       text_of(header, kInputs)};
 }
 
 Film read_exr_file(const std::string& file) {

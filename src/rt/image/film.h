@@ -22,14 +22,17 @@ struct FilmProvenance {
     std::string switches;  ///< the switches, space-separated
     std::string program;   ///< "rt 0.1.0"
     std::string created;   ///< UTC time, ISO 8601
+    /// What --resume needs to render the same picture (empty in files written before it was
+    /// recorded): the scene and switches as command-line words (rt's encoding), the seed of the
+    /// random numbers, and a digest of the contents of every input file.
+    std::string arguments;
+    std::string seed;
+    std::string inputs;
 };
 
 /// What a part file (`rt --tile I/N`) adds to its header; empty for a whole picture.
 struct FilmPart {
     std::string part;  ///< "I N"
-    /// The switches that decide the pixels, long options included (--seed, --accel), --tile and
-    /// the output names left out: `merge` joins only parts whose lines agree.
-    std::string switches;
 };
 
 class Film {

@@ -30,9 +30,18 @@ std::string header_summary(const GroHeader& header) {
                         header.provenance.switches.empty() ? "(none)" : header.provenance.switches);
     text += fmt::format("program   {}\n", or_unknown(header.provenance.program));
     text += fmt::format("created   {}\n", or_unknown(header.provenance.created));
+    const FilmProvenance& p = header.provenance;
+    if (!p.arguments.empty()) {
+        text += fmt::format("seed      {}\n", p.seed);
+        text += fmt::format("inputs    {}\n", p.inputs);
+    }
     if (!header.part.part.empty()) {
-        text += fmt::format("part      {} (for merge; switches {})\n", header.part.part,
-                            header.part.switches);
+        text += fmt::format("part      {} (for merge)\n", header.part.part);
+    }
+    if (!complete) {
+        text += p.arguments.empty()
+                    ? "resume    not possible: the file does not record what rendered it\n"
+                    : "resume    rt --resume FILE.gro renders the missing rows\n";
     }
     return text;
 }
@@ -45,6 +54,7 @@ std::string film_summary(const Film& film) {
     header.first_finished_row = film.first_finished_row();
     header.mapping = film.mapping;
     header.provenance = film.provenance;
+    header.part = film.part;
     return header_summary(header);
 }
 

@@ -181,7 +181,9 @@ constexpr std::array kKeys = {
     KeySpec{"program", false, read_text<&FilmProvenance::program>},
     KeySpec{"created", false, read_text<&FilmProvenance::created>},
     KeySpec{"part", false, read_part<&FilmPart::part>},
-    KeySpec{"part_switches", false, read_part<&FilmPart::switches>},
+    KeySpec{"arguments", false, read_text<&FilmProvenance::arguments>},
+    KeySpec{"seed", false, read_text<&FilmProvenance::seed>},
+    KeySpec{"inputs", false, read_text<&FilmProvenance::inputs>},
 };
 
 bool valid_key(std::string_view key) {
@@ -317,9 +319,14 @@ std::string format_gro_header(const Film& film) {
     text += "switches " + header_text(p.switches) + "\n";
     text += "program " + header_text(p.program) + "\n";
     text += "created " + header_text(p.created) + "\n";
+    // Written only when known, so that a film from elsewhere does not claim to be resumable.
+    if (!p.arguments.empty()) {
+        text += "arguments " + header_text(p.arguments) + "\n";
+        text += "seed " + header_text(p.seed) + "\n";
+        text += "inputs " + header_text(p.inputs) + "\n";
+    }
     if (!film.part.part.empty()) {  // a part file (rt --tile), which merge joins
         text += "part " + header_text(film.part.part) + "\n";
-        text += "part_switches " + header_text(film.part.switches) + "\n";
     }
     text += fmt::format("pixels {}\n", kGroPixelEncoding);
     text += "end\n";

@@ -70,7 +70,10 @@ std::optional<Hit> RayTracer::nearest_hit(const Ray& ray, RayStart start,
 }
 
 Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
-                     SampleContext& sample) const {
+                     SampleContext& sample, double weight) const {
+    if (stop_ != nullptr && stop_->load(std::memory_order_relaxed)) {
+        return {};  // abandoned: the caller discards the sample
+    }
     TraceCounters& counters = sample.counters[kind];
     ++counters.rays;
     const std::optional<Hit> hit =
@@ -91,7 +94,7 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
     Rgb result = local_illumination(context, s, -ray.direction, full, feelers);
     const SurfaceSeen seen{hit->polygon, feelers.hits - stops_before};
     if (depth < max_depth_) {
-        result += secondary_rays(ray, s, depth, full, sample);
+        result += secondary_rays(ray, s, depth, full, sample, weight);
     }
     if (settings_.attenuate_rays) {
         result *= settings_.attenuation(hit->t);
@@ -117,8 +120,11 @@ SurfaceSeen RayTracer::first_surface(const Ray& ray, RayStart start, bool full,
     return {hit->polygon, feelers.hits - stops_before};
 }
 
+// Each branch carries its weight, the coefficients along its path multiplied (for colours, their
+// largest channel); with --cutoff a branch lighter than the threshold is not traced (adaptive
+// tree-depth control, Hall and Greenberg 1983).
 Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
-                              SampleContext& sample) const {
+                              SampleContext& sample, double weight) const {
     const Attribute& a = *s.attribute;
     const bool distribute =
         full && settings_.sampling.distribute && depth <= max_distributed_depth_;
@@ -127,7 +133,9 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                                      : LobeRays::AxisSimple;
     bool distributed_here = false;
     Rgb result;
-    if (settings_.reflection && a.specular > 0.0) {
+    const double colour_weight = std::max({s.color.r, s.color.g, s.color.b});
+    const double reflected_weight = weight * a.specular;
+    if (settings_.reflection && a.specular > 0.0 && worth_tracing(reflected_weight)) {
         Vec3 mirrored = reflect(ray.direction, s.shading_normal);
         if (settings_.correct_smoothing && dot(mirrored, s.facing_normal) <= 0.0) {
             mirrored = reflect(ray.direction, s.facing_normal);  // smoothing bent it inside
@@ -138,18 +146,21 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         false,
                         RayKind::Reflected};
         distributed_here = distributed_here || (distribute && lobe.cone.half_angle > 0.0);
-        result += gather(lobe, s, depth, rays, sample) * a.specular;
+        result += gather(lobe, s, depth, rays, sample, reflected_weight) * a.specular;
     }
-    if (s.transmission > 0.0) {
+    const double transmitted_weight = weight * s.transmission * colour_weight;
+    if (s.transmission > 0.0 && worth_tracing(transmitted_weight)) {
         distributed_here = distributed_here || (distribute && a.refract_cone_degrees > 0.0);
-        result += refracted_rays(ray, s, depth, rays, sample) * s.color * s.transmission;
+        result += refracted_rays(ray, s, depth, rays, sample, transmitted_weight) * s.color *
+                  s.transmission;
     }
-    if (diffuse_rays_ && a.diffuse > 0.0) {
+    const double diffuse_weight = weight * a.diffuse * colour_weight;
+    if (diffuse_rays_ && a.diffuse > 0.0 && worth_tracing(diffuse_weight)) {
         // Without shadow feelers light reaches a point only along rays that find emitters
         // (manual Appendix -Ds); diffuse reflection then needs rays of its own.
         const Lobe lobe{s.shading_normal, {}, true, true, RayKind::Diffuse};
         distributed_here = distributed_here || distribute;
-        result += gather(lobe, s, depth, rays, sample) * s.color * a.diffuse;
+        result += gather(lobe, s, depth, rays, sample, diffuse_weight) * s.color * a.diffuse;
     }
     if (distributed_here) {
         ++sample.tree.distributed_intersections;
@@ -160,7 +171,7 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
 // One refracted ray, or with -R and differing indices one per colour channel, each keeping only
 // its own channel. Total internal reflection sends the ray back inside.
 Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, LobeRays rays,
-                              SampleContext& sample) const {
+                              SampleContext& sample, double weight) const {
     const Attribute& a = *s.attribute;
     const Rgb& index = a.refraction_index;
     const bool split = index.r != index.g || index.g != index.b;
@@ -184,7 +195,7 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         !bent,  // totally reflected light stays on the ray's side
                         false,
                         RayKind::Refracted};
-        const Rgb traced = gather(lobe, s, depth, rays, sample);
+        const Rgb traced = gather(lobe, s, depth, rays, sample, weight);
         if (!split) {
             return traced;
         }
@@ -199,12 +210,12 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
 // lobe's first rays, as between a pixel's first samples, most often where a glossy reflection
 // runs off a polygon into the background. A diffuse lobe's hemisphere has no rim worth probing.
 Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRays rays,
-                      SampleContext& sample) const {
+                      SampleContext& sample, double weight) const {
     const bool distribute = rays == LobeRays::Distributed;
     const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
     if (!spread) {
         const bool simple = rays == LobeRays::AxisSimple;
-        return trace({s.position, lobe.axis}, lobe.kind, depth + 1, simple, sample);
+        return trace({s.position, lobe.axis}, lobe.kind, depth + 1, simple, sample, weight);
     }
     const SamplingSettings& sampling = settings_.sampling;
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
@@ -217,7 +228,8 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
         Vec3 direction = lobe.diffuse ? sample_cosine_hemisphere(lobe.axis, u1, u2)
                                       : sample_cone(lobe.cone, lobe.axis, u1, u2);
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
-        const Rgb value = trace({s.position, direction}, lobe.kind, depth + 1, true, sample);
+        const Rgb value =
+            trace({s.position, direction}, lobe.kind, depth + 1, true, sample, weight);
         ++sample.tree.distributed_rays;
         return SeenSample<SurfaceSeen>{value, sample.last_seen};
     };

@@ -4,6 +4,7 @@
 // many as the adaptive rule (-Xr) asks for; deeper, or with -Dd, one ray each.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -53,12 +54,18 @@ class RayTracer {
 public:
     RayTracer(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings);
 
+    /// Once *stop is set, every ray returns black at once without tracing: a ray tree of any
+    /// size ends within one ray's time. The caller must then throw away what it was computing.
+    void abandon_when(const std::atomic<bool>* stop) { stop_ = stop; }
+
     /// Intensity arriving along the ray (unit direction) from its origin's side; depth 1 is the
     /// eye ray. Light picked up at distance d is attenuated by the -A formula unless -Da.
     /// `distributed`: the ray is one of a distribution, or descends from one (without -I it gets
     /// the simple model).
-    Rgb trace(const Ray& ray, RayKind kind, int depth, bool distributed,
-              SampleContext& sample) const;
+    /// `weight`: the product of the reflection and transmission coefficients along the ray's path
+    /// from the eye (1 for an eye ray), which the weight cutoff (--cutoff) compares.
+    Rgb trace(const Ray& ray, RayKind kind, int depth, bool distributed, SampleContext& sample,
+              double weight = 1.0) const;
 
     /// What a ray meets first: its polygon, and its hit's shadow feelers, without shading it or
     /// tracing further (the adaptive rule's probes). `full` as for a ray that is not distributed
@@ -81,16 +88,19 @@ private:
     bool rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
                   SampleContext& sample) const;
     Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
-                       SampleContext& sample) const;
+                       SampleContext& sample, double weight) const;
     Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, LobeRays rays,
-                       SampleContext& sample) const;
+                       SampleContext& sample, double weight) const;
+    /// Whether a branch of this weight is traced: all are, unless --cutoff sets a threshold.
+    bool worth_tracing(double weight) const { return !(weight < settings_.weight_cutoff); }
     /// The mean intensity over a lobe: one ray along its axis, or a distribution of rays (a
     /// diffuse lobe always spreads its rays over the hemisphere).
     Rgb gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRays rays,
-               SampleContext& sample) const;
+               SampleContext& sample, double weight) const;
 
     const Scene& scene_;
     const Accelerator& accel_;
+    const std::atomic<bool>* stop_ = nullptr;
     ShadingSettings settings_;
     std::vector<PointLight> lights_;
     ProgressiveStrata ray_strata_;  ///< the strata of distributed rays at one intersection

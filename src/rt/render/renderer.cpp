@@ -24,7 +24,7 @@ struct RenderJob {
     const Scene& scene;
     const RenderSettings& settings;
     const Camera camera;
-    const RayTracer tracer;
+    RayTracer tracer;
     const ProgressiveStrata pixel_strata;
     RenderObserver& observer;
     Film& film;
@@ -44,7 +44,14 @@ struct RenderJob {
           pixel_strata(s.view.sample_resolution_x, s.view.sample_resolution_y),
           observer(o),
           film(f),
-          finished(static_cast<std::size_t>(rs.window.height()), 0) {}
+          finished(static_cast<std::size_t>(rs.window.height()), 0) {
+        tracer.abandon_when(rs.stop_now);
+    }
+
+    /// Whether the render must stop at once (Ctrl-C): what is being traced is worthless.
+    bool stop_now() const {
+        return settings.stop_now != nullptr && settings.stop_now->load(std::memory_order_relaxed);
+    }
 };
 
 // Whether every channel is a number the film's floats can hold.
@@ -153,7 +160,7 @@ void render_rows(RenderJob& job, KindCounters& counters) {
             y = w.bottom - index;
         }
         std::uint64_t samples = 0;
-        for (int x = w.left; x <= w.right; ++x) {
+        for (int x = w.left; x <= w.right && !job.stop_now(); ++x) {
             if (pixel_events) {
                 std::lock_guard lock(job.observer_mutex);
                 job.observer.pixel_started(x, y);
@@ -166,6 +173,15 @@ void render_rows(RenderJob& job, KindCounters& counters) {
                 job.observer.pixel_sampled(x, y, report);
             }
         }
+        if (job.stop_now()) {
+            // Some of the row's rays may have been cut short: the row is abandoned, black as it
+            // was, and the rows above it are never started.
+            for (int x = w.left; x <= w.right; ++x) {
+                job.film.set_pixel(x, y, {});
+            }
+            job.stopping = true;
+            return;
+        }
         record_finished_row(job, y, samples);
     }
 }
@@ -175,12 +191,33 @@ int thread_count(int requested, int rows) {
     return std::clamp(n, 1, std::max(1, rows));
 }
 
+// The finished rows of an interrupted render, taken over: its rows from the bottom to its first
+// finished row, which the workers then skip. Every pixel depends only on the seed and its place,
+// so the rest rendered now completes the same picture.
+void take_finished_rows(RenderJob& job, const Film& done) {
+    const PixelRect& w = job.settings.window;
+    const int first = std::clamp(done.first_finished_row(), w.top, w.bottom + 1);
+    const auto row_floats = static_cast<std::ptrdiff_t>(w.width()) * 3;
+    const auto from_row = static_cast<std::ptrdiff_t>(first - w.top);
+    std::copy(done.data().begin() + from_row * row_floats, done.data().end(),
+              job.film.data().begin() + from_row * row_floats);
+    for (int y = first; y <= w.bottom; ++y) {
+        job.finished[static_cast<std::size_t>(y - w.top)] = 1;
+    }
+    job.rows_done = w.bottom + 1 - first;
+    job.next_row_index = job.rows_done;
+    job.film.set_first_finished_row(first);
+}
+
 }  // namespace
 
 Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
             RenderObserver& observer, RenderStatistics& statistics) {
     Film film(scene.view.width, scene.view.height, settings.window);
     RenderJob job(scene, accel, settings, observer, film);
+    if (settings.resume != nullptr) {
+        take_finished_rows(job, *settings.resume);
+    }
     const int n = thread_count(settings.threads, settings.window.height());
     std::vector<KindCounters> counters(static_cast<std::size_t>(n));
     std::vector<std::thread> workers;

@@ -3,6 +3,7 @@
 // the thread count.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -33,6 +34,12 @@ struct RenderSettings {
     /// Null: every window row. A pixel's samples depend only on its coordinates and the seed, so
     /// a row renders the same whichever process or thread takes it.
     RowSource* rows = nullptr;
+    /// Set from elsewhere (a signal handler) to stop at once: the ray trees in progress are cut
+    /// short and their rows abandoned, the finished rows kept. May be null.
+    const std::atomic<bool>* stop_now = nullptr;
+    /// An interrupted render of the same scene and settings (--resume): its finished rows are
+    /// taken as they are and only the rest are rendered. May be null.
+    const Film* resume = nullptr;
 };
 
 /// How a pixel was sampled (-dx).
@@ -85,8 +92,9 @@ struct RenderStatistics {
     std::uint64_t unrepresentable_samples = 0;
 };
 
-/// Renders the window into a new film. If the observer asks to stop, the rows finished so far
-/// (a contiguous run from the bottom) are kept and the film says where they begin.
+/// Renders the window into a new film. If the observer asks to stop, or settings.stop_now is set,
+/// the rows finished so far (a contiguous run from the bottom) are kept and the film says where
+/// they begin.
 Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
             RenderObserver& observer, RenderStatistics& statistics);
 

@@ -28,6 +28,9 @@ struct ShadingSettings {
     bool far_side_feelers = false;             ///< -T
     bool smooth_shaded_opaque = false;         ///< -Po: smooth-shaded polygons are opaque
     double ambient_light = 1.0;                ///< white ambient light the ambient weight reflects
+    /// --cutoff: a secondary ray whose weight (the coefficients along its path multiplied) is
+    /// below this is not traced; 0 traces every ray, as the manual's program did.
+    double weight_cutoff = 0.0;
     SamplingSettings sampling;      ///< read by the renderer and the ray tree, not by shading
     FuzzyFeelers fuzzy;             ///< -F
     SpecularSettings specular;      ///< -S and -C: the highlight's law and colour

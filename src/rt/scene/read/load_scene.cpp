@@ -101,6 +101,7 @@ void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path&
         const NamedFile& grid = entry.polygon_file;
         const NamedFile& map = entry.texture_map;
         const std::uint32_t file = files.index((folder / grid.name).string());
+        files.index((folder / map.name).string());  // read too: a render's input (--resume)
         add_textured_surface(
             builder, scene, entry,
             read_named_file(folder / grid.name, "polygon file", grid.name, grid.where),
