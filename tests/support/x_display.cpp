@@ -15,6 +15,7 @@
 #include "support/temp_dir.h"
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -141,6 +142,9 @@ SpawnedProgram::SpawnedProgram(const std::string& program, const std::vector<std
     pid_ = ::fork();
     if (pid_ == 0) {
         ::setsid();  // the terminal, if any, becomes its own
+        // A program left behind by a test that died (a render of years, say) cannot run forever.
+        const rlimit cpu{600, 600};
+        ::setrlimit(RLIMIT_CPU, &cpu);
         const int input = settings.terminal_input ? ::open(terminal_name.c_str(), O_RDWR)
                                                   : ::open("/dev/null", O_RDONLY);
         ::dup2(input, STDIN_FILENO);

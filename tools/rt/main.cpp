@@ -88,7 +88,9 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
     if (!options.no_window) {
         console.open_window = [note = console.note](const rt::WindowRequest& request) {
             std::string why_not;
-            std::unique_ptr<rt::PictureWindow> window = rt::open_picture_window(request, why_not);
+            rt::WindowRequest stopping = request;
+            stopping.on_close = rt::request_interrupt;  // closing it stops the render at once
+            std::unique_ptr<rt::PictureWindow> window = rt::open_picture_window(stopping, why_not);
             if (!window && std::getenv("DISPLAY") != nullptr) {  // NOLINT(concurrency-mt-unsafe)
                 note(why_not);  // a display was named but cannot be reached
             }

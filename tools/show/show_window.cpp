@@ -45,7 +45,7 @@ Film picture_for_window(const std::filesystem::path& path) {
 int show_in_window(const Film& film, const std::string& name) {
     std::string why_not;
     const std::unique_ptr<PictureWindow> window = open_picture_window(
-        {"show: " + name, film.view_width(), film.view_height(), film.mapping, true}, why_not);
+        {"show: " + name, film.view_width(), film.view_height(), film.mapping, true, {}}, why_not);
     if (!window) {
         // Nothing to look at here: say what the picture is, and how to see it elsewhere.
         std::cout << film_summary(film);

@@ -33,6 +33,10 @@ bool interrupt_requested() {
     return g_interrupted.load();
 }
 
+void request_interrupt() {
+    g_interrupted = true;
+}
+
 const std::atomic<bool>& interrupt_flag() {
     return g_interrupted;
 }

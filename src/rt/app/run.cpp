@@ -222,7 +222,11 @@ std::unique_ptr<PictureWindow> open_window(const Scene& scene, const Options& op
     }
     std::unique_ptr<PictureWindow> shown =
         console.open_window({"rt: " + (options.model.empty() ? options.scene : options.model),
-                             scene.view.width, scene.view.height, options.display, false});
+                             scene.view.width,
+                             scene.view.height,
+                             options.display,
+                             false,
+                             {}});
     if (shown && !options.wireframe_only) {  // -w shows the one it writes
         shown->board().show_film(wireframe_picture(scene, options, window, console));
     }

@@ -20,6 +20,9 @@ struct WindowRequest {
     /// show: + and - change the exposure (-m) live, 0 restores it, and the title names the pixel
     /// under the cursor with its value.
     bool explore = false;
+    /// Called (on the window's own thread) when the viewer closes it: rt stops the render there
+    /// as Ctrl-C does, inside the ray tree. May be empty.
+    std::function<void()> on_close;
 };
 
 class PictureWindow {

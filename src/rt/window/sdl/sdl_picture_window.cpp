@@ -152,6 +152,9 @@ private:
     void close() {
         closed_ = true;
         SDL_HideWindow(window_);
+        if (request_.on_close) {
+            request_.on_close();
+        }
     }
 
     void change_exposure(SDL_Keycode key) {
