@@ -48,7 +48,7 @@ int interrupt_at_line(const TempDir& dir, int line, int signal) {
     }
     rt.signal(signal);
     const std::optional<int> status = rt.wait_for_exit(seconds(120));
-    EXPECT_NE(rt.errors().find("interrupted; the finished lines were written"), std::string::npos)
+    EXPECT_NE(rt.errors().find("interrupted; the finished lines are kept"), std::string::npos)
         << rt.errors();
     return status.value_or(-1);
 }

@@ -136,7 +136,7 @@ int run(int argc, char** argv) {
     const rt::RunOutcome outcome = rt::run(options, console);
 #endif
     if (outcome == rt::RunOutcome::Interrupted) {
-        console.trace("rt: interrupted; the finished lines were written");  // printed as is
+        console.trace("rt: interrupted; the finished lines are kept");  // printed as is
         // The shell's convention: 128 + the signal (130 for Ctrl-C, 143 for SIGTERM); a window
         // closed by the user counts as Ctrl-C.
         const int signal = rt::interrupt_signal();

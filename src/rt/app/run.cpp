@@ -164,12 +164,41 @@ void check_output_folder(const std::filesystem::path& output) {
     }
 }
 
+// Beside an existing output, where an interrupted render puts its partial picture:
+// "twocubes.gro" -> "twocubes.partial.gro".
+std::filesystem::path partial_path(const std::filesystem::path& path) {
+    std::filesystem::path name = path;
+    name.replace_extension();
+    name += ".partial";
+    name += path.extension();
+    return name;
+}
+
 // Every output is attempted: one that cannot be written does not cost the others. The failures
-// are reported together, one line each, as one IoError.
-void write_outputs(const Film& film, const Options& options) {
-    const std::vector<std::filesystem::path> paths = output_paths(options);
+// are reported together, one line each, as one IoError. An unfinished picture (Ctrl-C) never
+// replaces an existing file: it goes beside it, and a picture without one finished line is not
+// written at all. The file being resumed is the exception: it is the partial picture itself.
+void write_outputs(const Film& film, const Options& options, const RunConsole& console) {
+    const bool unfinished = !film.complete();
+    if (unfinished && options.resume.empty() &&
+        film.first_finished_row() > film.window().bottom) {
+        if (console.warning) {
+            console.warning("stopped before the first line was finished: no file was written");
+        }
+        return;
+    }
     std::string failures;
-    for (const std::filesystem::path& path : paths) {
+    for (std::filesystem::path path : output_paths(options)) {
+        std::error_code ec;
+        if (unfinished && path != std::filesystem::path(options.resume) &&
+            std::filesystem::exists(path, ec)) {
+            const std::filesystem::path beside = partial_path(path);
+            if (console.warning) {
+                console.warning(fmt::format("{} is kept; the finished lines went to {}",
+                                            path.string(), beside.string()));
+            }
+            path = beside;
+        }
         try {
             write_image(film, path);
         } catch (const IoError& e) {
@@ -265,7 +294,7 @@ bool run_without_tracing(const Scene& scene, const Options& options, const Pixel
         if (shown) {
             shown->board().show_film(film);
         }
-        write_outputs(film, options);
+        write_outputs(film, options, console);
         close_window(std::move(shown), console);
         return true;
     }
@@ -453,7 +482,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
         print_colors(film, console);
     }
     phase = Clock::now();
-    write_outputs(film, options);
+    write_outputs(film, options, console);
     times.write_seconds = seconds_since(phase);
     print_profile(statistics.by_kind);
     close_window(std::move(shown), console);
