@@ -1,5 +1,7 @@
 #include "fuzz_input.h"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -14,10 +16,35 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr std::string_view kFolderPrefix = "rt-fuzz-";
+
+// The folders of fuzz processes that have ended: libFuzzer's fork mode ends its jobs with _Exit,
+// which skips the atexit below, and a crash skips it too.
+void remove_stale_folders() {
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(fs::temp_directory_path(), ec)) {
+        const std::string name = entry.path().filename().string();
+        if (!name.starts_with(kFolderPrefix)) {
+            continue;
+        }
+        const std::string digits = name.substr(kFolderPrefix.size());
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
+            digits.size() > 9) {
+            continue;
+        }
+        const pid_t pid = static_cast<pid_t>(std::stol(digits));
+        if (::kill(pid, 0) != 0 && errno == ESRCH) {
+            fs::remove_all(entry.path(), ec);
+        }
+    }
+}
+
 fs::path make_scratch_folder() {
-    fs::path folder = fs::temp_directory_path() / ("rt-fuzz-" + std::to_string(::getpid()));
+    remove_stale_folders();
+    fs::path folder =
+        fs::temp_directory_path() / (std::string(kFolderPrefix) + std::to_string(::getpid()));
     fs::create_directories(folder);
-    // libFuzzer ends with exit(), which runs this; a crash leaves the folder behind in /tmp.
+    // A normal exit runs this; other ends leave the folder to the next run's clean-up.
     std::atexit([] {
         std::error_code ignored;
         fs::remove_all(scratch_folder(), ignored);
@@ -28,8 +55,9 @@ fs::path make_scratch_folder() {
 }  // namespace
 
 const fs::path& scratch_folder() {
-    static const fs::path folder = make_scratch_folder();
-    return folder;
+    // Never destroyed: the clean-up at exit runs after static destructors would have run.
+    static const fs::path* const folder = new fs::path(make_scratch_folder());
+    return *folder;
 }
 
 fs::path write_scratch_file(std::string_view name, std::string_view bytes) {
