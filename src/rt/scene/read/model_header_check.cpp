@@ -127,9 +127,9 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
 namespace {
 
 // The face lines in the bytes given (the file's start): each must start with its corner count, a
-// whole number from 1, followed by as many whole numbers (the vertices). Assimp 5.2's OFF
-// reader skips a face line without a count by lowering its face count, and a few such lines make
-// it read past its faces (a crash found by fuzzing, docs/lab/fuzz-2026-12-02.md).
+// whole number from 1, followed by as many whole numbers (the vertices). A few lines that are not
+// faces make Assimp 5.2's OFF reader read past its faces (a crash found by fuzzing,
+// docs/lab/fuzz-2026-12-02.md).
 void check_off_faces(std::istream& in, int line, std::int64_t vertices, std::int64_t faces,
                      const std::string& name) {
     std::int64_t vertex_lines = 0;
