@@ -223,6 +223,17 @@ TEST_F(ModelReader, AHeaderPromisingMoreThanTheFileHoldsIsRefusedBeforeReading) 
               "most 3 (the file is truncated or its header is wrong)");
 }
 
+// Assimp 5.2 skips an OFF face line without a corner count by lowering its face count, and a few
+// of them make it read past its faces (fuzz/regressions/model/assimp-off-face-without-count).
+TEST_F(ModelReader, AnOffFaceWithoutItsCornerCountIsRefusedBeforeAssimp) {
+    EXPECT_EQ(error("m.off", "OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\nv 0 0 0\nv 1 0 0\n"),
+              "m.off:7: expected face 1: a corner count from 1, then as many vertex numbers; "
+              "found 'v 0 0 0'");
+    EXPECT_EQ(error("m.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
+              "m.off:6: expected face 0: a corner count from 1, then as many vertex numbers; "
+              "found '3 0 1'");
+}
+
 TEST_F(ModelReader, WhatAssimpRepairsIsWarnedAbout) {
     // Assimp's OFF reader clamps an index out of range instead of refusing it.
     read("m.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 9\n");

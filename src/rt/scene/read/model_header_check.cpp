@@ -124,6 +124,47 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
             bytes.size() < file_size ? fmt::format(" in its first {} bytes", bytes.size()) : ""));
 }
 
+namespace {
+
+// The face lines in the bytes given (the file's start): each must start with its corner count, a
+// whole number from 1, followed by as many whole numbers (the vertices). A few lines that are not
+// faces make Assimp 5.2's OFF reader read past its faces (a crash found by fuzzing,
+// docs/lab/fuzz-2026-12-02.md).
+void check_off_faces(std::istream& in, int line, std::int64_t vertices, std::int64_t faces,
+                     const std::string& name) {
+    std::int64_t vertex_lines = 0;
+    std::int64_t face_lines = 0;
+    for (std::string text; face_lines < faces && std::getline(in, text);) {
+        ++line;
+        if (in.eof()) {
+            return;  // a last line cut off at the end of the bytes given, or of the file
+        }
+        const std::vector<std::string> words = words_of(text.substr(0, text.find('#')));
+        if (words.empty()) {
+            continue;
+        }
+        if (vertex_lines < vertices) {
+            ++vertex_lines;
+            continue;
+        }
+        ++face_lines;
+        const std::optional<std::int64_t> corners = parse_integer(words[0]);
+        bool good = corners && *corners >= 1 && static_cast<std::uint64_t>(*corners) < words.size();
+        for (std::size_t i = 1; good && i <= static_cast<std::size_t>(*corners); ++i) {
+            const std::optional<std::int64_t> v = parse_integer(words[i]);
+            good = v.has_value();  // one out of range Assimp clamps, with a warning
+        }
+        if (!good) {
+            throw InputError({name, line, 0},
+                             "expected face " + std::to_string(face_lines - 1) +
+                                 ": a corner count from 1, then as many vertex numbers; found '" +
+                                 text + "'");
+        }
+    }
+}
+
+}  // namespace
+
 void check_off_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name) {
     std::istringstream in{std::string(bytes)};
     int line = 0;
@@ -154,6 +195,7 @@ void check_off_header(std::string_view bytes, std::uintmax_t file_size, const st
     check_count(name, counts_line, "vertices", *vertices, 6, file_size);
     check_count(name, counts_line, "faces", *faces, 2,
                 file_size - std::min(file_size, static_cast<std::uintmax_t>(*vertices) * 6));
+    check_off_faces(in, line, *vertices, *faces, name);
 }
 
 }  // namespace rt
