@@ -40,17 +40,17 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",        "-w",      "-m",        "-tv",     "-c",         "-od",       "-oo",
-        "-ol",       "-on",     "-of",       "-op",     "-ss",        "-p",        "-r",
-        "-Sp",       "-Sg",     "-Stg",      "-Stb",    "-R",         "-Wr",       "-Wc",
-        "-Wt",       "-A",      "-T",        "-Co",     "-Ci",        "-Cf",       "-Dx",
-        "-De",       "-Dd",     "-Dt",       "-Da",     "-Dl",        "-Ds",       "-Dr",
-        "-Df",       "-Dp",     "-Db",       "-Po",     "-Pt",        "-Ot",       "-Oi",
-        "-Of",       "-O1",     "-K",        "-I",      "-L",         "-E",        "-F",
-        "-Xp",       "-Xr",     "-M",        "-V",      "-dc",        "-ds",       "-dsp",
-        "-dso",      "-dl",     "-doo",      "-doi",    "-dof",       "-df",       "-dd",
-        "-dx",       "-de",     "--output",  "--model", "--help",     "--version", "--seed",
-        "--threads", "--accel", "--zbuffer", "--quiet", "--no-window"};
+        "-n",        "-w",      "-m",        "-tv",     "-c",          "-od",         "-oo",
+        "-ol",       "-on",     "-of",       "-op",     "-ss",         "-p",          "-r",
+        "-Sp",       "-Sg",     "-Stg",      "-Stb",    "-R",          "-Wr",         "-Wc",
+        "-Wt",       "-A",      "-T",        "-Co",     "-Ci",         "-Cf",         "-Dx",
+        "-De",       "-Dd",     "-Dt",       "-Da",     "-Dl",         "-Ds",         "-Dr",
+        "-Df",       "-Dp",     "-Db",       "-Po",     "-Pt",         "-Ot",         "-Oi",
+        "-Of",       "-O1",     "-K",        "-I",      "-L",          "-E",          "-F",
+        "-Xp",       "-Xr",     "-M",        "-V",      "-dc",         "-ds",         "-dsp",
+        "-dso",      "-dl",     "-doo",      "-doi",    "-dof",        "-df",         "-dd",
+        "-dx",       "-de",     "--output",  "--model", "--help",      "--version",   "--seed",
+        "--threads", "--accel", "--zbuffer", "--quiet", "--no-window", "--max-memory"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -320,6 +320,8 @@ std::map<std::string_view, Expectation> expectations() {
         {"--zbuffer", {{}, [](const Options& o) { return o.accel.zbuffer_first_hits; }}},
         {"--quiet", flag(&Options::quiet)},
         {"--no-window", flag(&Options::no_window)},
+        {"--max-memory",
+         {{}, [](const Options& o) { return o.max_memory_gib == std::optional<double>(2.0); }}},
         {"--help", flag(&Options::show_help)},
         {"--version", flag(&Options::show_version)},
     };

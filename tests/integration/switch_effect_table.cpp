@@ -645,6 +645,7 @@ const std::vector<OtherSwitch>& other_switches() {
         {"--version", "RtProgram.HelpAndVersion"},
         {"--quiet", "RtProgram tests: nothing printed"},
         {"--no-window", "Window.NeverWaitsWithoutADisplayOrATerminal: no window, no wait"},
+        {"--max-memory", "RtResources.AViewThatFitsStillRenders: the same picture, or a refusal"},
     };
     return all;
 }

@@ -1,14 +1,15 @@
 #include "rt/app/run.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <ctime>
-#include <system_error>
+#include <optional>
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
 #include "rt/app/inspection_runs.h"
+#include "rt/app/memory_estimate.h"
+#include "rt/app/output_checks.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/version.h"
@@ -18,12 +19,11 @@
 #include "rt/render/film_window.h"
 #include "rt/render/random_rays.h"
 #include "rt/render/renderer.h"
+#include "rt/scene/near_plane.h"
 #include "rt/scene/read/load_scene.h"
 #include "rt/scene/read/model_scene.h"
 
 #include <fmt/format.h>
-
-#include <unistd.h>
 
 namespace rt {
 
@@ -121,32 +121,21 @@ void stamp(Film& film, const Options& options) {
                        utc_now()};
 }
 
-// The folder an output goes into must exist and be writable: found out after the render, it
-// would cost the render.
-void check_output_folder(const std::filesystem::path& output) {
-    const std::filesystem::path folder =
-        output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    if (!std::filesystem::is_directory(folder, ec)) {
-        throw IoError(fmt::format("cannot write {}: the folder {} does not exist", output.string(),
-                                  folder.string()));
-    }
-    if (::access(folder.c_str(), W_OK | X_OK) != 0) {
-        throw IoError(fmt::format("cannot write {}: the folder {} is not writable ({})",
-                                  output.string(), folder.string(),
-                                  std::generic_category().message(errno)));
-    }
-}
-
-// Every output is attempted: one that cannot be written does not cost the others. The failures
-// are reported together, one line each, as one IoError.
-void write_outputs(const Film& film, const Options& options) {
+// The .gro (unless -n) and every --output.
+std::vector<std::filesystem::path> output_paths(const Options& options) {
     std::vector<std::filesystem::path> paths;
     if (!options.no_gro) {
         paths.emplace_back(options.model.empty() ? default_gro_path(options.scene)
                                                  : model_gro_path(options.model));
     }
     paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
+    return paths;
+}
+
+// Every output is attempted: one that cannot be written does not cost the others. The failures
+// are reported together, one line each, as one IoError.
+void write_outputs(const Film& film, const Options& options) {
+    const std::vector<std::filesystem::path> paths = output_paths(options);
     std::string failures;
     for (const std::filesystem::path& path : paths) {
         try {
@@ -221,6 +210,74 @@ bool run_without_tracing(const Scene& scene, const Options& options, const Pixel
     return false;
 }
 
+// Eye rays start on the screen, so polygons nearer the eye than screendist are not seen: said once,
+// with the screendist that would show them.
+void warn_near_plane(const Scene& scene, const RunConsole& console) {
+    const NearPlaneReport near = polygons_before_screen(scene);
+    if (near.polygons == 0 || !console.warning) {
+        return;
+    }
+    const double showing = screendist_showing(near);
+    console.warning(fmt::format(
+        "{} between the eye and the screen (screendist {:g}), where eye rays, starting on "
+        "the screen, do not see {}{}",
+        near.polygons == 1 ? std::string("1 polygon lies")
+                           : fmt::format("{} polygons lie", near.polygons),
+        scene.view.screen_distance, near.polygons == 1 ? "it" : "them",
+        showing > 0.0 ? fmt::format(": a screendist of {:g} would show {}", showing,
+                                    near.polygons == 1 ? "it" : "them")
+                      : std::string(": one reaches the eye itself, so no screendist shows it "
+                                    "whole")));
+}
+
+// What the render found out: -ds's summary, samples the film could not hold.
+void report_after_render(const AcceleratorStack& stack, const RenderStatistics& statistics,
+                         const RunConsole& console) {
+    if (stack.strike_check() != nullptr) {
+        console.note(stack.strike_check()->summary());
+    }
+    if (statistics.unrepresentable_samples > 0) {
+        console.warning(
+            fmt::format("{} samples had an intensity that is not a finite number "
+                        "within the float range; they were counted as black",
+                        statistics.unrepresentable_samples));
+    }
+}
+
+// Refuses an unknown format, or a folder that cannot take the file, before hours of rendering.
+void check_output_paths(const Options& options) {
+    for (const std::string& output : options.outputs) {
+        (void)image_format_for(output);
+        check_output_folder(output);
+    }
+    if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
+        check_output_folder(output_paths(options).front());
+    }
+}
+
+// Refuses a render that would not fit in memory, before its film or method is allocated, or
+// whose outputs would not fit on their disks.
+void check_resources(const Scene& scene, const Options& options, const PixelRect& window,
+                     const RunConsole& console) {
+    if (options.debug_octree_interactive) {
+        return;
+    }
+    if (!options.random_rays) {
+        for (const std::filesystem::path& path : output_paths(options)) {
+            check_output_space(path, window);
+        }
+    }
+    const bool window_opens = console.open_window && !options.random_rays;
+    const std::optional<MemoryLimit> limit =
+        options.max_memory_gib ? MemoryLimit{static_cast<std::uint64_t>(std::min(
+                                                 *options.max_memory_gib * 1073741824.0, 1.8e19)),
+                                             "--max-memory"}
+                               : available_memory();
+    if (limit) {
+        check_memory(estimate_render_memory(scene, options, window, window_opens), *limit);
+    }
+}
+
 }  // namespace
 
 std::filesystem::path resolve_scene_path(const std::string& scene_argument) {
@@ -253,16 +310,7 @@ std::filesystem::path model_gro_path(const std::string& model_argument) {
 }
 
 RunOutcome run(const Options& options, const RunConsole& console) {
-    for (const std::string& output : options.outputs) {
-        // Refuse an unknown format or a folder that cannot take the file before hours of
-        // rendering.
-        (void)image_format_for(output);
-        check_output_folder(output);
-    }
-    if (!options.no_gro && !options.debug_octree_interactive && !options.random_rays) {
-        check_output_folder(options.model.empty() ? default_gro_path(options.scene)
-                                                  : model_gro_path(options.model));
-    }
+    check_output_paths(options);
     Diagnostics diagnostics;
     diagnostics.set_warning_sink(console.warning);
     diagnostics.set_note_sink(console.note);
@@ -283,11 +331,13 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     prepare_scene(scene, options, settings.shading);
     settings.window = film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
+    check_resources(scene, options, settings.window, console);
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
     if (run_without_tracing(scene, options, settings.window, console, shown)) {
         return RunOutcome::Finished;
     }
 
+    warn_near_plane(scene, console);
     phase = Clock::now();
     const AcceleratorStack stack(scene, options.accel,
                                  {console.note, console.warning, console.trace});
@@ -328,15 +378,7 @@ RunOutcome run(const Options& options, const RunConsole& console) {
     }
     Film film = render(scene, *accel, settings, observer, statistics);
     times.trace_seconds = seconds_since(phase);
-    if (stack.strike_check() != nullptr) {
-        console.note(stack.strike_check()->summary());
-    }
-    if (statistics.unrepresentable_samples > 0) {
-        console.warning(
-            fmt::format("{} samples had an intensity that is not a finite number "
-                        "within the float range; they were counted as black",
-                        statistics.unrepresentable_samples));
-    }
+    report_after_render(stack, statistics, console);
     stamp(film, options);
     if (options.debug_color) {
         print_colors(film, console);
