@@ -1,9 +1,9 @@
 // The window, with SDL2. One thread does everything SDL (initialisation, events, drawing), as
 // SDL's video functions want; the others only touch the PictureBoard and the atomic flags.
 #include <atomic>
-#include <cmath>
 #include <cstdlib>
 #include <future>
+#include <numbers>
 #include <thread>
 #include <vector>
 
@@ -48,7 +48,7 @@ constexpr std::uint32_t kFrameMilliseconds = 16;  // about 60 redraws a second, 
 // manager, under load), and only this brings the unchanged rows (the wireframe) back. A blit of
 // the mapped picture costs far less than a frame.
 constexpr std::uint32_t kWholeRedrawMilliseconds = 250;
-const double kExposureStep = std::sqrt(2.0);  // half a stop per key press
+constexpr double kExposureStep = std::numbers::sqrt2;  // half a stop per key press
 
 bool is_close_key(const SDL_Keysym& key) {
     return key.sym == SDLK_ESCAPE || (key.sym == SDLK_c && (key.mod & KMOD_CTRL) != 0);
