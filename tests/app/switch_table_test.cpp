@@ -51,7 +51,7 @@ TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
         "-dso",   "-dl",      "-doo",      "-doi",     "-dof",      "-df",     "-dd",
         "-dx",    "-de",      "--output",  "--resume", "--model",   "--help",  "--version",
         "--seed", "--cutoff", "--threads", "--tile",   "--accel",   "--zbuffer", "--quiet",
-        "--no-window"};
+        "--no-window", "--max-memory"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {
         actual.push_back(spec.spelling);
@@ -328,6 +328,8 @@ std::map<std::string_view, Expectation> expectations() {
         {"--zbuffer", {{}, [](const Options& o) { return o.accel.zbuffer_first_hits; }}},
         {"--quiet", flag(&Options::quiet)},
         {"--no-window", flag(&Options::no_window)},
+        {"--max-memory",
+         {{}, [](const Options& o) { return o.max_memory_gib == std::optional<double>(2.0); }}},
         {"--help", flag(&Options::show_help)},
         {"--version", flag(&Options::show_version)},
     };

@@ -650,6 +650,7 @@ const std::vector<OtherSwitch>& other_switches() {
         {"--quiet", "RtProgram tests: nothing printed"},
         {"--no-window", "Window.NeverWaitsWithoutADisplayOrATerminal: no window, no wait"},
         {"--tile", "TileMerge tests: three parts merged equal the single render, pixel for pixel"},
+        {"--max-memory", "RtResources.AViewThatFitsStillRenders: the same picture, or a refusal"},
     };
     return all;
 }

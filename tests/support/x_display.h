@@ -51,7 +51,8 @@ public:
     void type_line(const std::string& text);
     /// Sends it a signal (SIGINT, as Ctrl-C does).
     void signal(int number);
-    /// Its exit status once it exits within `limit`; none if it is still running then.
+    /// Its exit status once it exits within `limit` (5 times longer under AddressSanitizer);
+    /// none if it is still running then.
     std::optional<int> wait_for_exit(std::chrono::milliseconds limit);
     /// Its standard error so far.
     std::string errors() const;
@@ -68,7 +69,7 @@ Image8 screenshot(const std::string& display, const std::string& title);
 /// The same for the window with X id `id` (a title that changes cannot name it).
 Image8 screenshot_of(const std::string& display, unsigned long id);
 
-/// Waits (up to `limit`) until `path` exists.
+/// Waits (up to `limit`, 5 times longer under AddressSanitizer) until `path` exists.
 bool wait_for_file(const std::filesystem::path& path, std::chrono::milliseconds limit);
 
 }  // namespace rt::test

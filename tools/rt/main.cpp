@@ -8,6 +8,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -173,6 +174,12 @@ int main(int argc, char** argv) {
     } catch (const rt::IoError& e) {
         print_line(std::string("rt: ") + e.what());
         return kIo;
+    } catch (const std::bad_alloc&) {
+        // The estimate before the render (--max-memory) missed something, or memory went away.
+        print_line(
+            "rt: out of memory: ask for less (a smaller view area or output matrix), or "
+            "close other programs");
+        return kInternal;
     } catch (const std::exception& e) {
         print_line(std::string("rt: internal error: ") + e.what());
         return kInternal;

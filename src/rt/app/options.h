@@ -58,13 +58,14 @@ struct Options {
     bool debug_chi_square = false;          ///< -dx
 
     // --- the program itself (long options) ----------------------------------------------------
-    bool show_help = false;     ///< --help
-    bool show_version = false;  ///< --version
-    bool show_usage = false;    ///< no arguments at all
-    bool quiet = false;         ///< --quiet: no progress, no notes
-    int threads = 0;            ///< --threads (0: all cores)
-    bool no_window = false;     ///< --no-window: never open a window, even on a display
-    std::string resume;         ///< --resume FILE.gro: continue that interrupted render
+    bool show_help = false;                ///< --help
+    bool show_version = false;             ///< --version
+    bool show_usage = false;               ///< no arguments at all
+    bool quiet = false;                    ///< --quiet: no progress, no notes
+    int threads = 0;                       ///< --threads (0: all cores)
+    bool no_window = false;                ///< --no-window: never open a window, even on a display
+    std::string resume;                    ///< --resume FILE.gro: continue that interrupted render
+    std::optional<double> max_memory_gib;  ///< --max-memory: instead of the memory available
 
     /// The switches exactly as given (not the scene, not long options), for the .gro header.
     std::vector<std::string> given_switches;

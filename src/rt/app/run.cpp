@@ -1,15 +1,16 @@
 #include "rt/app/run.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <ctime>
-#include <system_error>
+#include <optional>
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
 #include "rt/app/input_digest.h"
 #include "rt/app/inspection_runs.h"
+#include "rt/app/memory_estimate.h"
+#include "rt/app/output_checks.h"
 #include "rt/app/profile_report.h"
 #include "rt/app/resume.h"
 #include "rt/app/run_settings.h"
@@ -23,12 +24,11 @@
 #include "rt/render/random_rays.h"
 #include "rt/render/ray_tree_bound.h"
 #include "rt/render/renderer.h"
+#include "rt/scene/near_plane.h"
 #include "rt/scene/read/load_scene.h"
 #include "rt/scene/read/model_scene.h"
 
 #include <fmt/format.h>
-
-#include <unistd.h>
 
 namespace rt {
 
@@ -145,23 +145,6 @@ std::vector<std::filesystem::path> output_paths(const Options& options) {
     }
     paths.insert(paths.end(), options.outputs.begin(), options.outputs.end());
     return paths;
-}
-
-// The folder an output goes into must exist and be writable: found out after the render, it
-// would cost the render.
-void check_output_folder(const std::filesystem::path& output) {
-    const std::filesystem::path folder =
-        output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    if (!std::filesystem::is_directory(folder, ec)) {
-        throw IoError(fmt::format("cannot write {}: the folder {} does not exist", output.string(),
-                                  folder.string()));
-    }
-    if (::access(folder.c_str(), W_OK | X_OK) != 0) {
-        throw IoError(fmt::format("cannot write {}: the folder {} is not writable ({})",
-                                  output.string(), folder.string(),
-                                  std::generic_category().message(errno)));
-    }
 }
 
 // Beside an existing output, where an interrupted render puts its partial picture:
@@ -306,6 +289,49 @@ bool run_without_tracing(const Scene& scene, const Options& options, const Pixel
     return false;
 }
 
+// Eye rays start on the screen, so polygons nearer the eye than screendist are not seen: said once,
+// with the screendist that would show them.
+void warn_near_plane(const Scene& scene, const RunConsole& console) {
+    const NearPlaneReport near = polygons_before_screen(scene);
+    if (near.polygons == 0 || !console.warning) {
+        return;
+    }
+    const double showing = screendist_showing(near);
+    console.warning(fmt::format(
+        "{} between the eye and the screen (screendist {:g}), where eye rays, starting on "
+        "the screen, do not see {}{}",
+        near.polygons == 1 ? std::string("1 polygon lies")
+                           : fmt::format("{} polygons lie", near.polygons),
+        scene.view.screen_distance, near.polygons == 1 ? "it" : "them",
+        showing > 0.0 ? fmt::format(": a screendist of {:g} would show {}", showing,
+                                    near.polygons == 1 ? "it" : "them")
+                      : std::string(": one reaches the eye itself, so no screendist shows it "
+                                    "whole")));
+}
+
+// Refuses a render that would not fit in memory, before its film or method is allocated, or
+// whose outputs would not fit on their disks.
+void check_resources(const Scene& scene, const Options& options, const PixelRect& window,
+                     const RunConsole& console) {
+    if (options.debug_octree_interactive) {
+        return;
+    }
+    if (!options.random_rays) {
+        for (const std::filesystem::path& path : output_paths(options)) {
+            check_output_space(path, window);
+        }
+    }
+    const bool window_opens = console.open_window && !options.random_rays;
+    const std::optional<MemoryLimit> limit =
+        options.max_memory_gib ? MemoryLimit{static_cast<std::uint64_t>(std::min(
+                                                 *options.max_memory_gib * 1073741824.0, 1.8e19)),
+                                             "--max-memory"}
+                               : available_memory();
+    if (limit) {
+        check_memory(estimate_render_memory(scene, options, window, window_opens), *limit);
+    }
+}
+
 }  // namespace
 
 std::filesystem::path resolve_scene_path(const std::string& scene_argument) {
@@ -423,6 +449,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
     times.load_seconds = seconds_since(phase);
 
     const RenderSettings settings = render_settings(scene, options, console, resume, inputs);
+    check_resources(scene, options, settings.window, console);
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
     if (shown && resume != nullptr) {
         show_finished_rows(*resume, shown->board());  // over the wireframe, as if just drawn
@@ -431,6 +458,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
         return RunOutcome::Finished;
     }
 
+    warn_near_plane(scene, console);
     phase = Clock::now();
     const AcceleratorStack stack(scene, options.accel,
                                  {console.note, console.warning, console.trace});

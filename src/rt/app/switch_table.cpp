@@ -506,6 +506,14 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "the window to close; at once when standard input is not a terminal). Without "
                 "a display it renders without one (docs/window.md).",
      .section = "1.2.2", .example = "--no-window", .recorded = false},
+    {.spelling = "--max-memory", .form = Number, .topic = Program, .first = {"GIB", kPositive},
+     .apply = [](Options& o, A a) { o.max_memory_gib = a.first; },
+     .summary = "Refuse a render that needs more than GIB gibibytes",
+     .details = "Before allocating the picture, rt estimates the memory the render needs (the "
+                "film, the window, the outputs' buffers, the intersection method) and refuses it "
+                "if it needs more than the memory available (MemAvailable, or the cgroup's or "
+                "ulimit's limit). This sets the limit instead.",
+     .section = "new", .example = "--max-memory 2", .recorded = false},
 });
 #pragma GCC diagnostic pop
 // clang-format on

@@ -173,7 +173,7 @@ void write_gro(const Film& film, const std::filesystem::path& path) {
 
 GroHeader read_gro_header_only(const std::filesystem::path& path) {
     std::ifstream in = open_gro(path);
-    const GroHeader header = read_gro_header(in, path.string());
+    GroHeader header = read_gro_header(in, path.string());  // not const: returned by a move
     check_pixel_bytes(header, file_size_of(path), path.string());
     return header;
 }

@@ -7,6 +7,13 @@ namespace rt {
 
 namespace {
 
+// lgamma_r rather than std::lgamma: glibc's lgamma also writes the global signgam, and the render
+// threads call this at the same time (concurrency-mt-unsafe).
+double log_gamma(double a) {
+    int sign = 0;
+    return ::lgamma_r(a, &sign);
+}
+
 constexpr double kDisplayLevels = 255.0;
 
 // P(a, x) by its power series; converges quickly for x < a + 1.
@@ -20,7 +27,7 @@ double lower_gamma_series(double a, double x) {
             break;
         }
     }
-    return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
+    return sum * std::exp(-x + a * std::log(x) - log_gamma(a));
 }
 
 // Q(a, x) = 1 - P(a, x) by Lentz's continued fraction; converges quickly for x >= a + 1.
@@ -44,7 +51,7 @@ double upper_gamma_fraction(double a, double x) {
             break;
         }
     }
-    return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
+    return std::exp(-x + a * std::log(x) - log_gamma(a)) * h;
 }
 
 }  // namespace

@@ -26,12 +26,12 @@ Vec3 around(const Vec3& axis, double cos_theta, double phi) {
 
 }  // namespace
 
-void orthonormal_basis(const Vec3& n, Vec3& tangent, Vec3& bitangent) {
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1.0 / (sign + n.z);
-    const double b = n.x * n.y * a;
-    tangent = {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
-    bitangent = {b, sign + n.y * n.y * a, -n.y};
+void orthonormal_basis(const Vec3& axis, Vec3& tangent, Vec3& bitangent) {
+    const double sign = std::copysign(1.0, axis.z);
+    const double a = -1.0 / (sign + axis.z);
+    const double b = axis.x * axis.y * a;
+    tangent = {1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
+    bitangent = {b, sign + axis.y * axis.y * a, -axis.y};
 }
 
 Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u2) {

@@ -138,7 +138,7 @@ RTCRay embree_ray(const Ray& ray, Interval t) {
 
 std::optional<Hit> EmbreeAccelerator::closest_hit(const Ray& ray, Interval t,
                                                   TraceCounters& /*counters*/) const {
-    RTCIntersectContext context;
+    RTCIntersectContext context{};  // zeroed, then set by rtcInitIntersectContext
     rtcInitIntersectContext(&context);
     RTCRayHit hit{};
     hit.ray = embree_ray(ray, t);
@@ -155,7 +155,7 @@ std::optional<Hit> EmbreeAccelerator::closest_hit(const Ray& ray, Interval t,
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, Interval t, TraceCounters& /*counters*/) const {
-    RTCIntersectContext context;
+    RTCIntersectContext context{};  // zeroed, then set by rtcInitIntersectContext
     rtcInitIntersectContext(&context);
     RTCRay r = embree_ray(ray, t);
     if (!embree_accepts(r)) {
