@@ -3,7 +3,7 @@
 # never into the seeds; a finding fails the test and is left there as crash-*, leak-*, ...
 file(REMOVE_RECURSE ${SCRATCH})
 # Leaks inside Assimp's importers are not ours.
-set(ENV{LSAN_OPTIONS} "suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp")
+set(ENV{LSAN_OPTIONS} "suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
 file(MAKE_DIRECTORY ${SCRATCH}/corpus)
 execute_process(
   COMMAND ${FUZZER} -runs=${RUNS} -seed=1 -rss_limit_mb=2048 -timeout=10 -max_len=65536

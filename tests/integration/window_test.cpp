@@ -98,7 +98,7 @@ bool row_is_black(const Image8& a, int y) {
 // Screenshots until `good` holds for one (returned), or none within the limit (empty picture).
 template <typename Shoot, typename Good>
 Image8 shoot_until(Shoot shoot, seconds limit, Good good) {
-    const auto until = std::chrono::steady_clock::now() + limit;
+    const auto until = std::chrono::steady_clock::now() + stretched(limit);
     while (std::chrono::steady_clock::now() < until) {
         Image8 shot = shoot();
         if (shot.width > 0 && good(shot)) {

@@ -231,6 +231,10 @@ Image8 xwd_screenshot(const std::string& display, const std::string& which) {
 
 }  // namespace
 
+std::chrono::milliseconds stretched(std::chrono::milliseconds limit) {
+    return limit * kSlowdown;
+}
+
 Image8 screenshot(const std::string& display, const std::string& title) {
     return xwd_screenshot(display, "-name '" + title + "'");
 }

@@ -66,6 +66,10 @@ private:
 
 /// The window titled `title` on `display`, as xwd sees it; an empty picture when there is none.
 Image8 screenshot(const std::string& display, const std::string& title);
+
+/// A wait limit stretched as the programs are slowed: 5 times under AddressSanitizer, so that a
+/// limit still means "hangs", not "is slow".
+std::chrono::milliseconds stretched(std::chrono::milliseconds limit);
 /// The same for the window with X id `id` (a title that changes cannot name it).
 Image8 screenshot_of(const std::string& display, unsigned long id);
 
