@@ -1,10 +1,12 @@
 #include "command_line/command_line.h"
 
 #include <cstdint>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <utility>
 
+#include "rt/core/error.h"
 #include "rt/core/text.h"
 
 #include <fmt/format.h>
@@ -91,6 +93,34 @@ CLI::Validator whole_number_at_least(long long least) {
                                    quote_token(text));
             },
             ""};
+}
+
+int exit_code_of(std::string_view program, const std::function<int()>& body,
+                 std::string_view usage_hint) {
+    const auto print = [&](std::string_view message) {
+        std::cerr << program << ": " << message << '\n';
+    };
+    try {
+        return body();
+    } catch (const InputError& e) {
+        print(e.what());
+        return kBadInputExit;
+    } catch (const UsageError& e) {
+        print(e.what());
+        if (!usage_hint.empty()) {
+            print(usage_hint);
+        }
+        return kUsageExit;
+    } catch (const NotImplementedError& e) {
+        print(e.what());
+        return kUsageExit;
+    } catch (const IoError& e) {
+        print(e.what());
+        return kIoExit;
+    } catch (const std::exception& e) {
+        print(std::string("internal error: ") + e.what());
+        return kInternalExit;
+    }
 }
 
 }  // namespace rt::cli

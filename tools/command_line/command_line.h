@@ -5,15 +5,27 @@
 // options, which a maintained parser reads better than hand-written loops.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
 namespace rt::cli {
 
 /// rt's exit codes: 0 ok, 1 bad input file, 2 usage, 3 I/O, 4 internal.
+constexpr int kOkExit = 0;
+constexpr int kBadInputExit = 1;
 constexpr int kUsageExit = 2;
+constexpr int kIoExit = 3;
+constexpr int kInternalExit = 4;
+
+/// Runs body and returns its exit code; an rt::Error it throws is printed as "PROGRAM: message"
+/// and becomes its exit code (any other exception: "internal error", 4). `usage_hint`, if given,
+/// follows a usage error on a line of its own.
+int exit_code_of(std::string_view program, const std::function<int()>& body,
+                 std::string_view usage_hint = {});
 
 /// What a command line without any argument asks for.
 enum class BareCommand { Runs, PrintsHelp };

@@ -1,9 +1,7 @@
 // merge PART... [--output FILE]...: joins the part files of `rt SCENE --tile I/N` into the .gro
 // (and images) a single run of rt writes, pixel for pixel (docs/distributed.md). Reads the
 // command line with CLI11, calls the image library, maps errors to exit codes.
-#include <exception>
 #include <filesystem>
-#include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,11 +16,7 @@
 namespace {
 
 // Exit codes shared with rt: 0 ok, 1 bad input file, 2 usage, 3 I/O, 4 internal.
-constexpr int kOk = 0;
-constexpr int kBadInput = 1;
-constexpr int kUsage = rt::cli::kUsageExit;
-constexpr int kIo = 3;
-constexpr int kInternal = 4;
+constexpr int kOk = rt::cli::kOkExit;
 
 struct MergeArgs {
     std::vector<std::string> parts;
@@ -72,14 +66,10 @@ int run(const MergeArgs& m) {
     return kOk;
 }
 
-void print_error(const std::string& message) {
-    std::cerr << "merge: " << message << '\n';
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
+    return rt::cli::exit_code_of("merge", [&] {
         CLI::App app(
             "Joins the part files of rt SCENE --tile I/N (one per part, I from 1 to N) into\n"
             "the .gro a single run of rt writes, pixel for pixel, and into the --output\n"
@@ -95,17 +85,5 @@ int main(int argc, char** argv) {
             return *stop;
         }
         return run(args);
-    } catch (const rt::InputError& e) {
-        print_error(e.what());
-        return kBadInput;
-    } catch (const rt::UsageError& e) {
-        print_error(e.what());
-        return kUsage;
-    } catch (const rt::IoError& e) {
-        print_error(e.what());
-        return kIo;
-    } catch (const std::exception& e) {
-        print_error(std::string("internal error: ") + e.what());
-        return kInternal;
-    }
+    });
 }

@@ -1,7 +1,6 @@
 // show NAME [--output FILE]... [--info] [-m F] [-c]: looks at a .gro (or .exr) picture written by
 // rt (manual 1.2), in a window or converted. Reads the command line with CLI11, calls the image
 // library, maps errors to exit codes.
-#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -19,11 +18,7 @@
 namespace {
 
 // Exit codes shared with rt: 0 ok, 1 bad input file, 2 usage, 3 I/O, 4 internal.
-constexpr int kOk = 0;
-constexpr int kBadInput = 1;
-constexpr int kUsage = rt::cli::kUsageExit;
-constexpr int kIo = 3;
-constexpr int kInternal = 4;
+constexpr int kOk = rt::cli::kOkExit;
 
 struct ShowArgs {
     std::string name;
@@ -96,44 +91,27 @@ int run(const ShowArgs& s) {
     return kOk;
 }
 
-void print_error(const std::string& message) {
-    std::cerr << "show: " << message << '\n';
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        CLI::App app(
-            "Looks at a .gro picture written by rt (manual 1.2), or an .exr: shows it in a\n"
-            "window (also a .png or .ppm; keys + and - change the exposure, 0 restores it,\n"
-            "Esc or Enter closes it), prints what it holds, or converts it to PNG, PPM,\n"
-            ".gro or .exr. Without a display, \"show NAME\" prints what --info prints.\n"
-            "Exit codes: 0 ok, 1 bad picture, 2 usage, 3 I/O, 4 internal.",
-            "show");
-        rt::cli::configure(app);
-        ShowArgs args;
-        add_options(app, args);
-        if (const std::optional<int> stop =
-                rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
-            return *stop;
-        }
-        return run(args);
-    } catch (const rt::InputError& e) {
-        print_error(e.what());
-        return kBadInput;
-    } catch (const rt::UsageError& e) {
-        print_error(e.what());
-        print_error("run 'show --help' for the options");
-        return kUsage;
-    } catch (const rt::NotImplementedError& e) {
-        print_error(e.what());
-        return kUsage;
-    } catch (const rt::IoError& e) {
-        print_error(e.what());
-        return kIo;
-    } catch (const std::exception& e) {
-        print_error(std::string("internal error: ") + e.what());
-        return kInternal;
-    }
+    return rt::cli::exit_code_of(
+        "show",
+        [&] {
+            CLI::App app(
+                "Looks at a .gro picture written by rt (manual 1.2), or an .exr: shows it in a\n"
+                "window (also a .png or .ppm; keys + and - change the exposure, 0 restores it,\n"
+                "Esc or Enter closes it), prints what it holds, or converts it to PNG, PPM,\n"
+                ".gro or .exr. Without a display, \"show NAME\" prints what --info prints.\n"
+                "Exit codes: 0 ok, 1 bad picture, 2 usage, 3 I/O, 4 internal.",
+                "show");
+            rt::cli::configure(app);
+            ShowArgs args;
+            add_options(app, args);
+            if (const std::optional<int> stop =
+                    rt::cli::parse(app, argc, argv, rt::cli::BareCommand::PrintsHelp)) {
+                return *stop;
+            }
+            return run(args);
+        },
+        "run 'show --help' for the options");
 }
