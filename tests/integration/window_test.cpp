@@ -104,6 +104,8 @@ Image8 shoot_until(Shoot shoot, seconds limit, Good good) {
         if (shot.width > 0 && good(shot)) {
             return shot;
         }
+        // Each shot starts X clients; a pause keeps them from crowding the server's queue.
+        std::this_thread::sleep_for(milliseconds(20));
     }
     return {};
 }
@@ -255,7 +257,6 @@ TEST(Window, ShowDisplaysThePictureAndChangesItsExposureWithKeys) {
         convert.insert(convert.end(), args.begin(), args.end());
         ASSERT_EQ(run_program("show", convert, dir.path()).exit_code, 0);
     }
-    SpawnedProgram show("show", {"pic.gro"}, dir.path(), {x.name(), false});
     // Its title changes with the pointer: it is found by the start of its title.
     const auto shoot = [&] {
         const unsigned long id =
@@ -263,11 +264,26 @@ TEST(Window, ShowDisplaysThePictureAndChangesItsExposureWithKeys) {
         return id == 0 ? Image8{} : screenshot_of(x.name(), id);
     };
     const Image8 plain = read_ppm(dir.path() / "plain.ppm");
-    EXPECT_EQ(
-        shoot_until(shoot, seconds(10), [&](const Image8& s) { return pictures_match(s, plain); })
-            .width,
-        512)
-        << "show never drew the picture";
+    // show exits at once (status 0, "no window: ..." on its standard error) when it cannot reach
+    // the display. That happened once on a loaded CI machine, with nothing to tell why: a second
+    // start is allowed for that case alone, and the first one's words are kept in the report.
+    std::optional<SpawnedProgram> show;
+    std::string earlier_errors;
+    Image8 drawn;
+    for (int start = 0; start < 2 && drawn.width == 0; ++start) {
+        if (show) {
+            earlier_errors += show->errors();
+        }
+        show.emplace("show", std::vector<std::string>{"pic.gro"}, dir.path(),
+                     SpawnSettings{x.name(), false});
+        drawn = shoot_until(shoot, seconds(10),
+                            [&](const Image8& s) { return pictures_match(s, plain); });
+        if (drawn.width == 0 && !show->wait_for_exit(milliseconds(0)).has_value()) {
+            break;  // it is running and shows something else: no second start
+        }
+    }
+    EXPECT_EQ(drawn.width, 512) << "show never drew the picture; its errors: " << earlier_errors
+                                << show->errors();
     // The pointer over the picture and + pressed (keys go to the window under the pointer).
     xdotool(x, "mousemove 100 300 key plus");
     const Image8 bright = read_ppm(dir.path() / "bright.ppm");
@@ -275,12 +291,12 @@ TEST(Window, ShowDisplaysThePictureAndChangesItsExposureWithKeys) {
         shoot_until(shoot, seconds(10), [&](const Image8& s) { return pictures_match(s, bright); })
             .width,
         512)
-        << "+ did not show the picture at " << brighter;
+        << "+ did not show the picture at " << brighter << "; show's errors: " << show->errors();
     const std::string name = xdotool(x, "search --name '^show: ' getwindowname");
     EXPECT_NE(name.find("-m1.41"), std::string::npos) << name;
     EXPECT_NE(name.find("(100, 300) = "), std::string::npos) << name;
     xdotool(x, "key Escape");
-    EXPECT_EQ(show.wait_for_exit(seconds(10)), 0) << show.errors();
+    EXPECT_EQ(show->wait_for_exit(seconds(10)), 0) << show->errors();
 }
 
 // Closing the window stops the render as Ctrl-C does: at once, even deep in a ray tree (the nested
