@@ -14,6 +14,10 @@ bin=$1
 scene=$2
 rounds=$3
 shift 3
+if [ ! -f "$scene" ]; then
+    echo "scaling.sh: no scene file $scene" >&2
+    exit 2
+fi
 mpi=(mpirun --oversubscribe)
 if [ "$(id -u)" -eq 0 ]; then
     mpi+=(--allow-run-as-root)
@@ -22,8 +26,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 seconds() {
+    # A failed run stops the whole script (this runs in a subshell, so it kills its parent).
     /usr/bin/time -f '%e %U %S' -o times.txt "$@" > /dev/null 2> err.txt || {
         cat err.txt >&2
+        kill $$
         exit 1
     }
     read -r wall user system < times.txt

@@ -36,6 +36,11 @@ bool started_by_mpi_launcher() {
 }
 
 MpiWorld::MpiWorld(int& argc, char**& argv) {
+    // rt's messages are rows of pixels, a few kilobytes each, so OpenMPI's ob1 layer (shared
+    // memory on a machine, TCP between machines) carries them as fast as UCX would; probing UCX
+    // at start costs 0.2 s of every run (docs/distributed.md). A choice the user made, with
+    // `mpirun --mca pml ucx` or OMPI_MCA_pml, stands.
+    ::setenv("OMPI_MCA_pml", "ob1", 0);  // NOLINT(concurrency-mt-unsafe): before any thread
     int provided = 0;
     if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
         throw ClusterError("MPI could not start (MPI_Init_thread failed)");
