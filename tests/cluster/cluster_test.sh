@@ -4,7 +4,8 @@
 # CASE same-picture: 3 ranks write the single process's pixels, bit for bit;
 #      killed-rank: a rank killed mid-render fails the run and leaves the outputs as they were;
 #      failing-rank: a rank that cannot read the scene is named by rank 0, nothing is written;
-#      other-picture: a rank started with other switches is refused.
+#      other-picture: a rank started with other switches is refused;
+#      other-inputs: a rank that read other scene files (same names, other bytes) is refused.
 set -u
 # Under AddressSanitizer (scripts/build-and-test-sanitized): OpenMPI's plugins, loaded with dlopen
 # and unloaded at MPI_Finalize, and hwloc leave their allocations at exit; the stacks end in
@@ -125,6 +126,22 @@ other-picture)
     [ "$status" -ne 0 ] || fail "mpirun exited 0 though rank 2 rendered another picture"
     grep -q "^rt: rank 2 renders another picture: 'scenes/small -Dd" err.txt ||
         fail "rank 0 does not name rank 2's switches"
+    [ ! -e small.gro ] || fail "a picture was written"
+    ;;
+other-inputs)
+    # Rank 2's folder holds the same scene with another Attributes file: same switches, other
+    # picture.
+    mkdir other
+    cp -r scenes other/
+    sed -i 's/^[$] 0.0 0.2 0.98 /$ 0.0 0.3 0.98 /' other/scenes/Attributes
+    cmp -s scenes/Attributes other/scenes/Attributes && fail "the Attributes file did not change"
+    "${mpi[@]}" -n 2 "$bin/rt" scenes/small --threads 1 --quiet : \
+        -n 1 --wdir "$work/other" "$bin/rt" scenes/small --threads 1 --quiet 2> err.txt
+    status=$?
+    cat err.txt
+    [ "$status" -ne 0 ] || fail "mpirun exited 0 though rank 2 read other files"
+    grep -q "^rt: rank 2 read other scene files (inputs fnv1a64:" err.txt ||
+        fail "rank 0 does not name rank 2's other files"
     [ ! -e small.gro ] || fail "a picture was written"
     ;;
 *)

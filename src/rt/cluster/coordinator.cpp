@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "rt/app/input_digest.h"
 #include "rt/app/interrupt.h"
 #include "rt/cluster/cluster_error.h"
 #include "rt/cluster/local_render.h"
@@ -71,6 +72,7 @@ Film Coordinator::render(const Scene& scene, const Accelerator& accel,
     rows_total_ = w.height();
     next_row_ = 0;
     const std::string expected = identity_ + " " + window_text(w);
+    const std::string expected_inputs = input_digest(scene);
     Film film(scene.view.width, scene.view.height, w);
     std::vector<char> gathered(static_cast<std::size_t>(rows_total_), 0);
     int rows_gathered = 0;
@@ -100,14 +102,29 @@ Film Coordinator::render(const Scene& scene, const Accelerator& accel,
     const auto handle = [&](const MpiWorld::Message& m) {
         Unpacker in(m.bytes);
         switch (m.tag) {
-            case kHello:
-                if (in.rest_as_text() != expected) {
+            case kHello: {
+                // "ARGUMENTS window L T R B inputs DIGEST": the picture asked for, then what the
+                // rank read to render it (a machine with other scene files would render another
+                // picture with the same switches).
+                const std::string hello = in.rest_as_text();
+                const std::size_t at = hello.rfind(" inputs ");
+                const std::string asked = hello.substr(0, at);
+                const std::string inputs = at == std::string::npos
+                                               ? ""
+                                               : hello.substr(at + std::string(" inputs ").size());
+                if (asked != expected) {
                     failure = fmt::format(
                         "rank {} renders another picture: '{}', where rank 0 "
                         "renders '{}'",
-                        m.from, in.rest_as_text(), expected);
+                        m.from, asked, expected);
+                } else if (inputs != expected_inputs) {
+                    failure = fmt::format(
+                        "rank {} read other scene files (inputs {}, rank 0's {}): every machine "
+                        "needs the same files",
+                        m.from, inputs, expected_inputs);
                 }
                 break;
+            }
             case kRequest: {
                 const auto [first, count] = take_rows();
                 world_.send(m.from, kWork,

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <thread>
 
+#include "rt/app/input_digest.h"
 #include "rt/app/interrupt.h"
 #include "rt/cluster/cluster_error.h"
 #include "rt/cluster/local_render.h"
@@ -19,11 +20,12 @@ Helper::Helper(MpiWorld& world, std::string identity)
 
 void Helper::render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings) {
     const PixelRect& w = settings.window;
-    world_.send(0, kHello,
-                Packer()
-                    .put_text(identity_ +
-                              fmt::format(" window {} {} {} {}", w.left, w.top, w.right, w.bottom))
-                    .bytes);
+    world_.send(
+        0, kHello,
+        Packer()
+            .put_text(identity_ + fmt::format(" window {} {} {} {} inputs {}", w.left, w.top,
+                                              w.right, w.bottom, input_digest(scene)))
+            .bytes);
     LocalRender local(scene, accel, settings);
     bool asked = false;
     while (true) {
