@@ -13,6 +13,7 @@ struct ReferenceRange {
     std::uint32_t begin = 0;
     std::uint32_t end = 0;
     Box box;                      ///< of the references' boxes
+    Box centroids;                ///< of the references' box centres
     std::uint32_t triangles = 0;  ///< fan triangles in the range
     std::uint32_t size() const { return end - begin; }
 };
@@ -32,7 +33,7 @@ constexpr std::uint32_t kMaxLeafTriangles = 8;
 SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange& range,
                           bool by_median);
 
-/// The box and triangle count of refs[begin, end).
+/// The boxes and triangle count of refs[begin, end).
 ReferenceRange make_range(std::span<const PolygonReference> refs, std::uint32_t begin,
                           std::uint32_t end);
 
