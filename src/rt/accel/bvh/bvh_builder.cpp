@@ -34,8 +34,8 @@ struct Subtree {
 // Builds one subtree into its own arrays; a parent builder appends them to its own.
 class SubtreeBuilder {
 public:
-    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, bool parallel)
-        : scene_(scene), refs_(refs), parallel_(parallel) {}
+    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, unsigned threads)
+        : scene_(scene), refs_(refs), threads_(threads) {}
 
     /// The child word for `p` (an inner node's index is local to this builder).
     std::uint32_t build(Pending p, int depth);
@@ -44,7 +44,7 @@ public:
 
 private:
     Pending pending(const ReferenceRange& r, int depth) {
-        return {r, split_range(refs_, r, depth >= kMedianDepth)};
+        return {r, split_range(refs_, r, depth >= kMedianDepth, threads_)};
     }
     // A leaf's child word is written once its packets are (fill_leaves).
     std::uint32_t leaf(const ReferenceRange& r, std::uint32_t node, int slot) {
@@ -57,7 +57,7 @@ private:
 
     const Scene& scene_;
     std::span<PolygonReference> refs_;
-    bool parallel_;
+    unsigned threads_;  ///< more than one: spawn subtrees, bin big ranges in parallel
     std::vector<Node> nodes_;
     std::vector<PendingLeaf> leaves_;
 };
@@ -117,9 +117,9 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
         const Pending& child = children[c];
         if (child.split.leaf) {
             nodes_[index].child[c] = leaf(child.range, index, c);
-        } else if (parallel_ && depth < kParallelDepth && child.range.size() >= kParallelSize) {
+        } else if (threads_ > 1 && depth < kParallelDepth && child.range.size() >= kParallelSize) {
             spawned.emplace_back(c, std::async(std::launch::async, [this, child, depth] {
-                                     SubtreeBuilder sub(scene_, refs_, true);
+                                     SubtreeBuilder sub(scene_, refs_, threads_);
                                      sub.build(child, depth + 1);
                                      return sub.take();
                                  }));
@@ -169,9 +169,9 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
         return result;
     }
     const std::span<PolygonReference> all(refs.bounded);
-    SubtreeBuilder builder(scene, all, threads > 1);
+    SubtreeBuilder builder(scene, all, threads);
     const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
-    result.root = builder.build({whole, split_range(all, whole, false)}, 0);
+    result.root = builder.build({whole, split_range(all, whole, false, threads)}, 0);
     Subtree tree = builder.take();
     result.nodes = std::move(tree.nodes);
     fill_leaves(scene, all, tree.leaves, result, threads);

@@ -4,6 +4,9 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <thread>
+#include <vector>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -153,13 +156,55 @@ void bin_references(std::span<const PolygonReference> refs, const ReferenceRange
 }
 #endif
 
+// Ranges at least this big are binned by `threads` threads, each a run of the references into
+// bins of its own, then summed: the same bins as one pass (min, max and counts do not depend on
+// the order).
+constexpr std::uint32_t kParallelBinning = 1u << 18;
+
+void bin_in_parallel(std::span<const PolygonReference> refs, const ReferenceRange& r,
+                     const std::array<Binner, 3>& binners, int count, unsigned threads,
+                     AxisBins& bins) {
+    if (threads <= 1 || r.size() < kParallelBinning) {
+        bin_references(refs, r, binners, count, bins);
+        return;
+    }
+    const auto at = [&](unsigned t) {
+        return r.begin + static_cast<std::uint32_t>(std::uint64_t{r.size()} * t / threads);
+    };
+    std::vector<std::unique_ptr<AxisBins>> parts;
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) {
+        parts.push_back(std::make_unique<AxisBins>());
+        pool.emplace_back([&, t, part = parts.back().get()] {
+            ReferenceRange run;
+            run.begin = at(t);
+            run.end = at(t + 1);
+            bin_references(refs, run, binners, count, *part);
+        });
+    }
+    ReferenceRange first;
+    first.begin = r.begin;
+    first.end = at(1);
+    bin_references(refs, first, binners, count, bins);
+    for (std::thread& t : pool) {
+        t.join();
+    }
+    for (const auto& part : parts) {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int b = 0; b < count; ++b) {
+                bins[axis][b].grow((*part)[axis][b]);
+            }
+        }
+    }
+}
+
 // Bins every reference on the three axes in one pass over them (each axis whose centroids
 // spread), then sweeps each axis's bins in turn, axis 0 first, for the cheapest split.
 void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange& r,
-                   const std::array<Binner, 3>& binners, int count, AxisBins& bins,
-                   BestSplit& best) {
+                   const std::array<Binner, 3>& binners, int count, unsigned threads,
+                   AxisBins& bins, BestSplit& best) {
     const Box& cb = r.centroids;
-    bin_references(refs, r, binners, count, bins);
+    bin_in_parallel(refs, r, binners, count, threads, bins);
     for (int axis = 0; axis < 3; ++axis) {
         if (!(cb.hi[axis] > cb.lo[axis])) {
             continue;
@@ -248,7 +293,7 @@ ReferenceRange make_range(std::span<const PolygonReference> refs, std::uint32_t 
 }
 
 SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange& range,
-                          bool by_median) {
+                          bool by_median, unsigned threads) {
     if (range.size() <= 1 || (range.triangles <= 4 && !by_median)) {
         return {};
     }
@@ -266,7 +311,7 @@ SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange
         std::fill_n(axis_bins.begin(), count, Bin{});
     }
     BestSplit best;
-    evaluate_axes(refs, range, binners, count, bins, best);
+    evaluate_axes(refs, range, binners, count, threads, bins, best);
     const double area = range.box.half_area();
     const double leaf_cost = area * packets(range.triangles);
     if (range.triangles <= kMaxLeafTriangles && leaf_cost <= best.cost + kTraversalCost * area) {
