@@ -56,7 +56,8 @@ void add_lab_options(CLI::App& app, LabOptions& o) {
            },
            "1k and 10k triangles, shorter runs")
         ->trigger_on_parse();
-    app.add_option("--sizes", o.sizes, "triangle counts, e.g. 1k,10k,100k,1M (the default)")
+    app.add_option("--sizes", o.sizes,
+                   "triangle counts, e.g. 1k,10k,100k,1M (the default) or 10M (no brute force)")
         ->type_name("LIST")
         ->delimiter(',')
         ->allow_extra_args(false)
@@ -104,6 +105,10 @@ void add_lab_options(CLI::App& app, LabOptions& o) {
         ->type_name("FILE")
         ->trigger_on_parse();
     app.add_option("--svg", o.svg_file, "also draw rays/s against triangle count (log-log)")
+        ->type_name("FILE")
+        ->trigger_on_parse();
+    app.add_option("--time-svg", o.time_svg_file,
+                   "also draw ns per ray (one thread) against triangle count (log-log)")
         ->type_name("FILE")
         ->trigger_on_parse();
     app.add_option("--source", o.source_dir, "the source tree, for scenes/twocubes.scn (default .)")

@@ -19,8 +19,11 @@ struct LabOptions {
     unsigned threads = 0;            ///< for the all-cores runs; 0: every hardware thread
     double seconds_per_run = 0.3;    ///< each measurement repeats its rays at least this long
     double brute_force_tests = 2e8;  ///< ray-polygon tests brute force may spend per measurement
+    /// Brute force is skipped on bigger meshes: its subsample would be a handful of rays.
+    std::uint64_t brute_force_largest = 1000000;
     std::string csv_file;
     std::string svg_file;
+    std::string time_svg_file;     ///< time per ray against triangles, log-log
     int seads_side = 0;            ///< SEADS voxels a side; 0: suggested_seads_resolution
     int octree_depth = 0;          ///< octree depth; 0: suggested_octree_depth
     std::string source_dir = ".";  ///< where scenes/twocubes.scn is

@@ -27,6 +27,10 @@ void run_scene(const rt::Scene& scene, const std::string& mesh, const LabOptions
     rays.primary = rt::lab::camera_rays(scene);
     rays.random = rt::lab::random_rays(scene, rays.primary.size());
     for (const rt::AccelKind kind : options.accels) {
+        if (kind == rt::AccelKind::BruteForce &&
+            rt::lab::fan_triangles(scene) > options.brute_force_largest) {
+            continue;
+        }
         if (auto m = rt::lab::measure(scene, mesh, kind, rays, options)) {
             rt::lab::print_table_row(std::cout, *m);
             results.push_back(*m);
@@ -56,6 +60,9 @@ int run(const LabOptions& options) {
     }
     if (!options.svg_file.empty()) {
         rt::lab::write_svg_plot(options.svg_file, results);
+    }
+    if (!options.time_svg_file.empty()) {
+        rt::lab::write_time_plot(options.time_svg_file, results);
     }
     return 0;
 }

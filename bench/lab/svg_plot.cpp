@@ -33,9 +33,23 @@ std::string colour(const std::string& accel) {
     return it == colours.end() ? "#000000" : it->second;
 }
 
+// What a plot shows for one measurement and kind of ray, and its axis's name.
+struct Quantity {
+    double (*value)(const Measurement& m, bool random);
+    const char* label;
+};
+
 double rate(const Measurement& m, bool random) {
     return random ? m.random_one.mrays_per_second : m.primary_one.mrays_per_second;
 }
+
+double nanoseconds_per_ray(const Measurement& m, bool random) {
+    const double r = rate(m, random);
+    return r > 0 ? 1e3 / r : 0.0;
+}
+
+constexpr Quantity kRate{rate, "Mrays/s, one thread"};
+constexpr Quantity kTime{nanoseconds_per_ray, "ns per ray, one thread"};
 
 // Decades covering the positive values.
 void decades(const std::vector<double>& values, double& lo, double& hi) {
@@ -53,16 +67,16 @@ void decades(const std::vector<double>& values, double& lo, double& hi) {
     }
 }
 
-std::string draw_panel(const Panel& panel, const std::vector<Measurement>& results, double left,
-                       double top) {
+std::string draw_panel(const Panel& panel, const std::vector<Measurement>& results,
+                       const Quantity& quantity, double left, double top) {
     std::vector<const Measurement*> mine;
     std::vector<double> xs;
     std::vector<double> ys;
     for (const Measurement& m : results) {
-        if (m.mesh == panel.mesh && m.triangles > 0 && rate(m, panel.random) > 0) {
+        if (m.mesh == panel.mesh && m.triangles > 0 && quantity.value(m, panel.random) > 0) {
             mine.push_back(&m);
             xs.push_back(static_cast<double>(m.triangles));
-            ys.push_back(rate(m, panel.random));
+            ys.push_back(quantity.value(m, panel.random));
         }
     }
     double x0, x1, y0, y1;
@@ -94,12 +108,12 @@ std::string draw_panel(const Panel& panel, const std::vector<Measurement>& resul
     svg += fmt::format(
         "<text x='{}' y='{}' font-size='11' text-anchor='middle'>triangles</text>\n"
         "<text x='{}' y='{}' font-size='11' transform='rotate(-90 {} {})' "
-        "text-anchor='middle'>Mrays/s, one thread</text>\n",
-        ox + w / 2, oy + 34, left + 16, oy - h / 2, left + 16, oy - h / 2);
+        "text-anchor='middle'>{}</text>\n",
+        ox + w / 2, oy + 34, left + 16, oy - h / 2, left + 16, oy - h / 2, quantity.label);
     std::map<std::string, std::vector<std::pair<double, double>>> lines;
     for (const Measurement* m : mine) {
         lines[m->accel].push_back(
-            {px(static_cast<double>(m->triangles)), py(rate(*m, panel.random))});
+            {px(static_cast<double>(m->triangles)), py(quantity.value(*m, panel.random))});
     }
     for (auto& [accel, points] : lines) {
         std::sort(points.begin(), points.end());
@@ -115,9 +129,8 @@ std::string draw_panel(const Panel& panel, const std::vector<Measurement>& resul
     return svg;
 }
 
-}  // namespace
-
-void write_svg_plot(const std::string& file, const std::vector<Measurement>& results) {
+void write_plot(const std::string& file, const std::vector<Measurement>& results,
+                const Quantity& quantity) {
     std::vector<std::string> meshes;
     std::vector<std::string> accels;
     for (const Measurement& m : results) {
@@ -136,7 +149,7 @@ void write_svg_plot(const std::string& file, const std::vector<Measurement>& res
         width, height);
     for (std::size_t i = 0; i < meshes.size(); ++i) {
         for (int r = 0; r < 2; ++r) {
-            svg += draw_panel({meshes[i], r == 1}, results, r * kPanelWidth,
+            svg += draw_panel({meshes[i], r == 1}, results, quantity, r * kPanelWidth,
                               static_cast<double>(i) * kPanelHeight);
         }
     }
@@ -154,6 +167,16 @@ void write_svg_plot(const std::string& file, const std::vector<Measurement>& res
     if (!out) {
         throw IoError("rt_lab: cannot write " + file);
     }
+}
+
+}  // namespace
+
+void write_svg_plot(const std::string& file, const std::vector<Measurement>& results) {
+    write_plot(file, results, kRate);
+}
+
+void write_time_plot(const std::string& file, const std::vector<Measurement>& results) {
+    write_plot(file, results, kTime);
 }
 
 }  // namespace rt::lab

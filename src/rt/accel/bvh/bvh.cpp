@@ -7,7 +7,7 @@
 namespace rt {
 
 Bvh::Bvh(const Scene& scene, const BvhSettings& settings) : scene_(scene) {
-    bvh::PolygonReferences refs = bvh::make_polygon_references(scene);
+    bvh::PolygonReferences refs = bvh::make_polygon_references(scene, settings.build_threads);
     unbounded_ = std::move(refs.unbounded);
     tree_ = bvh::build_hierarchy(scene, refs, settings.build_threads);
     bvh::collapse_to_wide(tree_);

@@ -6,7 +6,7 @@
 #include <thread>
 #include <utility>
 
-#include "rt/accel/bvh/leaf_packets.h"
+#include "rt/accel/bvh/leaf_filling.h"
 #include "rt/accel/bvh/sah_split.h"
 
 namespace rt::bvh {
@@ -25,49 +25,51 @@ struct Pending {
     SplitDecision split;
 };
 
+// One subtree's nodes and the leaves it found (packets come after, in leaf_filling.cpp).
+struct Subtree {
+    std::vector<Node> nodes;
+    std::vector<PendingLeaf> leaves;
+};
+
 // Builds one subtree into its own arrays; a parent builder appends them to its own.
 class SubtreeBuilder {
 public:
-    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, bool parallel)
-        : scene_(scene), refs_(refs), parallel_(parallel) {}
+    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, unsigned threads)
+        : scene_(scene), refs_(refs), threads_(threads) {}
 
     /// The child word for `p` (an inner node's index is local to this builder).
     std::uint32_t build(Pending p, int depth);
 
-    Hierarchy take() {
-        Hierarchy h;
-        h.nodes = std::move(nodes_);
-        h.packets = std::move(packets_);
-        return h;
-    }
+    Subtree take() { return {std::move(nodes_), std::move(leaves_)}; }
 
 private:
     Pending pending(const ReferenceRange& r, int depth) {
-        return {r, split_range(refs_, r, depth >= kMedianDepth)};
+        return {r, split_range(refs_, r, depth >= kMedianDepth, threads_)};
     }
-    std::uint32_t leaf(const ReferenceRange& r) {
-        const std::span<const PolygonReference> refs = refs_.subspan(r.begin, r.size());
-        return kLeafBit | append_leaf_packets(scene_, refs, packets_);
+    // A leaf's child word is written once its packets are (fill_leaves).
+    std::uint32_t leaf(const ReferenceRange& r, std::uint32_t node, int slot) {
+        leaves_.push_back({node, static_cast<std::uint32_t>(slot), r.begin, r.end});
+        return kLeafBit;
     }
     void fill(std::uint32_t index, Pending p, int depth);
-    std::uint32_t append(Hierarchy&& sub);
-    std::vector<Pending> open_up_to_four(Pending p, int depth);
+    std::uint32_t append(Subtree&& sub);
+    int open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children);
 
     const Scene& scene_;
     std::span<PolygonReference> refs_;
-    bool parallel_;
+    unsigned threads_;  ///< more than one: spawn subtrees, bin big ranges in parallel
     std::vector<Node> nodes_;
-    std::vector<TrianglePacket> packets_;
+    std::vector<PendingLeaf> leaves_;
 };
 
 // Replaces the largest splittable range by its halves until there are four (or none left).
-std::vector<Pending> SubtreeBuilder::open_up_to_four(Pending p, int depth) {
-    std::vector<Pending> children;
-    children.push_back(p);
-    while (children.size() < 4) {
+int SubtreeBuilder::open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children) {
+    children[0] = p;
+    int count = 1;
+    while (count < 4) {
         int widest = -1;
         double widest_area = -1.0;
-        for (int i = 0; i < static_cast<int>(children.size()); ++i) {
+        for (int i = 0; i < count; ++i) {
             const double area = children[i].range.box.half_area();
             if (!children[i].split.leaf && area > widest_area) {
                 widest = i;
@@ -79,16 +81,14 @@ std::vector<Pending> SubtreeBuilder::open_up_to_four(Pending p, int depth) {
         }
         const SplitDecision split = children[widest].split;
         children[widest] = pending(split.left, depth);
-        children.push_back(pending(split.right, depth));
+        children[count++] = pending(split.right, depth);
     }
-    return children;
+    return count;
 }
 
 std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
-    // About 1.1 packets per four triangles: reserved once rather than grown by copying.
-    packets_.reserve(packets_.size() + std::size_t{p.range.triangles} / 16 * 5 + 2);
     if (p.split.leaf) {
-        return leaf(p.range);
+        return leaf(p.range, kNoChild, 0);
     }
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
@@ -100,8 +100,8 @@ std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
 // nodes, and the leaves consecutive packets, so that a ray testing siblings reads neighbouring
 // cache lines.
 void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
-    const std::vector<Pending> children = open_up_to_four(p, depth + 1);
-    const int count = static_cast<int>(children.size());
+    std::array<Pending, 4> children;
+    const int count = open_up_to_four(p, depth + 1, children);
     for (int c = 0; c < 4; ++c) {
         Node& node = nodes_[index];
         const Box box = c < count ? children[c].range.box : Box{};
@@ -111,15 +111,15 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
         }
         node.child[c] = kNoChild;
     }
-    std::vector<std::pair<int, std::future<Hierarchy>>> spawned;
+    std::vector<std::pair<int, std::future<Subtree>>> spawned;
     std::array<bool, 4> built_here{};
     for (int c = 0; c < count; ++c) {
         const Pending& child = children[c];
         if (child.split.leaf) {
-            nodes_[index].child[c] = leaf(child.range);
-        } else if (parallel_ && depth < kParallelDepth && child.range.size() >= kParallelSize) {
+            nodes_[index].child[c] = leaf(child.range, index, c);
+        } else if (threads_ > 1 && depth < kParallelDepth && child.range.size() >= kParallelSize) {
             spawned.emplace_back(c, std::async(std::launch::async, [this, child, depth] {
-                                     SubtreeBuilder sub(scene_, refs_, true);
+                                     SubtreeBuilder sub(scene_, refs_, threads_);
                                      sub.build(child, depth + 1);
                                      return sub.take();
                                  }));
@@ -139,20 +139,21 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
     }
 }
 
-// Moves a finished subtree in, shifting its node and packet indices; returns its root's index.
-std::uint32_t SubtreeBuilder::append(Hierarchy&& sub) {
+// Moves a finished subtree in, shifting its node indices; returns its root's index.
+std::uint32_t SubtreeBuilder::append(Subtree&& sub) {
     const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
-    const auto packet_offset = static_cast<std::uint32_t>(packets_.size());
     for (Node& node : sub.nodes) {
         for (std::uint32_t& child : node.child) {
-            if (child == kNoChild) {
-                continue;
+            if (child != kNoChild && !is_leaf(child)) {
+                child += node_offset;
             }
-            child += is_leaf(child) ? packet_offset : node_offset;
         }
-        nodes_.push_back(node);
     }
-    packets_.insert(packets_.end(), sub.packets.begin(), sub.packets.end());
+    nodes_.insert(nodes_.end(), sub.nodes.begin(), sub.nodes.end());
+    for (PendingLeaf& leaf : sub.leaves) {
+        leaf.node += node_offset;  // a spawned subtree's root is never a leaf
+    }
+    leaves_.insert(leaves_.end(), sub.leaves.begin(), sub.leaves.end());
     return node_offset;  // the subtree's root is its node 0
 }
 
@@ -168,13 +169,12 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
         return result;
     }
     const std::span<PolygonReference> all(refs.bounded);
-    SubtreeBuilder builder(scene, all, threads > 1);
+    SubtreeBuilder builder(scene, all, threads);
     const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
-    const std::uint32_t root = builder.build({whole, split_range(all, whole, false)}, 0);
-    const double scale = result.scale;
-    result = builder.take();
-    result.root = root;
-    result.scale = scale;
+    result.root = builder.build({whole, split_range(all, whole, false, threads)}, 0);
+    Subtree tree = builder.take();
+    result.nodes = std::move(tree.nodes);
+    fill_leaves(scene, all, tree.leaves, result, threads);
     result.nodes.shrink_to_fit();
     result.packets.shrink_to_fit();
     return result;

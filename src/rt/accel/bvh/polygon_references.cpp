@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace rt::bvh {
 
@@ -45,12 +46,11 @@ bool polygon_box(const Scene& scene, const Polygon& p, Vec3& lo, Vec3& hi) {
     return is_finite(lo) && is_finite(hi);
 }
 
-}  // namespace
-
-PolygonReferences make_polygon_references(const Scene& scene) {
+// The references of polygons [first, last), in order.
+PolygonReferences references_of(const Scene& scene, std::uint32_t first, std::uint32_t last) {
     PolygonReferences refs;
-    refs.bounded.reserve(scene.polygons.size());
-    for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
+    refs.bounded.reserve(last - first);
+    for (std::uint32_t id = first; id < last; ++id) {
         const Polygon& p = scene.polygons[id];
         if (p.corner_count < 3) {
             continue;
@@ -77,6 +77,43 @@ PolygonReferences make_polygon_references(const Scene& scene) {
         r.polygon = id;
         r.triangles = p.corner_count - 2;
         refs.bounded.push_back(r);
+    }
+    return refs;
+}
+
+}  // namespace
+
+PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) {
+    if (threads == 0) {
+        threads = std::max(1u, std::thread::hardware_concurrency());
+    }
+    const auto polygons = static_cast<std::uint32_t>(scene.polygons.size());
+    // Each thread takes a run of at least 64k polygons; the runs are joined in polygon order, so
+    // the result does not depend on the thread count.
+    const std::uint32_t runs =
+        std::clamp<std::uint32_t>(threads, 1, std::max<std::uint32_t>(polygons >> 16, 1));
+    const auto bound = [&](std::uint32_t r) {
+        return static_cast<std::uint32_t>(std::uint64_t{polygons} * r / runs);
+    };
+    std::vector<PolygonReferences> parts(runs);
+    std::vector<std::thread> pool;
+    for (std::uint32_t r = 1; r < runs; ++r) {
+        pool.emplace_back([&, r] { parts[r] = references_of(scene, bound(r), bound(r + 1)); });
+    }
+    parts[0] = references_of(scene, 0, bound(1));
+    for (std::thread& t : pool) {
+        t.join();
+    }
+    PolygonReferences refs = std::move(parts[0]);
+    if (runs > 1) {
+        refs.bounded.reserve(polygons);
+    }
+    for (std::uint32_t r = 1; r < runs; ++r) {
+        refs.bounded.insert(refs.bounded.end(), parts[r].bounded.begin(), parts[r].bounded.end());
+        refs.unbounded.insert(refs.unbounded.end(), parts[r].unbounded.begin(),
+                              parts[r].unbounded.end());
+        refs.scale = std::max(refs.scale, parts[r].scale);
+        parts[r] = {};
     }
     return refs;
 }

@@ -50,7 +50,8 @@ struct PolygonReferences {
 /// References for every polygon of three or more corners (the exact test misses the others).
 /// Each box is the corners' box, widened for a polygon whose corners leave its plane (the exact
 /// test's t is the plane's: it may lie up to 1e6 times the deviation away from the corners),
-/// then rounded outward to float.
-PolygonReferences make_polygon_references(const Scene& scene);
+/// then rounded outward to float. `threads` (0: one per hardware thread) share the polygons; the
+/// result is the same for any count.
+PolygonReferences make_polygon_references(const Scene& scene, unsigned threads = 0);
 
 }  // namespace rt::bvh

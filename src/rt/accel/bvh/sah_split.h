@@ -13,6 +13,7 @@ struct ReferenceRange {
     std::uint32_t begin = 0;
     std::uint32_t end = 0;
     Box box;                      ///< of the references' boxes
+    Box centroids;                ///< of the references' box centres
     std::uint32_t triangles = 0;  ///< fan triangles in the range
     std::uint32_t size() const { return end - begin; }
 };
@@ -28,11 +29,12 @@ constexpr std::uint32_t kMaxLeafTriangles = 8;
 
 /// Splits `range` (reordering refs inside it) or says it is a leaf. `by_median` forces an object
 /// median split on the longest centroid axis, which halves the range: the builder uses it past a
-/// depth limit so that the tree, and the traversal's stack, stay shallow.
+/// depth limit so that the tree, and the traversal's stack, stay shallow. A big range is binned by
+/// `threads` threads; the decision does not depend on their number.
 SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange& range,
-                          bool by_median);
+                          bool by_median, unsigned threads = 1);
 
-/// The box and triangle count of refs[begin, end).
+/// The boxes and triangle count of refs[begin, end).
 ReferenceRange make_range(std::span<const PolygonReference> refs, std::uint32_t begin,
                           std::uint32_t end);
 
