@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/bvh/bvh.h"
+#include "rt/accel/bvh/packet_setup.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/core/diagnostics.h"
 #include "rt/scene/read/load_scene.h"
 
@@ -205,6 +208,92 @@ TEST(BvhPackets, RaysStartingOnPolygons) {
         queries.push_back({r.ray, r.t});
     }
     expect_both_ways(sphere, Bvh(sphere), queries);
+}
+
+// Scales where the float tests give up (every polygon tested exactly), polygons no box holds (a
+// NaN or infinite corner: every ray tests them), twisted and zero-normal polygons, and an empty
+// scene: lanes fall back to the single ray's path, and still answer as brute force.
+TEST(BvhPackets, ScenesTheFloatTestsCannotCover) {
+    for (const double scale : {1e-30, 1e15, 1e200}) {
+        SCOPED_TRACE(scale);
+        Scene scene = test::make_triangle_soup(200, 9);
+        for (Vec3& p : scene.positions) {
+            p = p * scale;
+        }
+        expect_both_ways(scene, Bvh(scene), test::random_queries(scene, 800, 23));
+    }
+    Scene with_nan = test::make_triangle_soup(100, 10);
+    with_nan.positions[5].y = std::numeric_limits<double>::quiet_NaN();
+    with_nan.positions[9].x = std::numeric_limits<double>::infinity();
+    expect_both_ways(with_nan, Bvh(with_nan), test::random_queries(with_nan, 800, 24));
+    Scene flat = test::make_triangle_soup(300, 31);
+    for (Polygon& p : flat.polygons) {
+        p.normal = Vec3{0, 0, 0};
+    }
+    expect_both_ways(flat, Bvh(flat), test::random_queries(flat, 800, 25));
+    const Scene empty;
+    RayPacket packet;
+    packet.active = 0xffu;
+    PacketHits hits;
+    TraceCounters counters;
+    const Bvh none(empty);
+    none.closest_hit_packet(packet, hits, counters);
+    for (const std::optional<Hit>& hit : hits) {
+        EXPECT_FALSE(hit);
+    }
+    EXPECT_EQ(none.occluded_packet(packet, counters), 0u);
+}
+
+// The packet's vectorised set-up must give each lane exactly FloatRay's values: the filters'
+// error bounds are argued for those.
+TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
+    std::mt19937_64 random(17);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-60, 60);
+    int checked = 0;
+    for (int round = 0; round < 500; ++round) {
+        RayPacket packet;
+        packet.active = 0xffu;
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            const double scale = std::ldexp(1.0, exponent(random));
+            Vec3 d{unit(random) * scale, unit(random) * scale, unit(random) * scale};
+            if (lane == 1) {
+                d.y = 0.0;  // an axis-parallel component: the inverse is clamped
+            }
+            packet.rays[lane] = {Vec3{unit(random), unit(random), unit(random)} * 100.0, d};
+            packet.t[lane] = Interval{unit(random) + 1.0, 1e3 * (unit(random) + 2.0)};
+        }
+        if (round % 7 == 0) {
+            packet.rays[2].direction = Vec3{0, 0, 0};  // unusable: left to the single path
+        }
+        const double scene_scale = std::ldexp(1.0, exponent(random) / 3);
+        bvh::PacketValues v;
+        const std::uint32_t lanes = bvh::set_up_packet(packet, scene_scale, v);
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            const FloatRay f(packet.rays[lane], scene_scale);
+            ASSERT_EQ(f.usable, ((lanes >> lane) & 1u) != 0) << "lane " << lane;
+            if (!f.usable) {
+                continue;
+            }
+            ++checked;
+            EXPECT_EQ(f.scale_t, v.scale_t[lane]);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_EQ(f.origin[k], v.origin[k][lane]);
+                EXPECT_EQ(f.inverse[k], v.inverse[k][lane]);
+                EXPECT_EQ(f.slab_margin[k], v.margin[k][lane]);
+            }
+            EXPECT_EQ(f.kx, v.kx[lane]);
+            EXPECT_EQ(f.ky, v.ky[lane]);
+            EXPECT_EQ(f.kz, v.kz[lane]);
+            EXPECT_EQ(f.shear_x, v.shear_x[lane]);
+            EXPECT_EQ(f.shear_y, v.shear_y[lane]);
+            EXPECT_EQ(f.edge_margin_linear, v.edge_linear[lane]);
+            EXPECT_EQ(f.edge_margin_constant, v.edge_constant[lane]);
+            EXPECT_EQ(f.scaled_down(packet.t[lane].min), v.t_min[lane]);
+            EXPECT_EQ(f.scaled_up(packet.t[lane].max), v.t_max[lane]);
+        }
+    }
+    EXPECT_GT(checked, 3500);
 }
 
 TEST(BvhPackets, TheFallbackLoopsOverSingleRays) {

@@ -14,7 +14,8 @@
 #include <optional>
 
 #include "rt/accel/bvh/bvh.h"
-#include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/accel/bvh/packet_setup.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/geometry/ray_polygon.h"
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
@@ -37,6 +38,13 @@ const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
 inline const bvh::WideNode& inner_node(const bvh::Hierarchy& tree, std::uint32_t child) {
     return tree.wide[child];
 }
+/// The eight children's lower (upper) planes on an axis, 32-byte aligned.
+inline const float* lower_planes(const bvh::WideNode& node, int axis) {
+    return node.lo[axis];
+}
+inline const float* upper_planes(const bvh::WideNode& node, int axis) {
+    return node.hi[axis];
+}
 inline float child_lo(const bvh::WideNode& node, int axis, int k) {
     return node.lo[axis][k];
 }
@@ -58,50 +66,129 @@ constexpr int kStackSize = 512;
 // test, and its nearest hit so far in brute force's order.
 struct Lane {
     const Ray* ray = nullptr;
-    std::optional<FloatRay> fray;
     std::optional<RaySpace> space;
     std::optional<ClosestHitSoFar> best;
     std::uint32_t previous = ~0u;  ///< the polygon last offered: fan triangles are adjacent
 };
 
-// The eight rays' filter values, one AVX2 lane each (inactive lanes hold harmless zeros and
-// never count: every result is masked by the active lanes).
-struct alignas(32) PacketValues {
-    float origin[3][8]{};
-    float inverse[3][8]{};
-    float margin[3][8]{};
-    float t_min[8]{};
-    float t_max[8]{};
-    // Triangle pre-filter, in the lanes' common axes (when `same_axes`).
-    float shear_x[8]{};
-    float shear_y[8]{};
-    float edge_linear[8]{};
-    float edge_constant[8]{};
-    int kx = 0;
-    int ky = 1;
-    int kz = 2;
-    bool same_axes = true;
+using bvh::PacketValues;
+
+// The packet as a whole, for a test of a node's eight boxes at once that rejects a child only
+// when every lane's own test would (interval arithmetic over the lanes): on each axis the range
+// of the lanes' origins and inverses (one sign for all, else `usable` is false), the largest
+// margin, and the widest t interval.
+struct alignas(32) PacketBounds {
+    bool usable = false;
+    bool negative[3]{};  ///< the lanes' common sign of the inverse on each axis
+    float origin_lo[3]{};
+    float origin_hi[3]{};
+    float inverse_lo[3]{};
+    float inverse_hi[3]{};
+    float margin[3]{};
+    float t_min = 0.0f;  ///< the smallest lane t_min
+    float t_max = 0.0f;  ///< the largest lane t_max
 };
 
-void set_lane_values(PacketValues& v, int lane, const FloatRay& f, float t_min, float t_max,
-                     bool first) {
+// Smallest and largest of eight lanes.
+__attribute__((target("avx2"))) inline float lanes_min(__m256 x) {
+    x = _mm256_min_ps(x, _mm256_permute2f128_ps(x, x, 1));
+    x = _mm256_min_ps(x, _mm256_shuffle_ps(x, x, _MM_SHUFFLE(1, 0, 3, 2)));
+    x = _mm256_min_ps(x, _mm256_shuffle_ps(x, x, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm256_cvtss_f32(x);
+}
+__attribute__((target("avx2"))) inline float lanes_max(__m256 x) {
+    x = _mm256_max_ps(x, _mm256_permute2f128_ps(x, x, 1));
+    x = _mm256_max_ps(x, _mm256_shuffle_ps(x, x, _MM_SHUFFLE(1, 0, 3, 2)));
+    x = _mm256_max_ps(x, _mm256_shuffle_ps(x, x, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm256_cvtss_f32(x);
+}
+
+// The bounds over every lane; inactive lanes hold copies of an active one (fill_inactive_lanes),
+// so all eight count.
+__attribute__((target("avx2"))) void bound_packet(const PacketValues& v, PacketBounds& b) {
+    b.usable = true;
     for (int k = 0; k < 3; ++k) {
-        v.origin[k][lane] = f.origin[k];
-        v.inverse[k][lane] = f.inverse[k];
-        v.margin[k][lane] = f.slab_margin[k];
+        const __m256 inverse = _mm256_load_ps(v.inverse[k]);
+        const int signs = _mm256_movemask_ps(inverse);
+        if (signs != 0 && signs != 0xff) {
+            b.usable = false;
+        }
+        b.negative[k] = signs != 0;
+        const __m256 origin = _mm256_load_ps(v.origin[k]);
+        b.origin_lo[k] = lanes_min(origin);
+        b.origin_hi[k] = lanes_max(origin);
+        b.inverse_lo[k] = lanes_min(inverse);
+        b.inverse_hi[k] = lanes_max(inverse);
+        b.margin[k] = lanes_max(_mm256_load_ps(v.margin[k]));
     }
-    v.t_min[lane] = t_min;
-    v.t_max[lane] = t_max;
-    v.shear_x[lane] = f.shear_x;
-    v.shear_y[lane] = f.shear_y;
-    v.edge_linear[lane] = f.edge_margin_linear;
-    v.edge_constant[lane] = f.edge_margin_constant;
-    if (first) {
-        v.kx = f.kx;
-        v.ky = f.ky;
-        v.kz = f.kz;
-    } else if (f.kz != v.kz) {
-        v.same_axes = false;
+    b.t_min = lanes_min(_mm256_load_ps(v.t_min));
+    b.t_max = lanes_max(_mm256_load_ps(v.t_max));
+}
+
+// The children some lane of the packet may meet: bit c clear only when every lane's own test
+// (test_children) rejects child c. Each step of a lane's test is monotone in each operand
+// (correctly rounded operations are; the slack multiplies by a power of two, exactly), so its
+// entry is at least this entry, taken with the operands' bounds, and its exit at most this exit.
+// A NaN bound keeps the child.
+__attribute__((target("avx2"))) std::uint32_t children_packet_may_meet(const bvh::WideNode& node,
+                                                                       const PacketBounds& b) {
+    __m256 entry = _mm256_set1_ps(-HUGE_VALF);
+    __m256 exit = _mm256_set1_ps(HUGE_VALF);
+    for (int k = 0; k < 3; ++k) {
+        const __m256 lower = _mm256_load_ps(lower_planes(node, k));
+        const __m256 upper = _mm256_load_ps(upper_planes(node, k));
+        const __m256 near_plane = b.negative[k] ? upper : lower;
+        const __m256 far_plane = b.negative[k] ? lower : upper;
+        const __m256 o_lo = _mm256_set1_ps(b.origin_lo[k]);
+        const __m256 o_hi = _mm256_set1_ps(b.origin_hi[k]);
+        const __m256 i_lo = _mm256_set1_ps(b.inverse_lo[k]);
+        const __m256 i_hi = _mm256_set1_ps(b.inverse_hi[k]);
+        const __m256 margin = _mm256_set1_ps(b.margin[k]);
+        const __m256 near_a = _mm256_sub_ps(near_plane, o_hi);
+        const __m256 near_b = _mm256_sub_ps(near_plane, o_lo);
+        const __m256 far_a = _mm256_sub_ps(far_plane, o_hi);
+        const __m256 far_b = _mm256_sub_ps(far_plane, o_lo);
+        const __m256 near_low =
+            _mm256_min_ps(_mm256_min_ps(_mm256_mul_ps(near_a, i_lo), _mm256_mul_ps(near_a, i_hi)),
+                          _mm256_min_ps(_mm256_mul_ps(near_b, i_lo), _mm256_mul_ps(near_b, i_hi)));
+        const __m256 far_high =
+            _mm256_max_ps(_mm256_max_ps(_mm256_mul_ps(far_a, i_lo), _mm256_mul_ps(far_a, i_hi)),
+                          _mm256_max_ps(_mm256_mul_ps(far_b, i_lo), _mm256_mul_ps(far_b, i_hi)));
+        entry = _mm256_max_ps(_mm256_sub_ps(near_low, margin), entry);
+        exit = _mm256_min_ps(_mm256_add_ps(far_high, margin), exit);
+    }
+    const __m256 slack = _mm256_set1_ps(kRelativeSlack);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
+    exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
+    const __m256 rejected =
+        _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(entry, exit, _CMP_GT_OQ),
+                                  _mm256_cmp_ps(entry, _mm256_set1_ps(b.t_max), _CMP_GT_OQ)),
+                     _mm256_cmp_ps(exit, _mm256_set1_ps(b.t_min), _CMP_LT_OQ));
+    return ~static_cast<std::uint32_t>(_mm256_movemask_ps(rejected)) & 0xffu;
+}
+
+// Gives each inactive lane the values of the first active one: the packet's bounds and every
+// lanewise test may then use all eight lanes (the results stay masked by the active lanes).
+void fill_inactive_lanes(PacketValues& v, std::uint32_t active) {
+    const int from = std::countr_zero(active);
+    for (std::uint32_t idle = ~active & 0xffu; idle != 0; idle &= idle - 1) {
+        const int lane = std::countr_zero(idle);
+        for (int k = 0; k < 3; ++k) {
+            v.origin[k][lane] = v.origin[k][from];
+            v.inverse[k][lane] = v.inverse[k][from];
+            v.margin[k][lane] = v.margin[k][from];
+        }
+        v.t_min[lane] = v.t_min[from];
+        v.t_max[lane] = v.t_max[from];
+        v.shear_x[lane] = v.shear_x[from];
+        v.shear_y[lane] = v.shear_y[from];
+        v.edge_linear[lane] = v.edge_linear[from];
+        v.edge_constant[lane] = v.edge_constant[from];
+        v.scale_t[lane] = v.scale_t[from];
+        v.kx[lane] = v.kx[from];
+        v.ky[lane] = v.ky[from];
+        v.kz[lane] = v.kz[from];
     }
 }
 
@@ -128,9 +215,11 @@ struct alignas(32) ChildHits {
 
 // Each child's box against the eight rays: the single ray's test (bvh_traversal.cpp,
 // test_wide_boxes_avx2), the same operations in the same order per lane, with the near and far
-// planes chosen per lane by the sign of its inverse. Returns how many children some lane meets.
+// planes chosen per lane by the sign of its inverse, for the children in `children` (bits).
+// Returns how many of them some lane meets.
 __attribute__((target("avx2"))) int test_children(const bvh::WideNode& node, const PacketValues& v,
-                                                  std::uint32_t active, ChildHits* out) {
+                                                  std::uint32_t active, std::uint32_t children,
+                                                  ChildHits* out) {
     const __m256 slack = _mm256_set1_ps(kRelativeSlack);
     const __m256 sign = _mm256_set1_ps(-0.0f);
     const __m256 t_min = _mm256_load_ps(v.t_min);
@@ -144,7 +233,8 @@ __attribute__((target("avx2"))) int test_children(const bvh::WideNode& node, con
         margin[k] = _mm256_load_ps(v.margin[k]);
     }
     int count = 0;
-    for (int c = 0; c < kNodeWidth; ++c) {
+    for (; children != 0; children &= children - 1) {
+        const int c = std::countr_zero(children);
         const std::uint32_t child = child_word(node, c);
         if (child == bvh::kNoChild) {
             continue;
@@ -192,9 +282,12 @@ __attribute__((target("avx2"))) int test_children(const bvh::WideNode& node, con
 // lane triangle_candidate's operations (triangle_prefilter.h). Bit k: lane k may hit it.
 __attribute__((target("avx2"))) std::uint32_t triangle_rays(const bvh::TrianglePacket& packet,
                                                             int t, const PacketValues& v) {
-    const __m256 ox = _mm256_load_ps(v.origin[v.kx]);
-    const __m256 oy = _mm256_load_ps(v.origin[v.ky]);
-    const __m256 oz = _mm256_load_ps(v.origin[v.kz]);
+    const int kx = v.kx[0];
+    const int ky = v.ky[0];
+    const int kz = v.kz[0];
+    const __m256 ox = _mm256_load_ps(v.origin[kx]);
+    const __m256 oy = _mm256_load_ps(v.origin[ky]);
+    const __m256 oz = _mm256_load_ps(v.origin[kz]);
     const __m256 sx = _mm256_load_ps(v.shear_x);
     const __m256 sy = _mm256_load_ps(v.shear_y);
     const __m256 sign = _mm256_set1_ps(-0.0f);
@@ -202,10 +295,10 @@ __attribute__((target("avx2"))) std::uint32_t triangle_rays(const bvh::TriangleP
     __m256 y[3];
     __m256 size = _mm256_setzero_ps();
     for (int c = 0; c < 3; ++c) {
-        const __m256 az = _mm256_sub_ps(_mm256_set1_ps(packet.corner[c][v.kz][t]), oz);
-        x[c] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][v.kx][t]), ox),
+        const __m256 az = _mm256_sub_ps(_mm256_set1_ps(packet.corner[c][kz][t]), oz);
+        x[c] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][kx][t]), ox),
                              _mm256_mul_ps(sx, az));
-        y[c] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][v.ky][t]), oy),
+        y[c] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][ky][t]), oy),
                              _mm256_mul_ps(sy, az));
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[c]), _mm256_andnot_ps(sign, y[c])));
@@ -228,6 +321,35 @@ __attribute__((target("avx2"))) std::uint32_t triangle_rays(const bvh::TriangleP
     return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative)));
 }
 
+// triangle_rays for one lane in its own axes: triangle_candidate's operations
+// (triangle_prefilter.h), the corners read from the packet.
+bool lane_triangle_candidate(const bvh::TrianglePacket& packet, int t, const PacketValues& v,
+                             int lane) {
+    const int kx = v.kx[lane];
+    const int ky = v.ky[lane];
+    const int kz = v.kz[lane];
+    const float ox = v.origin[kx][lane];
+    const float oy = v.origin[ky][lane];
+    const float oz = v.origin[kz][lane];
+    float x[3];
+    float y[3];
+    float size = 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        const float az = packet.corner[c][kz][t] - oz;
+        x[c] = (packet.corner[c][kx][t] - ox) - v.shear_x[lane] * az;
+        y[c] = (packet.corner[c][ky][t] - oy) - v.shear_y[lane] * az;
+        size = std::max(size, std::max(std::fabs(x[c]), std::fabs(y[c])));
+    }
+    const float e0 = x[1] * y[2] - y[1] * x[2];
+    const float e1 = x[2] * y[0] - y[2] * x[0];
+    const float e2 = x[0] * y[1] - y[0] * x[1];
+    const float margin =
+        size * (v.edge_linear[lane] + size * kRelativeSlack) + v.edge_constant[lane];
+    const bool all_positive = e0 >= -margin && e1 >= -margin && e2 >= -margin;
+    const bool all_negative = e0 <= margin && e1 <= margin && e2 <= margin;
+    return all_positive || all_negative;
+}
+
 // Calls visit(lane, packet, t, id) for each lane in `rays` and each of the leaf's fan triangles
 // the pre-filter cannot rule out for it, once per run of equal ids per lane. Lanes whose bit
 // visit clears in `rays` are asked no further.
@@ -248,7 +370,7 @@ template <class Visit>
             } else {
                 for (std::uint32_t r = rays; r != 0; r &= r - 1) {
                     const int lane = std::countr_zero(r);
-                    if (((bvh::packet_candidates(packet, *lanes[lane].fray) >> t) & 1) != 0) {
+                    if (lane_triangle_candidate(packet, t, v, lane)) {
                         candidates |= 1u << lane;
                     }
                 }
@@ -309,6 +431,8 @@ __attribute__((target("avx2"))) std::uint32_t still_reaching(const StackEntry& e
 __attribute__((target("avx2"), flatten)) void nearest_for_packet(
     const bvh::Hierarchy& tree, const Scene& scene, PacketValues& v,
     std::array<Lane, kPacketSize>& lanes, std::uint32_t active, TraceCounters& counters) {
+    PacketBounds b;
+    bound_packet(v, b);
     std::array<StackEntry, kStackSize> stack;  // NOLINT(cppcoreguidelines-pro-type-member-init)
     std::array<ChildHits, kNodeWidth> hits;    // NOLINT(cppcoreguidelines-pro-type-member-init)
     int size = 0;
@@ -317,7 +441,9 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
     for (;;) {
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             counters.nodes_visited += std::popcount(rays);
-            const int count = test_children(inner_node(tree, child), v, rays, hits.data());
+            const bvh::WideNode& node = inner_node(tree, child);
+            const std::uint32_t children = b.usable ? children_packet_may_meet(node, b) : 0xffu;
+            const int count = test_children(node, v, rays, children, hits.data());
             if (count == 0) {
                 child = bvh::kNoChild;
                 break;
@@ -352,8 +478,9 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
                 });
             for (std::uint32_t r = rays; r != 0; r &= r - 1) {
                 const int lane = std::countr_zero(r);
-                v.t_max[lane] = lanes[lane].fray->scaled_up(lanes[lane].best->reach());
+                v.t_max[lane] = bvh::lane_scaled_up(v, lane, lanes[lane].best->reach());
             }
+            b.t_max = lanes_max(_mm256_load_ps(v.t_max));
         }
         child = bvh::kNoChild;
         while (size > 0 && child == bvh::kNoChild) {
@@ -375,6 +502,8 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
     const bvh::Hierarchy& tree, const Scene& scene, PacketValues& v,
     std::array<Lane, kPacketSize>& lanes, const RayPacket& packet, std::uint32_t active,
     TraceCounters& counters) {
+    PacketBounds b;
+    bound_packet(v, b);
     struct Entry {
         std::uint32_t child;
         std::uint32_t rays;
@@ -411,7 +540,9 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
             continue;
         }
         counters.nodes_visited += std::popcount(rays);
-        const int count = test_children(inner_node(tree, e.child), v, rays, hits.data());
+        const bvh::WideNode& node = inner_node(tree, e.child);
+        const std::uint32_t children = b.usable ? children_packet_may_meet(node, b) : 0xffu;
+        const int count = test_children(node, v, rays, children, hits.data());
         for (int i = 0; i < count; ++i) {
             prefetch_child(tree, hits[i].child);
             stack[size++] = {hits[i].child, hits[i].rays};
@@ -429,18 +560,20 @@ void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
         return;
     }
     std::array<Lane, kPacketSize> lanes;
-    PacketValues values;
-    std::uint32_t active = 0;
-    for (std::uint32_t a = packet.active & 0xffu; a != 0; a &= a - 1) {
+    PacketValues values;  // NOLINT(cppcoreguidelines-pro-type-member-init): set up below
+    const std::uint32_t active = bvh::set_up_packet(packet, tree_.scale, values);
+    for (std::uint32_t a = packet.active & 0xffu & ~active; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);  // the single ray's path: unusable or extreme
+        hits[lane] = closest_hit(packet.rays[lane], packet.t[lane], counters);
+    }
+    for (std::uint32_t a = active; a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
         Lane& l = lanes[lane];
         l.ray = &packet.rays[lane];
-        l.fray.emplace(*l.ray, tree_.scale);
-        if (!l.fray->usable) {  // the single ray's fallback: every polygon exactly
-            hits[lane] = closest_hit(*l.ray, packet.t[lane], counters);
+        l.best.emplace(packet.t[lane]);
+        if (unbounded_.empty()) {
             continue;
         }
-        l.best.emplace(packet.t[lane]);
         for (const std::uint32_t id : unbounded_) {
             ++counters.polygon_tests;
             if (!l.space) {
@@ -451,11 +584,10 @@ void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
                 l.best->offer(*hit, id);
             }
         }
-        set_lane_values(values, lane, *l.fray, l.fray->scaled_down(packet.t[lane].min),
-                        l.fray->scaled_up(l.best->reach()), active == 0);
-        active |= 1u << lane;
+        values.t_max[lane] = bvh::lane_scaled_up(values, lane, l.best->reach());
     }
     if (active != 0) {
+        fill_inactive_lanes(values, active);
         nearest_for_packet(tree_, scene_, values, lanes, active, counters);
     }
     for (std::uint32_t a = active; a != 0; a &= a - 1) {
@@ -469,23 +601,19 @@ std::uint32_t Bvh::occluded_packet(const RayPacket& packet, TraceCounters& count
         return Accelerator::occluded_packet(packet, counters);
     }
     std::array<Lane, kPacketSize> lanes;
-    PacketValues values;
-    std::uint32_t active = 0;
+    PacketValues values;  // NOLINT(cppcoreguidelines-pro-type-member-init): set up below
+    const std::uint32_t active = bvh::set_up_packet(packet, tree_.scale, values);
     std::uint32_t blocked = 0;
-    for (std::uint32_t a = packet.active & 0xffu; a != 0; a &= a - 1) {
+    for (std::uint32_t a = packet.active & 0xffu & ~active; a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
-        Lane& l = lanes[lane];
-        l.ray = &packet.rays[lane];
-        l.fray.emplace(*l.ray, tree_.scale);
-        if (!l.fray->usable) {
-            blocked |= occluded(*l.ray, packet.t[lane], counters) ? 1u << lane : 0u;
-            continue;
-        }
-        set_lane_values(values, lane, *l.fray, l.fray->scaled_down(packet.t[lane].min),
-                        l.fray->scaled_up(packet.t[lane].max), active == 0);
-        active |= 1u << lane;
+        blocked |= occluded(packet.rays[lane], packet.t[lane], counters) ? 1u << lane : 0u;
+    }
+    for (std::uint32_t a = active; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        lanes[lane].ray = &packet.rays[lane];
     }
     if (active != 0) {
+        fill_inactive_lanes(values, active);
         blocked |= blocked_in_packet(tree_, scene_, values, lanes, packet, active, counters);
     }
     return blocked;
