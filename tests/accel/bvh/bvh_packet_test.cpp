@@ -266,6 +266,9 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
         if (round % 7 == 0) {
             packet.rays[2].direction = Vec3{0, 0, 0};  // unusable: left to the single path
         }
+        packet.t[3] = Interval{};  // as the lab and the renderer ask
+        packet.t[4] = Interval{-kBeyondAnyScene, kBeyondAnyScene};
+        packet.t[5] = Interval{1e-9, std::nextafter(1.0, 0.0)};  // as shadow feelers
         const double scene_scale = std::ldexp(1.0, exponent(random) / 3);
         bvh::PacketValues v;
         const std::uint32_t lanes = bvh::set_up_packet(packet, scene_scale, v);

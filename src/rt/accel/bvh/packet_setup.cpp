@@ -49,20 +49,51 @@ float lane_scaled_up(const PacketValues& v, int lane, double t) {
 
 namespace {
 
-// Four lanes, starting at `first`, of FloatRay's box values; returns the lanes (bits) that are
+// FloatRay's next_up and next_down for four floats that are finite (the only ones that can
+// have been rounded the wrong way).
+__attribute__((target("avx2"))) __m128 step_up(__m128 f, __m128 apply) {
+    const __m128i bits = _mm_castps_si128(f);
+    const __m128 zero = _mm_setzero_ps();
+    const __m128i one = _mm_set1_epi32(1);
+    __m128i stepped = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(_mm_add_epi32(bits, one)),
+                                                     _mm_castsi128_ps(_mm_sub_epi32(bits, one)),
+                                                     _mm_cmplt_ps(f, zero)));
+    // next_up(+-0) is the smallest denormal.
+    stepped = _mm_castps_si128(
+        _mm_blendv_ps(_mm_castsi128_ps(stepped), _mm_castsi128_ps(one), _mm_cmpeq_ps(f, zero)));
+    return _mm_blendv_ps(f, _mm_castsi128_ps(stepped), apply);
+}
+
+// scaled_down (down = true) or scaled_up of four t, with the lanes' scale_t.
+__attribute__((target("avx2"))) __m128 scaled_t(__m256d t, __m256d scale_t, bool down) {
+    const __m256d x = _mm256_mul_pd(t, scale_t);
+    const __m128 f = _mm256_cvtpd_ps(x);
+    const __m256d back = _mm256_cvtps_pd(f);
+    if (down) {
+        const __m128 wrong = _mm256_cvtpd_ps(_mm256_cmp_pd(back, x, _CMP_GT_OQ));
+        const __m128 negated = _mm_xor_ps(f, _mm_set1_ps(-0.0f));
+        return _mm_xor_ps(step_up(negated, wrong), _mm_set1_ps(-0.0f));
+    }
+    return step_up(f, _mm256_cvtpd_ps(_mm256_cmp_pd(back, x, _CMP_LT_OQ)));
+}
+
+// Picks per lane: a where `first`, else b where `second`, else c.
+__attribute__((target("avx2"))) inline __m256d pick(__m256d first, __m256d a, __m256d second,
+                                                    __m256d b, __m256d c) {
+    return _mm256_blendv_pd(_mm256_blendv_pd(c, b, second), a, first);
+}
+
+// Four lanes, starting at `first`, of FloatRay's values; returns the lanes (bits) that are
 // usable and of ordinary exponent.
 __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packet, int first,
-                                                          double scene_scale, PacketValues& v,
-                                                          double (*scaled)[8], double (*inverse)[8],
-                                                          double* size) {
-    alignas(32) double o[3][4];
-    alignas(32) double d[3][4];
-    for (int i = 0; i < 4; ++i) {
-        const Ray& r = packet.rays[first + i];
-        for (int k = 0; k < 3; ++k) {
-            o[k][i] = r.origin[k];
-            d[k][i] = r.direction[k];
-        }
+                                                          double scene_scale, PacketValues& v) {
+    const Ray* r = packet.rays.data() + first;
+    __m256d o[3];
+    __m256d d[3];
+    for (int k = 0; k < 3; ++k) {
+        o[k] = _mm256_setr_pd(r[0].origin[k], r[1].origin[k], r[2].origin[k], r[3].origin[k]);
+        d[k] = _mm256_setr_pd(r[0].direction[k], r[1].direction[k], r[2].direction[k],
+                              r[3].direction[k]);
     }
     const __m256d sign = _mm256_set1_pd(-0.0);
     const __m256d infinity = _mm256_set1_pd(HUGE_VAL);
@@ -70,8 +101,8 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
     __m256d finite = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
     __m256d origin_size = _mm256_setzero_pd();
     for (int k = 0; k < 3; ++k) {
-        a[k] = _mm256_andnot_pd(sign, _mm256_load_pd(d[k]));
-        const __m256d ao = _mm256_andnot_pd(sign, _mm256_load_pd(o[k]));
+        a[k] = _mm256_andnot_pd(sign, d[k]);
+        const __m256d ao = _mm256_andnot_pd(sign, o[k]);
         finite = _mm256_and_pd(finite, _mm256_and_pd(_mm256_cmp_pd(a[k], infinity, _CMP_LT_OQ),
                                                      _mm256_cmp_pd(ao, infinity, _CMP_LT_OQ)));
         // std::max keeps its first operand unless the second is larger (NaN lanes are unusable).
@@ -105,15 +136,16 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
     _mm256_storeu_pd(v.scale_t + first, scale_t);
     const __m256d slack = _mm256_set1_pd(1.0 + 0x1p-20);
     const __m256d eps = _mm256_mul_pd(_mm256_set1_pd(0x1p-20), m);
+    __m256d scaled[3];
+    __m256d inverse[3];
     for (int k = 0; k < 3; ++k) {
-        const __m256d s = _mm256_mul_pd(_mm256_load_pd(d[k]), shrink);
-        __m256d inv = _mm256_div_pd(_mm256_set1_pd(1.0), s);
+        scaled[k] = _mm256_mul_pd(d[k], shrink);
+        __m256d inv = _mm256_div_pd(_mm256_set1_pd(1.0), scaled[k]);
         const __m256d limit = _mm256_set1_pd(0x1p60);
         const __m256d within = _mm256_cmp_pd(_mm256_andnot_pd(sign, inv), limit, _CMP_LE_OQ);
-        inv = _mm256_blendv_pd(_mm256_or_pd(limit, _mm256_and_pd(sign, s)), inv, within);
-        _mm256_storeu_pd(scaled[k] + first, s);
-        _mm256_storeu_pd(inverse[k] + first, inv);
-        _mm_storeu_ps(v.origin[k] + first, _mm256_cvtpd_ps(_mm256_load_pd(o[k])));
+        inv = _mm256_blendv_pd(_mm256_or_pd(limit, _mm256_and_pd(sign, scaled[k])), inv, within);
+        inverse[k] = inv;
+        _mm_storeu_ps(v.origin[k] + first, _mm256_cvtpd_ps(o[k]));
         _mm_storeu_ps(v.inverse[k] + first, _mm256_cvtpd_ps(inv));
         const __m256d margin =
             _mm256_mul_pd(_mm256_mul_pd(eps, _mm256_andnot_pd(sign, inv)), slack);
@@ -123,9 +155,29 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
     _mm_storeu_ps(v.edge_linear + first, _mm256_cvtpd_ps(_mm256_mul_pd(eight_eps, slack)));
     _mm_storeu_ps(v.edge_constant + first,
                   _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_mul_pd(eight_eps, eps), slack)));
-    for (int k = 0; k < 3; ++k) {
-        _mm256_storeu_pd(size + 4 * k, a[k]);
+    // kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2); kx, ky follow it.
+    const __m256d x_over_y = _mm256_cmp_pd(a[0], a[1], _CMP_GT_OQ);
+    const __m256d z0 = _mm256_and_pd(x_over_y, _mm256_cmp_pd(a[0], a[2], _CMP_GT_OQ));
+    const __m256d z1 = _mm256_andnot_pd(x_over_y, _mm256_cmp_pd(a[1], a[2], _CMP_GT_OQ));
+    const __m256d inverse_z = pick(z0, inverse[0], z1, inverse[1], inverse[2]);
+    const __m256d scaled_x = pick(z0, scaled[1], z1, scaled[2], scaled[0]);
+    const __m256d scaled_y = pick(z0, scaled[2], z1, scaled[0], scaled[1]);
+    _mm_storeu_ps(v.shear_x + first, _mm256_cvtpd_ps(_mm256_mul_pd(scaled_x, inverse_z)));
+    _mm_storeu_ps(v.shear_y + first, _mm256_cvtpd_ps(_mm256_mul_pd(scaled_y, inverse_z)));
+    const int zero_bits = _mm256_movemask_pd(z0);
+    const int one_bits = _mm256_movemask_pd(z1);
+    for (int i = 0; i < 4; ++i) {
+        const int kz = ((zero_bits >> i) & 1) != 0 ? 0 : ((one_bits >> i) & 1) != 0 ? 1 : 2;
+        v.kz[first + i] = kz;
+        v.kx[first + i] = (kz + 1) % 3;
+        v.ky[first + i] = (kz + 2) % 3;
     }
+    const __m256d t_min = _mm256_setr_pd(packet.t[first].min, packet.t[first + 1].min,
+                                         packet.t[first + 2].min, packet.t[first + 3].min);
+    const __m256d t_max = _mm256_setr_pd(packet.t[first].max, packet.t[first + 1].max,
+                                         packet.t[first + 2].max, packet.t[first + 3].max);
+    _mm_storeu_ps(v.t_min + first, scaled_t(t_min, scale_t, true));
+    _mm_storeu_ps(v.t_max + first, scaled_t(t_max, scale_t, false));
     return lanes << first;
 }
 
@@ -133,32 +185,15 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
 
 __attribute__((target("avx2"))) std::uint32_t set_up_packet(const RayPacket& packet,
                                                             double scene_scale, PacketValues& v) {
-    double scaled[3][8];
-    double inverse[3][8];
-    double size[2][12];  // |direction| [axis * 4 + lane] of each half
-    std::uint32_t lanes = set_up_four(packet, 0, scene_scale, v, scaled, inverse, size[0]) |
-                          set_up_four(packet, 4, scene_scale, v, scaled, inverse, size[1]);
-    lanes &= packet.active & 0xffu;
+    const std::uint32_t lanes =
+        (set_up_four(packet, 0, scene_scale, v) | set_up_four(packet, 4, scene_scale, v)) &
+        packet.active & 0xffu;
+    // Every set-up lane in the same axes: compare each with the first.
     v.same_axes = true;
-    int common = -1;
-    for (int lane = 0; lane < kPacketSize; ++lane) {
-        const double* a = size[lane >> 2] + (lane & 3);
-        const double ax = a[0];
-        const double ay = a[4];
-        const double az = a[8];
-        const int kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        const int kx = (kz + 1) % 3;
-        const int ky = (kx + 1) % 3;
-        v.kx[lane] = kx;
-        v.ky[lane] = ky;
-        v.kz[lane] = kz;
-        v.shear_x[lane] = static_cast<float>(scaled[kx][lane] * inverse[kz][lane]);
-        v.shear_y[lane] = static_cast<float>(scaled[ky][lane] * inverse[kz][lane]);
-        if (((lanes >> lane) & 1u) != 0) {
-            v.same_axes = v.same_axes && (common < 0 || common == kz);
-            common = kz;
-            v.t_min[lane] = lane_scaled_down(v, lane, packet.t[lane].min);
-            v.t_max[lane] = lane_scaled_up(v, lane, packet.t[lane].max);
+    if (lanes != 0) {
+        const int common = v.kz[std::countr_zero(lanes)];
+        for (std::uint32_t a = lanes; a != 0; a &= a - 1) {
+            v.same_axes = v.same_axes && v.kz[std::countr_zero(a)] == common;
         }
     }
     return lanes;
