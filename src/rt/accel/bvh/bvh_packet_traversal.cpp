@@ -352,6 +352,20 @@ __attribute__((target("avx2"))) std::uint32_t triangle_rays(const bvh::TriangleP
     return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative)));
 }
 
+// Asks for what the exact tests of a packet's triangles read (the polygon records and the
+// triangles' corners) while the pre-filter runs: they are scattered through the scene, and the
+// exact test otherwise waits for them.
+void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) {
+    for (int t = 0; t < 4; ++t) {
+        __builtin_prefetch(&scene.polygons[packet.polygon[t] & ~kLastPacketBit]);
+        if (packet.position[0][t] != bvh::kNotTriangle) {
+            for (int c = 0; c < 3; ++c) {
+                __builtin_prefetch(&scene.positions[packet.position[c][t]]);
+            }
+        }
+    }
+}
+
 // triangle_rays for one lane in its own axes: triangle_candidate's operations
 // (triangle_prefilter.h), the corners read from the packet.
 bool lane_triangle_candidate(const bvh::TrianglePacket& packet, int t, const PacketValues& v,
@@ -386,13 +400,14 @@ bool lane_triangle_candidate(const bvh::TrianglePacket& packet, int t, const Pac
 // visit clears in `rays` are asked no further.
 template <class Visit>
 [[gnu::always_inline]] inline void for_each_leaf_candidate(
-    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const PacketValues& v,
-    std::array<Lane, kPacketSize>& lanes, std::uint32_t& rays, Visit visit) {
+    const std::vector<bvh::TrianglePacket>& packets, const Scene& scene, std::uint32_t leaf,
+    const PacketValues& v, std::array<Lane, kPacketSize>& lanes, std::uint32_t& rays, Visit visit) {
     for (int lane = 0; lane < kPacketSize; ++lane) {
         lanes[lane].previous = ~0u;
     }
     for (std::uint32_t index = first_packet(leaf); rays != 0; ++index) {
         const bvh::TrianglePacket& packet = packets[index];
+        prefetch_exact_data(scene, packet);
         for (int t = 0; t < 4 && rays != 0; ++t) {
             const std::uint32_t id = packet.polygon[t] & ~kLastPacketBit;
             std::uint32_t candidates = 0;
@@ -494,7 +509,7 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
         if (child != bvh::kNoChild) {
             std::uint32_t leaf_rays = rays;
             for_each_leaf_candidate(
-                tree.packets, child, v, lanes, leaf_rays,
+                tree.packets, scene, child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id) {
                     Lane& l = lanes[lane];
                     ++counters.polygon_tests;
@@ -550,7 +565,7 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
         if (bvh::is_leaf(e.child)) {
             std::uint32_t leaf_rays = rays;
             for_each_leaf_candidate(
-                tree.packets, e.child, v, lanes, leaf_rays,
+                tree.packets, scene, e.child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& p, int t, std::uint32_t id) {
                     Lane& l = lanes[lane];
                     if ((open >> lane & 1u) == 0) {
