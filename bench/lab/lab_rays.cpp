@@ -30,6 +30,41 @@ std::vector<Ray> camera_rays(const Scene& scene) {
     return rays;
 }
 
+std::vector<RayPacket> packets_of(const std::vector<Ray>& rays, int width) {
+    std::vector<std::size_t> order;
+    order.reserve(rays.size());
+    if (width > 0) {
+        const std::size_t w = static_cast<std::size_t>(width);
+        const std::size_t rows = rays.size() / w;
+        for (std::size_t row = 0; row < rows; row += 2) {
+            for (std::size_t x = 0; x < w; x += 4) {
+                for (std::size_t dy = 0; dy < 2; ++dy) {
+                    for (std::size_t dx = 0; dx < 4; ++dx) {
+                        const std::size_t i = (row + dy) * w + x + dx;
+                        if (x + dx < w && row + dy < rows) {
+                            order.push_back(i);
+                        }
+                    }
+                }
+            }
+        }
+    } else {
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            order.push_back(i);
+        }
+    }
+    std::vector<RayPacket> packets;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (i % kPacketSize == 0) {
+            packets.emplace_back();
+        }
+        const int lane = static_cast<int>(i % kPacketSize);
+        packets.back().rays[lane] = rays[order[i]];
+        packets.back().active |= 1u << lane;
+    }
+    return packets;
+}
+
 std::vector<Ray> random_rays(const Scene& scene, std::size_t count, std::uint64_t seed) {
     const auto [lo, hi] = scene.bounds();
     const Vec3 middle = (lo + hi) * 0.5;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rt/accel/accelerator.h"
 #include "rt/core/ray.h"
 #include "rt/scene/scene.h"
 
@@ -15,6 +16,10 @@ constexpr int kImageHeight = 400;
 /// Coherent rays: one per pixel of a 512x400 pinhole camera looking at the middle of the scene's
 /// box from outside it, the box filling most of the view.
 std::vector<Ray> camera_rays(const Scene& scene);
+
+/// The rays eight to a packet: `width` > 0 takes them as rows of that many pixels and makes
+/// packets of 4x2 pixels (rows of a multiple of 4, an even count of rows); 0 takes them in order.
+std::vector<RayPacket> packets_of(const std::vector<Ray>& rays, int width);
 
 /// Incoherent rays: origins uniform in the scene's box doubled about its middle, directions
 /// uniform on the sphere. Reproducible from `seed`.

@@ -18,18 +18,21 @@ std::string rate_cell(const TraceRate& r) {
 }  // namespace
 
 void print_table_header(std::ostream& out) {
-    out << fmt::format("{:<10} {:>9} {:<7} {:>10} {:>9} {:>10} {:>10} {:>10} {:>10}\n", "mesh",
-                       "triangles", "accel", "build ms", "bytes/tri", "prim 1T", "rand 1T",
-                       "prim NT", "rand NT")
-        << fmt::format("{:<10} {:>9} {:<7} {:>10} {:>9} {:>43}\n", "", "", "", "", "",
-                       "(Mrays/s; * = brute force on a subsample)");
+    out << fmt::format(
+               "{:<10} {:>9} {:<7} {:>10} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n",
+               "mesh", "triangles", "accel", "build ms", "bytes/tri", "prim 1T", "rand 1T",
+               "prim NT", "rand NT", "prim8 1T", "rand8 1T")
+        << fmt::format("{:<10} {:>9} {:<7} {:>10} {:>9} {:>65}\n", "", "", "", "", "",
+                       "(Mrays/s; * = brute force on a subsample; 8 = packets of eight)");
 }
 
 void print_table_row(std::ostream& out, const Measurement& m) {
-    out << fmt::format("{:<10} {:>9} {:<7} {:>10.1f} {:>9.1f} {:>10} {:>10} {:>10} {:>10}\n",
-                       m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle,
-                       rate_cell(m.primary_one), rate_cell(m.random_one), rate_cell(m.primary_all),
-                       rate_cell(m.random_all))
+    out << fmt::format(
+               "{:<10} {:>9} {:<7} {:>10.1f} {:>9.1f} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n",
+               m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle,
+               rate_cell(m.primary_one), rate_cell(m.random_one), rate_cell(m.primary_all),
+               rate_cell(m.random_all), rate_cell(m.primary_packet_one),
+               rate_cell(m.random_packet_one))
         << std::flush;
 }
 
@@ -41,17 +44,19 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
     out << "mesh,triangles,accel,build_ms,bytes_per_triangle,threads,"
            "primary_mrays_1t,random_mrays_1t,primary_mrays_nt,random_mrays_nt,"
            "rays_traced,subsampled,primary_hits,random_hits,primary_nodes_per_ray,"
-           "primary_tests_per_ray,random_nodes_per_ray,random_tests_per_ray\n";
+           "primary_tests_per_ray,random_nodes_per_ray,random_tests_per_ray,"
+           "primary_packet_mrays_1t,random_packet_mrays_1t\n";
     for (const Measurement& m : results) {
         out << fmt::format(
             "{},{},{},{:.3f},{:.2f},{},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{},{:.2f},{:.2f},{:.2f}"
-            ",{:.2f}\n",
+            ",{:.2f},{:.4f},{:.4f}\n",
             m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle, m.threads,
             m.primary_one.mrays_per_second, m.random_one.mrays_per_second,
             m.primary_all.mrays_per_second, m.random_all.mrays_per_second, m.primary_one.rays,
             m.primary_one.subsampled ? 1 : 0, m.primary_one.hits, m.random_one.hits,
             m.primary_one.nodes_per_ray, m.primary_one.tests_per_ray, m.random_one.nodes_per_ray,
-            m.random_one.tests_per_ray);
+            m.random_one.tests_per_ray, m.primary_packet_one.mrays_per_second,
+            m.random_packet_one.mrays_per_second);
     }
     if (!out) {
         throw IoError("rt_lab: cannot write " + file);

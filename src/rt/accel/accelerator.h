@@ -2,6 +2,7 @@
 // so it is virtual; the ray-polygon test inside is not.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -36,6 +37,17 @@ struct TraceCounters {
     }
 };
 
+/// Rays asked together: coherent ones (eye rays of neighbouring pixels, shadow feelers from
+/// neighbouring hits toward one light point) share the walk through a structure. A lane whose
+/// bit in `active` is clear is not asked, and its answer is left as it was.
+constexpr int kPacketSize = 8;
+struct RayPacket {
+    std::array<Ray, kPacketSize> rays{};
+    std::array<Interval, kPacketSize> t{};
+    std::uint32_t active = 0;  ///< bit k: lane k is asked
+};
+using PacketHits = std::array<std::optional<Hit>, kPacketSize>;
+
 class Accelerator {
 public:
     virtual ~Accelerator() = default;
@@ -52,6 +64,27 @@ public:
     }
     /// Whether any polygon is hit with t inside the interval (shadow feelers that stop dead).
     virtual bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const = 0;
+    /// closest_hit for each active lane of the packet, into hits[lane]: each answer is exactly
+    /// the single ray's. Methods without a packet walk ask closest_hit lane by lane.
+    virtual void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                    TraceCounters& counters) const {
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            if ((packet.active >> lane) & 1u) {
+                hits[lane] = closest_hit(packet.rays[lane], packet.t[lane], counters);
+            }
+        }
+    }
+    /// occluded for each active lane: bit k set when lane k is blocked (inactive lanes: 0).
+    virtual std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
+        std::uint32_t blocked = 0;
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            if (((packet.active >> lane) & 1u) &&
+                occluded(packet.rays[lane], packet.t[lane], counters)) {
+                blocked |= 1u << lane;
+            }
+        }
+        return blocked;
+    }
     /// Bytes held by the structure (not the scene), for -p and the lab.
     virtual std::size_t memory_bytes() const { return 0; }
 };

@@ -23,6 +23,11 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    /// Eight rays walk the tree together (bvh_packet_traversal.cpp); each answer is the single
+    /// ray's.
+    void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                            TraceCounters& counters) const override;
+    std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
     std::size_t memory_bytes() const override;
 
     /// For tests and the lab: the tree's size.

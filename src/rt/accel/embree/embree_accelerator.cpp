@@ -42,6 +42,9 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    /// Embree's own packet call, rtcIntersect8, so that the lab compares packets with packets.
+    void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                            TraceCounters& counters) const override;
     std::size_t memory_bytes() const override {
         return static_cast<std::size_t>(std::max<long long>(0, allocated_.load())) +
                triangle_polygon_.capacity() * sizeof(std::uint32_t);
@@ -152,6 +155,43 @@ std::optional<Hit> EmbreeAccelerator::closest_hit(const Ray& ray, Interval t,
         return std::nullopt;
     }
     return Hit{static_cast<double>(hit.ray.tfar), triangle_polygon_[hit.hit.primID]};
+}
+
+void EmbreeAccelerator::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                           TraceCounters& /*counters*/) const {
+    RTCIntersectContext context{};  // zeroed, then set by rtcInitIntersectContext
+    rtcInitIntersectContext(&context);
+    alignas(32) int valid[kPacketSize] = {};
+    alignas(32) RTCRayHit8 rays{};
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+        if (((packet.active >> lane) & 1u) == 0) {
+            continue;
+        }
+        const RTCRay r = embree_ray(packet.rays[lane], packet.t[lane]);
+        hits[lane] = std::nullopt;
+        if (!embree_accepts(r)) {
+            continue;
+        }
+        valid[lane] = -1;
+        rays.ray.org_x[lane] = r.org_x;
+        rays.ray.org_y[lane] = r.org_y;
+        rays.ray.org_z[lane] = r.org_z;
+        rays.ray.dir_x[lane] = r.dir_x;
+        rays.ray.dir_y[lane] = r.dir_y;
+        rays.ray.dir_z[lane] = r.dir_z;
+        rays.ray.tnear[lane] = r.tnear;
+        rays.ray.tfar[lane] = r.tfar;
+        rays.ray.mask[lane] = r.mask;
+        rays.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        rays.hit.primID[lane] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid, scene_, &context, &rays);
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+        if (valid[lane] != 0 && rays.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+            hits[lane] = Hit{static_cast<double>(rays.ray.tfar[lane]),
+                             triangle_polygon_[rays.hit.primID[lane]]};
+        }
+    }
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, Interval t, TraceCounters& /*counters*/) const {

@@ -1,0 +1,211 @@
+// Each step mirrors FloatRay::FloatRay (float_ray.cpp) operation for operation, in the same
+// order, so that the results are bit for bit the same (tests/accel/bvh/bvh_packet_test.cpp
+// checks it); a change there must be made here too.
+#include "rt/accel/bvh/packet_setup.h"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#define RT_PACKET_SETUP_AVX2 1
+#endif
+
+namespace rt::bvh {
+
+namespace {
+
+float next_up(float f) {
+    if (!(f < HUGE_VALF)) {
+        return f;
+    }
+    if (f == 0.0f) {
+        return std::numeric_limits<float>::denorm_min();
+    }
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
+}
+
+float next_down(float f) {
+    return -next_up(-f);
+}
+
+}  // namespace
+
+float lane_scaled_down(const PacketValues& v, int lane, double t) {
+    const double x = t * v.scale_t[lane];
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? next_down(f) : f;
+}
+
+float lane_scaled_up(const PacketValues& v, int lane, double t) {
+    const double x = t * v.scale_t[lane];
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? next_up(f) : f;
+}
+
+#ifdef RT_PACKET_SETUP_AVX2
+
+namespace {
+
+// FloatRay's next_up and next_down for four floats that are finite (the only ones that can
+// have been rounded the wrong way).
+__attribute__((target("avx2"))) __m128 step_up(__m128 f, __m128 apply) {
+    const __m128i bits = _mm_castps_si128(f);
+    const __m128 zero = _mm_setzero_ps();
+    const __m128i one = _mm_set1_epi32(1);
+    __m128i stepped = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(_mm_add_epi32(bits, one)),
+                                                     _mm_castsi128_ps(_mm_sub_epi32(bits, one)),
+                                                     _mm_cmplt_ps(f, zero)));
+    // next_up(+-0) is the smallest denormal.
+    stepped = _mm_castps_si128(
+        _mm_blendv_ps(_mm_castsi128_ps(stepped), _mm_castsi128_ps(one), _mm_cmpeq_ps(f, zero)));
+    return _mm_blendv_ps(f, _mm_castsi128_ps(stepped), apply);
+}
+
+// scaled_down (down = true) or scaled_up of four t, with the lanes' scale_t.
+__attribute__((target("avx2"))) __m128 scaled_t(__m256d t, __m256d scale_t, bool down) {
+    const __m256d x = _mm256_mul_pd(t, scale_t);
+    const __m128 f = _mm256_cvtpd_ps(x);
+    const __m256d back = _mm256_cvtps_pd(f);
+    if (down) {
+        const __m128 wrong = _mm256_cvtpd_ps(_mm256_cmp_pd(back, x, _CMP_GT_OQ));
+        const __m128 negated = _mm_xor_ps(f, _mm_set1_ps(-0.0f));
+        return _mm_xor_ps(step_up(negated, wrong), _mm_set1_ps(-0.0f));
+    }
+    return step_up(f, _mm256_cvtpd_ps(_mm256_cmp_pd(back, x, _CMP_LT_OQ)));
+}
+
+// Picks per lane: a where `first`, else b where `second`, else c.
+__attribute__((target("avx2"))) inline __m256d pick(__m256d first, __m256d a, __m256d second,
+                                                    __m256d b, __m256d c) {
+    return _mm256_blendv_pd(_mm256_blendv_pd(c, b, second), a, first);
+}
+
+// Four lanes, starting at `first`, of FloatRay's values; returns the lanes (bits) that are
+// usable and of ordinary exponent.
+__attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packet, int first,
+                                                          double scene_scale, PacketValues& v) {
+    const Ray* r = packet.rays.data() + first;
+    __m256d o[3];
+    __m256d d[3];
+    for (int k = 0; k < 3; ++k) {
+        o[k] = _mm256_setr_pd(r[0].origin[k], r[1].origin[k], r[2].origin[k], r[3].origin[k]);
+        d[k] = _mm256_setr_pd(r[0].direction[k], r[1].direction[k], r[2].direction[k],
+                              r[3].direction[k]);
+    }
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    const __m256d infinity = _mm256_set1_pd(HUGE_VAL);
+    __m256d a[3];
+    __m256d finite = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    __m256d origin_size = _mm256_setzero_pd();
+    for (int k = 0; k < 3; ++k) {
+        a[k] = _mm256_andnot_pd(sign, d[k]);
+        const __m256d ao = _mm256_andnot_pd(sign, o[k]);
+        finite = _mm256_and_pd(finite, _mm256_and_pd(_mm256_cmp_pd(a[k], infinity, _CMP_LT_OQ),
+                                                     _mm256_cmp_pd(ao, infinity, _CMP_LT_OQ)));
+        // std::max keeps its first operand unless the second is larger (NaN lanes are unusable).
+        origin_size =
+            k == 0 ? ao
+                   : _mm256_blendv_pd(origin_size, ao, _mm256_cmp_pd(origin_size, ao, _CMP_LT_OQ));
+    }
+    __m256d largest = a[0];
+    largest = _mm256_blendv_pd(largest, a[1], _mm256_cmp_pd(largest, a[1], _CMP_LT_OQ));
+    largest = _mm256_blendv_pd(largest, a[2], _mm256_cmp_pd(largest, a[2], _CMP_LT_OQ));
+    const __m256d m = _mm256_add_pd(_mm256_set1_pd(scene_scale), origin_size);
+    // The exponent of `largest`, and whether it lies within FloatRay's bit-work range.
+    const __m256i bits = _mm256_castpd_si256(largest);
+    const __m256i exponent =
+        _mm256_sub_epi64(_mm256_and_si256(_mm256_srli_epi64(bits, 52), _mm256_set1_epi64x(0x7ff)),
+                         _mm256_set1_epi64x(1023));
+    const __m256i ordinary =
+        _mm256_andnot_si256(_mm256_or_si256(_mm256_cmpgt_epi64(_mm256_set1_epi64x(-1000), exponent),
+                                            _mm256_cmpgt_epi64(exponent, _mm256_set1_epi64x(1000))),
+                            _mm256_set1_epi64x(-1));
+    const __m256d usable = _mm256_and_pd(
+        _mm256_and_pd(finite, _mm256_cmp_pd(largest, _mm256_setzero_pd(), _CMP_GT_OQ)),
+        _mm256_and_pd(_mm256_cmp_pd(m, _mm256_set1_pd(0x1p-40), _CMP_GE_OQ),
+                      _mm256_cmp_pd(m, _mm256_set1_pd(0x1p40), _CMP_LE_OQ)));
+    const auto lanes = static_cast<std::uint32_t>(
+        _mm256_movemask_pd(_mm256_and_pd(usable, _mm256_castsi256_pd(ordinary))));
+    const __m256d shrink = _mm256_castsi256_pd(
+        _mm256_slli_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(1023), exponent), 52));
+    const __m256d scale_t = _mm256_castsi256_pd(
+        _mm256_slli_epi64(_mm256_add_epi64(_mm256_set1_epi64x(1023), exponent), 52));
+    _mm256_storeu_pd(v.scale_t + first, scale_t);
+    const __m256d slack = _mm256_set1_pd(1.0 + 0x1p-20);
+    const __m256d eps = _mm256_mul_pd(_mm256_set1_pd(0x1p-20), m);
+    __m256d scaled[3];
+    __m256d inverse[3];
+    for (int k = 0; k < 3; ++k) {
+        scaled[k] = _mm256_mul_pd(d[k], shrink);
+        __m256d inv = _mm256_div_pd(_mm256_set1_pd(1.0), scaled[k]);
+        const __m256d limit = _mm256_set1_pd(0x1p60);
+        const __m256d within = _mm256_cmp_pd(_mm256_andnot_pd(sign, inv), limit, _CMP_LE_OQ);
+        inv = _mm256_blendv_pd(_mm256_or_pd(limit, _mm256_and_pd(sign, scaled[k])), inv, within);
+        inverse[k] = inv;
+        _mm_storeu_ps(v.origin[k] + first, _mm256_cvtpd_ps(o[k]));
+        _mm_storeu_ps(v.inverse[k] + first, _mm256_cvtpd_ps(inv));
+        const __m256d margin =
+            _mm256_mul_pd(_mm256_mul_pd(eps, _mm256_andnot_pd(sign, inv)), slack);
+        _mm_storeu_ps(v.margin[k] + first, _mm256_cvtpd_ps(margin));
+    }
+    const __m256d eight_eps = _mm256_mul_pd(_mm256_set1_pd(8.0), eps);
+    _mm_storeu_ps(v.edge_linear + first, _mm256_cvtpd_ps(_mm256_mul_pd(eight_eps, slack)));
+    _mm_storeu_ps(v.edge_constant + first,
+                  _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_mul_pd(eight_eps, eps), slack)));
+    // kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2); kx, ky follow it.
+    const __m256d x_over_y = _mm256_cmp_pd(a[0], a[1], _CMP_GT_OQ);
+    const __m256d z0 = _mm256_and_pd(x_over_y, _mm256_cmp_pd(a[0], a[2], _CMP_GT_OQ));
+    const __m256d z1 = _mm256_andnot_pd(x_over_y, _mm256_cmp_pd(a[1], a[2], _CMP_GT_OQ));
+    const __m256d inverse_z = pick(z0, inverse[0], z1, inverse[1], inverse[2]);
+    const __m256d scaled_x = pick(z0, scaled[1], z1, scaled[2], scaled[0]);
+    const __m256d scaled_y = pick(z0, scaled[2], z1, scaled[0], scaled[1]);
+    _mm_storeu_ps(v.shear_x + first, _mm256_cvtpd_ps(_mm256_mul_pd(scaled_x, inverse_z)));
+    _mm_storeu_ps(v.shear_y + first, _mm256_cvtpd_ps(_mm256_mul_pd(scaled_y, inverse_z)));
+    const int zero_bits = _mm256_movemask_pd(z0);
+    const int one_bits = _mm256_movemask_pd(z1);
+    for (int i = 0; i < 4; ++i) {
+        const int kz = ((zero_bits >> i) & 1) != 0 ? 0 : ((one_bits >> i) & 1) != 0 ? 1 : 2;
+        v.kz[first + i] = kz;
+        v.kx[first + i] = (kz + 1) % 3;
+        v.ky[first + i] = (kz + 2) % 3;
+    }
+    const __m256d t_min = _mm256_setr_pd(packet.t[first].min, packet.t[first + 1].min,
+                                         packet.t[first + 2].min, packet.t[first + 3].min);
+    const __m256d t_max = _mm256_setr_pd(packet.t[first].max, packet.t[first + 1].max,
+                                         packet.t[first + 2].max, packet.t[first + 3].max);
+    _mm_storeu_ps(v.t_min + first, scaled_t(t_min, scale_t, true));
+    _mm_storeu_ps(v.t_max + first, scaled_t(t_max, scale_t, false));
+    return lanes << first;
+}
+
+}  // namespace
+
+__attribute__((target("avx2"))) std::uint32_t set_up_packet(const RayPacket& packet,
+                                                            double scene_scale, PacketValues& v) {
+    const std::uint32_t lanes =
+        (set_up_four(packet, 0, scene_scale, v) | set_up_four(packet, 4, scene_scale, v)) &
+        packet.active & 0xffu;
+    // Every set-up lane in the same axes: compare each with the first.
+    v.same_axes = true;
+    if (lanes != 0) {
+        const int common = v.kz[std::countr_zero(lanes)];
+        for (std::uint32_t a = lanes; a != 0; a &= a - 1) {
+            v.same_axes = v.same_axes && v.kz[std::countr_zero(a)] == common;
+        }
+    }
+    return lanes;
+}
+
+#else
+
+std::uint32_t set_up_packet(const RayPacket& /*packet*/, double /*scene_scale*/,
+                            PacketValues& /*v*/) {
+    return 0;
+}
+
+#endif
+
+}  // namespace rt::bvh
