@@ -8,6 +8,19 @@
 
 namespace rt {
 
+namespace {
+
+// The queries' visit, told each leaf's node number (its packets).
+template <class Visit>
+auto numbered(Visit& visit, const OctreeTree& tree) {
+    return
+        [&visit, &tree](std::span<const std::uint32_t>, double t_exit, const OctreeLeafAt& leaf) {
+            return visit(static_cast<std::size_t>(leaf.node - tree.nodes.data()), t_exit);
+        };
+}
+
+}  // namespace
+
 Octree::Octree(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
       tree_(settings.octree.level_order
@@ -16,21 +29,32 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(tree_.world, false)) {
     add_leaf_bounds(scene, tree_);
+    packets_ = CellPackets(scene, tree_.nodes.size(), tree_.bounds_slots, [&](std::size_t n) {
+        const OctreeNode& node = tree_.nodes[n];
+        return node.is_leaf() ? tree_.leaf_polygons(node) : std::span<const std::uint32_t>{};
+    });
+}
+
+// The walk's prefetch for the queries: the next leaf's packets.
+auto Octree::prefetch_packets() const {
+    return [this](const OctreeNode* node) {
+        packets_.prefetch(static_cast<std::size_t>(node - tree_.nodes.data()));
+    };
 }
 
 VoxelSearchParts Octree::search_parts() const {
-    return {scene_, boxes_, tree_.world, tree_.bounds_slots, rules_};
+    return {scene_, boxes_, tree_.world, tree_.bounds_slots, rules_, packets_};
 }
 
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_closest_hit(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
-        walk_octree_inside(tree_, ray, inside, visit);
+        walk_octree_inside(tree_, ray, inside, numbered(visit, tree_), prefetch_packets());
     });
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_occluded(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
-        walk_octree_inside(tree_, ray, inside, visit);
+        walk_octree_inside(tree_, ray, inside, numbered(visit, tree_), prefetch_packets());
     });
 }
 

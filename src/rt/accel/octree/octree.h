@@ -7,6 +7,7 @@
 #include "rt/accel/accelerator.h"
 #include "rt/accel/debug/describe_walk.h"
 #include "rt/accel/octree/octree_tree.h"
+#include "rt/accel/voxel/cell_packets.h"
 #include "rt/accel/voxel/near_hit_rule.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 
@@ -25,7 +26,7 @@ public:
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
     std::size_t memory_bytes() const override {
-        return tree_.memory_bytes() + boxes_.memory_bytes();
+        return tree_.memory_bytes() + boxes_.memory_bytes() + packets_.memory_bytes();
     }
 
     std::string describe_walk(const Ray& ray, Interval t) const override;
@@ -37,8 +38,10 @@ private:
     OctreeTree tree_;
     WalkRules rules_;
     PolygonBoxes boxes_;
+    CellPackets packets_;  ///< by node number (none for interior nodes)
 
     VoxelSearchParts search_parts() const;
+    auto prefetch_packets() const;
 };
 
 std::unique_ptr<Accelerator> make_octree(const Scene& scene, const AccelSettings& settings);

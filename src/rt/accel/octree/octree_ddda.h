@@ -84,8 +84,11 @@ private:
 
 /// walk_octree for a ray already clipped to the world: `inside` is what clip_to_box gave for
 /// the interval (callers that clip first skip the rest of their setup for rays that miss).
-template <class Visit>
-void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
+/// `prefetch(node)` is called with each next leaf as soon as it is found, before the current
+/// one is visited, to ask the cache for what its visit will read.
+template <class Visit, class Prefetch>
+void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit,
+                        Prefetch&& prefetch) {
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
     // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
@@ -136,12 +139,20 @@ void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside,
                 }
             }
             cursor.move_to(at);
-            __builtin_prefetch(tree.polygons.data() + cursor.leaf_node()->first);
+            prefetch(cursor.leaf_node());
         }
         if (visit(tree.leaf_polygons(*leaf.node), t_exit, leaf) || !more) {
             return;
         }
     }
+}
+
+/// The same, asking the cache for each next leaf's polygon ids.
+template <class Visit>
+void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
+    walk_octree_inside(tree, ray, inside, std::forward<Visit>(visit), [&](const OctreeNode* node) {
+        __builtin_prefetch(tree.polygons.data() + node->first);
+    });
 }
 
 /// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest

@@ -10,11 +10,25 @@
 
 namespace rt {
 
+namespace {
+
+// The queries' visit, told each voxel's number (its packets), or kNoCell.
+template <class Visit>
+auto numbered(Visit& visit) {
+    return [&visit](std::size_t voxel, double t_exit, const int*) {
+        return visit(voxel == kNoSeadsVoxel ? kNoCell : voxel, t_exit);
+    };
+}
+
+}  // namespace
+
 Seads::Seads(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
       grid_(build_seads_grid(scene, settings.seads_resolution.value_or(0), settings.no_fudge)),
       rules_(WalkRules::from(settings)),
-      boxes_(scene, voxel_fudge(grid_.world, false)) {}
+      boxes_(scene, voxel_fudge(grid_.world, false)),
+      packets_(scene, grid_.offsets.size() - 1, grid_.bounds_slots,
+               [&](std::size_t v) { return grid_.voxel(v); }) {}
 
 // -tv counts every fruitless voxel, so it needs the walk to visit each one.
 EmptySpace Seads::empty_space() const {
@@ -24,18 +38,20 @@ EmptySpace Seads::empty_space() const {
 }
 
 VoxelSearchParts Seads::search_parts() const {
-    return {scene_, boxes_, grid_.world, grid_.bounds_slots, rules_};
+    return {scene_, boxes_, grid_.world, grid_.bounds_slots, rules_, packets_};
 }
 
 std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_closest_hit(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
-        walk_seads_inside(grid_, ray, inside, visit, empty_space());
+        walk_seads_voxels(grid_, ray, inside, numbered(visit), empty_space(),
+                          packets_.cell_table());
     });
 }
 
 bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_occluded(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
-        walk_seads_inside(grid_, ray, inside, visit, empty_space());
+        walk_seads_voxels(grid_, ray, inside, numbered(visit), empty_space(),
+                          packets_.cell_table());
     });
 }
 

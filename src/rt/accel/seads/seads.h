@@ -9,6 +9,7 @@
 #include "rt/accel/debug/describe_walk.h"
 #include "rt/accel/seads/seads_grid.h"
 #include "rt/accel/seads/seads_walk.h"
+#include "rt/accel/voxel/cell_packets.h"
 #include "rt/accel/voxel/near_hit_rule.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 
@@ -26,7 +27,7 @@ public:
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
     std::size_t memory_bytes() const override {
-        return grid_.memory_bytes() + boxes_.memory_bytes();
+        return grid_.memory_bytes() + boxes_.memory_bytes() + packets_.memory_bytes();
     }
 
     std::string describe_walk(const Ray& ray, Interval t) const override;
@@ -38,6 +39,7 @@ private:
     SeadsGrid grid_;
     WalkRules rules_;
     PolygonBoxes boxes_;
+    CellPackets packets_;  ///< by voxel number
 
     EmptySpace empty_space() const;
     VoxelSearchParts search_parts() const;

@@ -22,11 +22,13 @@ enum class EmptySpace { Leap, VisitEach };
 /// of t, far below the fudge; the voxel number itself is kept in integers.
 class SeadsCursor {
 public:
-    SeadsCursor(const SeadsGrid& grid, const Ray& ray, double t_start)
+    /// `by_voxel`: the table indexed by voxel number whose entry prefetch_next asks for.
+    SeadsCursor(const SeadsGrid& grid, const Ray& ray, double t_start,
+                const std::uint32_t* by_voxel)
         : grid_(grid),
           ray_(ray),
           side_(grid.side),
-          offsets_(grid.offsets.data()),
+          offsets_(by_voxel),
           voxels_(grid.offsets.size() - 1),
           inverse_{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z},
           per_voxel_{1.0 / grid.voxel_size.x, 1.0 / grid.voxel_size.y, 1.0 / grid.voxel_size.z} {
@@ -54,7 +56,7 @@ public:
     }
     double exit_t(int axis) const { return t_next_[axis]; }
 
-    /// Asks for the offsets of the voxel across `axis`, to arrive while this one is tested.
+    /// Asks for the table entry of the voxel across `axis`, to arrive while this one is tested.
     void prefetch_next(int axis) const {
         if (const std::size_t next = voxel_ + static_cast<std::size_t>(stride_[axis]);
             next < voxels_) {
@@ -146,12 +148,17 @@ private:
     std::size_t voxel_ = 0;
 };
 
-/// walk_seads for a ray already clipped to the world: `inside` is what clip_to_box gave for the
-/// interval (callers that clip first skip the rest of their setup for rays that miss).
+/// A voxel number that stands for no voxel with polygons (an empty one, or a leap).
+inline constexpr std::size_t kNoSeadsVoxel = std::numeric_limits<std::size_t>::max();
+
+/// The walk for a ray already clipped to the world (`inside` is what clip_to_box gave for the
+/// interval), calling visit(voxel, t_exit, cell): `voxel` the number of a voxel with polygons,
+/// kNoSeadsVoxel for an empty one or a leap. The walk itself reads only the clearance table;
+/// it asks the cache for `by_voxel`'s entry of each next voxel (the table the visit reads).
 template <class Visit>
-void walk_seads_inside(const SeadsGrid& grid, const Ray& ray, Interval inside, Visit&& visit,
-                       EmptySpace empty = EmptySpace::Leap) {
-    SeadsCursor at(grid, ray, inside.min);
+void walk_seads_voxels(const SeadsGrid& grid, const Ray& ray, Interval inside, Visit&& visit,
+                       EmptySpace empty, const std::uint32_t* by_voxel) {
+    SeadsCursor at(grid, ray, inside.min, by_voxel);
     while (true) {
         const int clearance = grid.clearance[at.voxel()];
         if (clearance >= 2 && empty == EmptySpace::Leap) {
@@ -159,8 +166,8 @@ void walk_seads_inside(const SeadsGrid& grid, const Ray& ray, Interval inside, V
             const int reach = clearance - 1;
             int axis = 0;
             const double t_leave = at.cube_exit(reach, axis);
-            if (visit(std::span<const std::uint32_t>{}, t_leave, at.cell()) ||
-                !(t_leave < inside.max) || !at.leap(reach, axis, t_leave)) {
+            if (visit(kNoSeadsVoxel, t_leave, at.cell()) || !(t_leave < inside.max) ||
+                !at.leap(reach, axis, t_leave)) {
                 return;
             }
             continue;
@@ -168,12 +175,25 @@ void walk_seads_inside(const SeadsGrid& grid, const Ray& ray, Interval inside, V
         const int axis = at.exit_axis();
         const double t_exit = at.exit_t(axis);
         at.prefetch_next(axis);
-        const std::span<const std::uint32_t> polygons =
-            clearance == 0 ? grid.voxel(at.voxel()) : std::span<const std::uint32_t>{};
-        if (visit(polygons, t_exit, at.cell()) || !(t_exit < inside.max) || !at.step(axis)) {
+        const std::size_t voxel = clearance == 0 ? at.voxel() : kNoSeadsVoxel;
+        if (visit(voxel, t_exit, at.cell()) || !(t_exit < inside.max) || !at.step(axis)) {
             return;
         }
     }
+}
+
+/// The same, calling visit(polygons, t_exit, cell) with the voxel's polygon ids.
+template <class Visit>
+void walk_seads_inside(const SeadsGrid& grid, const Ray& ray, Interval inside, Visit&& visit,
+                       EmptySpace empty = EmptySpace::Leap) {
+    walk_seads_voxels(
+        grid, ray, inside,
+        [&](std::size_t voxel, double t_exit, const int* cell) {
+            return visit(
+                voxel == kNoSeadsVoxel ? std::span<const std::uint32_t>{} : grid.voxel(voxel),
+                t_exit, cell);
+        },
+        empty, grid.offsets.data());
 }
 
 /// Calls visit(polygons, t_exit, voxel) for each voxel (voxel: its x, y, z) the ray passes within

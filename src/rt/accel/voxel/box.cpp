@@ -56,8 +56,11 @@ bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& ins
             }
             continue;
         }
-        double t0 = (box.lo[axis] - o) / d;
-        double t1 = (box.hi[axis] - o) / d;
+        // A product with the reciprocal rather than two divisions: an ulp or so apart, far below
+        // the world's margin. (A NaN from 0 * inf, for a denormal d, leaves the axis unclipped.)
+        const double inverse = 1.0 / d;
+        double t0 = (box.lo[axis] - o) * inverse;
+        double t1 = (box.hi[axis] - o) * inverse;
         if (t0 > t1) {
             std::swap(t0, t1);
         }

@@ -27,7 +27,8 @@ struct WalkRules {
 /// How far in t a computed hit may lie from its true point, for this ray: the plane's t is off by
 /// a few units in the last place of the distance from the ray's origin, divided by |cos| >= 1e-6
 /// (below that intersect_polygon leaves the plane), so 2^-29 of (distance to the world's centre
-/// plus the world's size) covers it. The walk starts and ends that much beyond the interval and
+/// plus the world's size) covers it; both lengths are bounded from the safe side without square
+/// roots. The walk starts and ends that much beyond the interval and
 /// accepts a hit only that much before a voxel's exit, so it stays exact wherever the origin is.
 /// Zero with -of.
 double rounding_slack(const Ray& ray, const Box3& world, const WalkRules& rules);

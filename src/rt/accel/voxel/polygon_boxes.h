@@ -1,15 +1,12 @@
-// A cheap first look before the exact ray-polygon test: each polygon's bounding box, grown a
+// A cheap first look before the exact ray-polygon test, for the polygons the float packet test
+// (cell_packets.h) cannot judge: each polygon's bounding box, grown a
 // little and stored as floats rounded outward (24 bytes a polygon, next to each other in memory),
 // tested against the ray's line. A line that misses the grown box cannot have the polygon around
 // it in the exact test (which needs the line to pass through the polygon's projection, up to
 // rounding far below the growth), so the polygon is skipped without touching the scene's records.
 // It only ever skips polygons the exact test would miss: the answers stay brute force's.
 //
-// A triangle whose box the line meets gets a second look before the exact test: the float edge
-// test the BVH also uses (float_prefilter/triangle_prefilter.h, argued in float_ray.cpp, part 3)
-// on its corners stored as floats, which rejects it only when the ray certainly misses it. On
-// random triangle soups a line meets about five boxes for each triangle it hits; this look skips
-// most of those exact tests, each a double-precision test reading three records of the scene.
+// Also here: the ray as the float tests want it (TriangleProbe), and their scene scale.
 #pragma once
 
 #include <cmath>
@@ -125,29 +122,15 @@ public:
         return line_may_meet_box(line, boxes_.data() + 6 * static_cast<std::size_t>(polygon));
     }
 
-    /// False only if the ray certainly misses the polygon: the float edge test for a triangle
-    /// with finite float corners, true for any other polygon (and for a ray the float test
-    /// cannot serve).
-    bool triangle_may_be_hit(TriangleProbe& probe, std::uint32_t polygon) const;
-
-    /// Asks for the polygon's box and corners to be brought into cache (no effect on answers).
-    void prefetch(std::uint32_t polygon) const {
-        __builtin_prefetch(boxes_.data() + 6 * static_cast<std::size_t>(polygon));
-        __builtin_prefetch(corners_.data() + 9 * static_cast<std::size_t>(polygon));
-    }
-
-    /// The largest |coordinate| of any corner kept: the FloatRay's scene scale.
+    /// The largest |coordinate| of any triangle's corner as a float: a FloatRay's scene scale.
     double scale() const { return scale_; }
 
-    std::size_t memory_bytes() const {
-        return (boxes_.capacity() + corners_.capacity()) * sizeof(float);
-    }
+    std::size_t memory_bytes() const { return boxes_.capacity() * sizeof(float); }
 
 private:
-    void keep_triangle(const Scene& scene, std::uint32_t id);
+    void measure_triangle(const Scene& scene, std::uint32_t id);
 
-    std::vector<float> boxes_;    ///< per polygon: lo x y z, hi x y z
-    std::vector<float> corners_;  ///< per polygon: a triangle's corners [vertex][axis], or NaN
+    std::vector<float> boxes_;  ///< per polygon: lo x y z, hi x y z
     double scale_ = 0.0;
 };
 

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "rt/accel/accelerator.h"
+#include "rt/accel/voxel/cell_packets.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 #include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/geometry/ray_polygon.h"
@@ -50,40 +51,50 @@ inline bool voxel_may_hold_hit(std::span<const std::uint32_t> polygons, std::uin
            (bounds_slots == 0 || line_may_meet_box(line, bounds_before(polygons).data()));
 }
 
+/// The same for a voxel's packets, with the bounds copied in front of them (cell_packets.h).
+inline bool voxel_may_hold_hit(const CellView& cell, const LineProbe& line) {
+    return !cell.packets.empty() &&
+           (cell.bounds == nullptr || line_may_meet_box(line, cell.bounds));
+}
+
 /// What both searches share: the ray's box probes and the polygons it has tested, so that each
 /// polygon along the ray is tested once, and only when its boxes may meet the ray.
 class PolygonSieve {
 public:
-    PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
+    /// `scale`: at least the boxes' and the packets' scale (the float tests' error bounds).
+    PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, double scale, const RaySpace& space,
                  TraceCounters& counters)
         : scene_(scene),
           boxes_(boxes),
           line_(space.ray()),
-          triangle_(space.ray(), boxes.scale()),
+          triangle_(space.ray(), scale),
           space_(space),
           counters_(counters) {}
 
     const LineProbe& line() const { return line_; }
 
 protected:
-    /// Calls test(id) for each of the polygons that passes the sieve, counting the test, until
-    /// test returns true; returns whether one did.
+    /// Calls test(id) for each polygon of a voxel's packets that passes the sieve, counting the
+    /// test, until test returns true; returns whether one did. The float test rejects four fan
+    /// triangles at a time; a polygon with a lane left is tested once (and, for a lane marked
+    /// "always", or a ray the float test cannot serve, after its box look).
     template <class Test>
-    bool test_each(std::span<const std::uint32_t> polygons, Test&& test) {
-        // Every box this voxel needs, and every polygon record, asked for at once: their cache
-        // misses then overlap instead of each waiting for the one before.
-        for (const std::uint32_t id : polygons) {
-            boxes_.prefetch(id);
-            __builtin_prefetch(scene_.polygons.data() + id);
-        }
-        for (const std::uint32_t id : polygons) {
-            if (tested_.seen(id) || !boxes_.line_may_meet(line_, id) ||
-                !boxes_.triangle_may_be_hit(triangle_, id)) {
-                continue;
-            }
-            ++counters_.polygon_tests;
-            if (test(id)) {
-                return true;
+    bool test_packets(std::span<const CellPacket> packets, Test&& test) {
+        const FloatRay& ray = triangle_.get();
+        for (const CellPacket& packet : packets) {
+            unsigned lanes = ray.usable ? static_cast<unsigned>(cell_packet_candidates(packet, ray))
+                                        : used_lanes(packet);
+            for (; lanes != 0; lanes &= lanes - 1) {
+                const std::uint32_t word = packet.polygon[__builtin_ctz(lanes)];
+                const std::uint32_t id = word & ~kAlwaysTestBit;
+                const bool needs_box = (word & kAlwaysTestBit) != 0 || !ray.usable;
+                if (tested_.seen(id) || (needs_box && !boxes_.line_may_meet(line_, id))) {
+                    continue;
+                }
+                ++counters_.polygon_tests;
+                if (test(id)) {
+                    return true;
+                }
             }
         }
         return false;
@@ -102,28 +113,46 @@ protected:
 /// (hit.h): the same rule as brute force, so the same answer.
 class NearestHitSearch : public PolygonSieve {
 public:
-    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space,
-                     Interval t, TraceCounters& counters)
-        : PolygonSieve(scene, boxes, space, counters), nearest_(t) {}
+    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale,
+                     const RaySpace& space, Interval t, TraceCounters& counters)
+        : PolygonSieve(scene, boxes, scale, space, counters), nearest_(t) {}
 
-    void test(std::span<const std::uint32_t> polygons);
+    void test(std::span<const CellPacket> packets);
     const std::optional<Hit>& nearest() const { return nearest_.best(); }
 
 private:
+    // The exact test of one polygon, offering its hit. Polygons arrive in voxel order, not id
+    // order: the tie rule picks among equal t.
+    auto offer_to_nearest() {
+        return [this](std::uint32_t id) {
+            if (const std::optional<double> t = intersect_polygon(space_, scene_.polygon_view(id),
+                                                                  nearest_.search_interval())) {
+                nearest_.offer(*t, id);
+            }
+            return false;
+        };
+    }
+
     ClosestHitSoFar nearest_;
 };
 
 /// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).
 class AnyHitSearch : public PolygonSieve {
 public:
-    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, const RaySpace& space, Interval t,
-                 TraceCounters& counters)
-        : PolygonSieve(scene, boxes, space, counters), t_(t) {}
+    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const RaySpace& space,
+                 Interval t, TraceCounters& counters)
+        : PolygonSieve(scene, boxes, scale, space, counters), t_(t) {}
 
     /// True as soon as one of them is hit.
-    bool test(std::span<const std::uint32_t> polygons);
+    bool test(std::span<const CellPacket> packets);
 
 private:
+    auto hit_within() {
+        return [this](std::uint32_t id) {
+            return intersect_polygon(space_, scene_.polygon_view(id), t_).has_value();
+        };
+    }
+
     Interval t_;
 };
 

@@ -11,12 +11,15 @@
 // "no hit" either way.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/voxel/box.h"
+#include "rt/accel/voxel/cell_packets.h"
 #include "rt/accel/voxel/near_hit_rule.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 #include "rt/accel/voxel/voxel_hit_search.h"
@@ -31,11 +34,14 @@ struct VoxelSearchParts {
     const Box3& world;
     std::uint32_t bounds_slots = 0;  ///< in front of each voxel's ids (voxel_bounds.h), or 0
     const WalkRules& rules;
+    const CellPackets& packets;  ///< each voxel's triangles, by the voxel's number
+    /// The float tests' scene scale: covers the boxes' triangles and the packets' lanes.
+    double float_scale() const { return std::max(boxes.scale(), packets.scale()); }
 };
 
-// `walk(inside, visit)` calls visit(polygons, t_exit, where) for each voxel along the ray within
-// `inside` (the interval already clipped to the world), nearest first, until visit returns true:
-// walk_octree_inside or walk_seads_inside.
+// `walk(inside, visit)` calls visit(cell, t_exit) for each voxel along the ray within `inside`
+// (the interval already clipped to the world), nearest first, until visit returns true: `cell`
+// the voxel's number in `packets`, or kNoCell for a voxel (or a run of them) known empty.
 
 /// The nearest hit, as brute force finds it (docs/accelerators.md, "Near hits and the fudge").
 template <class Walk>
@@ -52,11 +58,14 @@ template <class Walk>
     if (!space.valid()) {
         return std::nullopt;
     }
-    NearestHitSearch search(parts.scene, parts.boxes, space, t, counters);
+    NearestHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, t, counters);
     NearHitRule rule(parts.rules, slack);
-    walk(inside, [&](std::span<const std::uint32_t> polygons, double t_exit, const auto&) {
-        if (voxel_may_hold_hit(polygons, parts.bounds_slots, search.line())) {
-            search.test(polygons);
+    walk(inside, [&](std::size_t cell, double t_exit) {
+        if (cell != kNoCell) {
+            if (const CellView view = parts.packets.cell(cell);
+                voxel_may_hold_hit(view, search.line())) {
+                search.test(view.packets);
+            }
         }
         return rule.ends_walk(search.nearest(), t_exit, counters);
     });
@@ -77,12 +86,15 @@ template <class Walk>
     if (!space.valid()) {
         return false;
     }
-    AnyHitSearch search(parts.scene, parts.boxes, space, t, counters);
+    AnyHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, t, counters);
     bool hit = false;
-    walk(inside, [&](std::span<const std::uint32_t> polygons, double, const auto&) {
+    walk(inside, [&](std::size_t cell, double) {
         ++counters.voxels_stepped;
-        hit = voxel_may_hold_hit(polygons, parts.bounds_slots, search.line()) &&
-              search.test(polygons);
+        if (cell == kNoCell) {
+            return false;
+        }
+        const CellView view = parts.packets.cell(cell);
+        hit = voxel_may_hold_hit(view, search.line()) && search.test(view.packets);
         return hit;
     });
     return hit;

@@ -1,0 +1,139 @@
+// Each voxel's (SEADS voxel, octree leaf) triangles laid out next to each other, four to a
+// packet, for the float pre-filter to test four at a time. Without them a voxel's test reads its
+// ids, then each polygon's box and corners from arrays indexed by id: scattered reads, each a
+// likely cache miss on big meshes, and one scalar test each. With them the voxel's data is one
+// contiguous run, and most triangles are rejected four at a time before any id is looked at.
+//
+// A polygon of n corners takes n - 2 lanes, its fan triangles (v0, v_k, v_k+1): the exact test
+// (a winding number around the projected corners) can only hit where the line passes through
+// one of them, so rejecting a lane whose fan triangle the line certainly misses loses nothing
+// (float_prefilter/float_ray.cpp, part 3, argues the float test). A lane whose corners are not
+// finite floats is marked "always": its polygon goes on to the box look and the exact test.
+// Unused lanes hold NaN corners, which no comparison accepts.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "rt/accel/bvh/float4.h"
+#include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+/// Set in CellPacket::polygon for a lane the float test cannot judge.
+inline constexpr std::uint32_t kAlwaysTestBit = 0x80000000u;
+/// CellPacket::polygon of an unused lane (the always bit clear).
+inline constexpr std::uint32_t kUnusedLane = 0x7fffffffu;
+/// A cell number standing for a voxel known to be empty.
+inline constexpr std::size_t kNoCell = static_cast<std::size_t>(-1);
+
+/// 160 bytes on a 16-byte boundary: four fan triangles of a voxel's polygons.
+struct alignas(16) CellPacket {
+    float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest; NaN in unused lanes
+    std::uint32_t polygon[4];  ///< the scene polygon of each lane, | kAlwaysTestBit
+};
+
+/// Bit k set: lane k holds a fan triangle.
+inline unsigned used_lanes(const CellPacket& packet) {
+    unsigned lanes = 0;
+    for (unsigned lane = 0; lane < 4; ++lane) {
+        lanes |= packet.polygon[lane] != kUnusedLane ? 1u << lane : 0u;
+    }
+    return lanes;
+}
+
+/// Bit k set: lane k's triangle may be hit by the ray (usable), or lane k is marked "always".
+// Lane for lane the operations of triangle_candidate (float_prefilter/triangle_prefilter.h).
+inline int cell_packet_candidates(const CellPacket& packet, const FloatRay& ray) {
+    using simd::Float4;
+    const Float4 ox = Float4::broadcast(ray.origin[ray.kx]);
+    const Float4 oy = Float4::broadcast(ray.origin[ray.ky]);
+    const Float4 oz = Float4::broadcast(ray.origin[ray.kz]);
+    const Float4 sx = Float4::broadcast(ray.shear_x);
+    const Float4 sy = Float4::broadcast(ray.shear_y);
+    Float4 x[3];
+    Float4 y[3];
+    Float4 size = Float4::broadcast(0.0f);
+    for (int v = 0; v < 3; ++v) {
+        const Float4 az = Float4::load(packet.corner[v][ray.kz]) - oz;
+        x[v] = (Float4::load(packet.corner[v][ray.kx]) - ox) - sx * az;
+        y[v] = (Float4::load(packet.corner[v][ray.ky]) - oy) - sy * az;
+        size = max(size, max(abs(x[v]), abs(y[v])));
+    }
+    const Float4 e0 = x[1] * y[2] - y[1] * x[2];
+    const Float4 e1 = x[2] * y[0] - y[2] * x[0];
+    const Float4 e2 = x[0] * y[1] - y[0] * x[1];
+    const Float4 margin = size * (Float4::broadcast(ray.edge_margin_linear) +
+                                  size * Float4::broadcast(kRelativeSlack)) +
+                          Float4::broadcast(ray.edge_margin_constant);
+    const Float4 negative_margin = Float4::broadcast(0.0f) - margin;
+    const simd::Mask4 all_positive =
+        (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);
+    const simd::Mask4 all_negative = (e0 <= margin) & (e1 <= margin) & (e2 <= margin);
+    int always = 0;
+    for (int lane = 0; lane < 4; ++lane) {
+        always |= (packet.polygon[lane] & kAlwaysTestBit) != 0 ? 1 << lane : 0;
+    }
+    return (all_positive | all_negative).bits() | always;
+}
+
+/// A voxel's packets, and its bounds (voxel_bounds.h) where the structure has them.
+struct CellView {
+    const float* bounds = nullptr;  ///< lo x y z, hi x y z; null when the structure has none
+    std::span<const CellPacket> packets;
+};
+
+class CellPackets {
+public:
+    CellPackets() = default;
+    /// Packets for cells 0 .. cells - 1, whose polygon ids ids_of(cell) gives; with
+    /// `bounds_slots` != 0, each non-empty cell's bounds (in front of its ids) are copied in
+    /// front of its packets, so the walk reads one run of memory per voxel.
+    CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bounds_slots,
+                const std::function<std::span<const std::uint32_t>(std::size_t)>& ids_of);
+
+    CellView cell(std::size_t c) const {
+        const Block* begin = blocks_.data() + first_[c];
+        const Block* end = blocks_.data() + first_[c + 1];
+        if (begin == end) {
+            return {};
+        }
+        const float* bounds = nullptr;
+        if (with_bounds_) {
+            bounds = begin->f;
+            begin += kHeaderBlocks;
+        }
+        return {
+            bounds,
+            {reinterpret_cast<const CellPacket*>(begin), reinterpret_cast<const CellPacket*>(end)}};
+    }
+    /// Asks the cache for the start of cell c's header and packets.
+    void prefetch(std::size_t c) const { __builtin_prefetch(blocks_.data() + first_[c]); }
+    /// The table indexed by cell number the walk may prefetch from.
+    const std::uint32_t* cell_table() const { return first_.data(); }
+    /// The largest |coordinate| of any finite lane corner: the FloatRay's scene scale covers it.
+    double scale() const { return scale_; }
+    std::size_t memory_bytes() const {
+        return first_.capacity() * sizeof(std::uint32_t) + blocks_.capacity() * sizeof(Block);
+    }
+
+private:
+    struct alignas(16) Block {
+        float f[4];
+    };
+    static constexpr std::uint32_t kHeaderBlocks = 2;  ///< the bounds: 6 floats, 2 spare
+    static constexpr std::uint32_t kPacketBlocks = sizeof(CellPacket) / sizeof(Block);
+    static_assert(sizeof(CellPacket) % sizeof(Block) == 0);
+
+    /// cells + 1: cell c's header and packets are blocks [first_[c], first_[c+1])
+    std::vector<std::uint32_t> first_;
+    std::vector<Block> blocks_;
+    bool with_bounds_ = false;
+    double scale_ = 0.0;
+};
+
+}  // namespace rt

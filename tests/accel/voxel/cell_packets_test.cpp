@@ -1,0 +1,143 @@
+// Each voxel's packets: one lane per fan triangle of each polygon, in the cell's order, the
+// voxel's bounds copied in front, and a four-lane float test that never rejects a polygon the
+// exact test hits.
+#include "rt/accel/voxel/cell_packets.h"
+
+#include <bit>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "rt/accel/voxel/voxel_bounds.h"
+#include "rt/geometry/ray_polygon.h"
+
+#include <gtest/gtest.h>
+
+#include "support/scene_builder.h"
+
+namespace rt {
+namespace {
+
+// The polygon words of every used lane of a cell's packets.
+std::multiset<std::uint32_t> lane_polygons(std::span<const CellPacket> packets) {
+    std::multiset<std::uint32_t> ids;
+    for (const CellPacket& packet : packets) {
+        for (unsigned lanes = used_lanes(packet); lanes != 0; lanes &= lanes - 1) {
+            ids.insert(packet.polygon[std::countr_zero(lanes)]);
+        }
+    }
+    return ids;
+}
+
+TEST(CellPackets, OneLanePerFanTriangleAndBoundsInFront) {
+    test::SceneBuilder b;
+    b.add_polygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});                         // 0: 1 lane
+    b.add_polygon({{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}});              // 1: 2 lanes
+    b.add_polygon({{0, 0, 2}, {2, 0, 2}, {3, 1, 2}, {1, 3, 2}, {-1, 1, 2}});  // 2: 3 lanes
+    b.add_polygon({{1e39, 0, 0}, {1e39, 1, 0}, {1e39, 0, 1}});  // 3: beyond float: always
+    const Scene scene = std::move(b.scene());
+    // Cells as a structure with bounds lays them out: 6 bound slots, then the ids.
+    const std::vector<std::vector<std::uint32_t>> ids = {{0, 1, 2, 3}, {}, {2}};
+    std::vector<std::vector<std::uint32_t>> slots;
+    for (std::size_t c = 0; c < ids.size(); ++c) {
+        std::vector<std::uint32_t> cell;
+        for (int k = 0; k < 6; ++k) {
+            cell.push_back(std::bit_cast<std::uint32_t>(static_cast<float>(10 * c + k)));
+        }
+        cell.insert(cell.end(), ids[c].begin(), ids[c].end());
+        slots.push_back(cell);
+    }
+    const CellPackets packets(scene, ids.size(), kVoxelBoundsSlots, [&](std::size_t c) {
+        return ids[c].empty() ? std::span<const std::uint32_t>{}
+                              : std::span<const std::uint32_t>(slots[c]).subspan(6);
+    });
+
+    const CellView first = packets.cell(0);
+    ASSERT_EQ(first.packets.size(), 2u);  // 7 lanes
+    EXPECT_EQ(lane_polygons(first.packets),
+              (std::multiset<std::uint32_t>{0, 1, 1, 2, 2, 2, 3 | kAlwaysTestBit}));
+    ASSERT_NE(first.bounds, nullptr);
+    for (int k = 0; k < 6; ++k) {
+        EXPECT_EQ(first.bounds[k], static_cast<float>(k));
+    }
+    EXPECT_TRUE(packets.cell(1).packets.empty());
+    EXPECT_EQ(lane_polygons(packets.cell(2).packets), (std::multiset<std::uint32_t>{2, 2, 2}));
+    EXPECT_EQ(packets.cell(2).bounds[0], 20.0f);
+    // The scale covers the finite corners only.
+    EXPECT_EQ(packets.scale(), 3.0);
+}
+
+// Triangles, quads and pentagons (regular, in random planes) of many sizes, some far off.
+Scene random_polygons(std::mt19937& rng, int count) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    test::SceneBuilder b;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 centre =
+            Vec3{normal(rng), normal(rng), normal(rng)} * (i % 5 == 0 ? 100.0 : 1.0);
+        const double size = std::pow(10.0, 1.0 - 7.0 * unit(rng));
+        const Vec3 u = normalize(Vec3{normal(rng), normal(rng), normal(rng)});
+        const Vec3 v = normalize(cross(u, Vec3{normal(rng), normal(rng), normal(rng)}));
+        const int corners = 3 + i % 3;
+        std::vector<Vec3> loop;
+        for (int k = 0; k < corners; ++k) {
+            const double angle = 2.0 * M_PI * k / corners;
+            loop.push_back(centre + (u * std::cos(angle) + v * std::sin(angle)) * size);
+        }
+        b.add_polygon(loop);
+    }
+    return std::move(b.scene());
+}
+
+TEST(CellPackets, NeverRejectAPolygonTheExactTestHits) {
+    std::mt19937 rng(31);
+    const Scene scene = random_polygons(rng, 600);
+    std::vector<std::uint32_t> all(scene.polygons.size());
+    for (std::uint32_t id = 0; id < all.size(); ++id) {
+        all[id] = id;
+    }
+    const CellPackets packets(scene, 1, 0, [&](std::size_t) { return std::span(all); });
+    const std::span<const CellPacket> cell = packets.cell(0).packets;
+    ASSERT_EQ(packets.cell(0).bounds, nullptr);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    int hits = 0;
+    int rejected = 0;
+    for (int i = 0; i < 3000; ++i) {
+        // Aimed at a point of a polygon's first fan triangle, or just beside it.
+        const Polygon& p = scene.polygons[rng() % scene.polygons.size()];
+        const double a = unit(rng) * 1.1;
+        const double b = unit(rng) * (1.1 - a);
+        const Vec3 c0 = scene.corner_position(p, 0);
+        const Vec3 target =
+            c0 + (scene.corner_position(p, 1) - c0) * a + (scene.corner_position(p, 2) - c0) * b;
+        Ray ray{{normal(rng), normal(rng), normal(rng)}, {}};
+        ray.direction = target - ray.origin;
+        const FloatRay float_ray(ray, packets.scale());
+        ASSERT_TRUE(float_ray.usable);
+        std::set<std::uint32_t> kept;
+        for (const CellPacket& packet : cell) {
+            for (unsigned lanes = static_cast<unsigned>(cell_packet_candidates(packet, float_ray));
+                 lanes != 0; lanes &= lanes - 1) {
+                kept.insert(packet.polygon[std::countr_zero(lanes)]);
+            }
+        }
+        for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
+            const bool hit = intersect_polygon(ray, scene.polygon_view(id),
+                                               Interval{-kBeyondAnyScene, kBeyondAnyScene})
+                                 .has_value();
+            if (hit) {
+                ASSERT_TRUE(kept.contains(id)) << "case " << i << ", polygon " << id;
+                ++hits;
+            } else if (!kept.contains(id)) {
+                ++rejected;
+            }
+        }
+    }
+    EXPECT_GT(hits, 3000) << "too few hits for the test to mean much";
+    EXPECT_GT(rejected, 500000) << "the float test rejects almost nothing";
+}
+
+}  // namespace
+}  // namespace rt
