@@ -64,7 +64,15 @@ bool representable(const Rgb& c) {
 // What the rays through pixel centres saw, kept for the rows around the one a thread renders:
 // the adaptive rule asks each centre for up to four neighbouring pixels. Without fuzzy feelers
 // (the only random numbers a probe draws) a centre's answer depends on the pixel alone, so it is
-// traced once per visit instead of once per asking neighbour; the picture is the same.
+// traced once per visit instead of once per asking neighbour; the picture is the same. A kept
+// answer adds the counters of its rays again, so that -p's table stays what the rule asked for,
+// the same whichever thread or process renders which rows.
+struct CentreSeen {
+    SurfaceSeen seen;
+    TraceCounters probe;    ///< the centre ray's counters
+    TraceCounters feelers;  ///< its hit's shadow feelers'
+};
+
 class CentreMemo {
 public:
     explicit CentreMemo(int view_width) {
@@ -73,7 +81,7 @@ public:
         }
     }
 
-    std::optional<SurfaceSeen>& at(int x, int y) {
+    std::optional<CentreSeen>& at(int x, int y) {
         Row& row = rows_[static_cast<std::size_t>(y) % rows_.size()];  // y-1, y, y+1 differ
         if (row.y != y) {
             row.y = y;
@@ -85,7 +93,7 @@ public:
 private:
     struct Row {
         int y = -1;
-        std::vector<std::optional<SurfaceSeen>> seen;
+        std::vector<std::optional<CentreSeen>> seen;
     };
     std::array<Row, 4> rows_;
 };
@@ -100,19 +108,22 @@ bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, Sampl
     for (const auto& offset : offsets) {
         const int nx = std::clamp(x + offset[0], 0, job.scene.view.width - 1);
         const int ny = std::clamp(y + offset[1], 0, job.scene.view.height - 1);
-        const auto centre_sees = [&] {
-            const Ray ray = job.camera.primary_ray(nx + 0.5, ny + 0.5);
-            return job.tracer.first_surface(ray, RayStart::Eye, true, probe);
-        };
+        const auto ray_of_centre = [&] { return job.camera.primary_ray(nx + 0.5, ny + 0.5); };
         SurfaceSeen centre;
         if (memo == nullptr) {
-            centre = centre_sees();
+            centre = job.tracer.first_surface(ray_of_centre(), RayStart::Eye, true, probe);
         } else {
-            std::optional<SurfaceSeen>& kept = memo->at(nx, ny);
+            std::optional<CentreSeen>& kept = memo->at(nx, ny);
             if (!kept) {
-                kept = centre_sees();
+                KindCounters own;
+                SampleContext traced{probe.stream, own, probe.tree, {}};
+                kept = CentreSeen{
+                    job.tracer.first_surface(ray_of_centre(), RayStart::Eye, true, traced),
+                    own[RayKind::Probe], own[RayKind::ShadowFeeler]};
             }
-            centre = *kept;
+            probe.counters[RayKind::Probe] += kept->probe;
+            probe.counters[RayKind::ShadowFeeler] += kept->feelers;
+            centre = kept->seen;
         }
         if (!(centre == seen)) {
             return false;
