@@ -219,6 +219,29 @@ TEST(Directions, CosineHemisphereIsTheCosPowerLawWithNOne) {
     expect_chi_square_fit(s, law);
 }
 
+// The renderer draws all the rays of a lobe from one sampler: a sampler used many times must give
+// each draw exactly what a fresh one gives (no state carried from draw to draw).
+TEST(Directions, ReusedSamplersGiveFreshSamplersDirections) {
+    const Vec3 axis = normalize(Vec3{0.3, -0.8, 0.52});
+    const CosPowerCone cone{20 * kDegree, 10.0};
+    const ConeSampler cone_rays(cone, axis);
+    const CosineHemisphereSampler hemisphere_rays(axis);
+    SampleStream stream(7, 0, 0, 0);
+    for (int k = 0; k < 1000; ++k) {
+        const double u1 = k == 0 ? 1.0 : stream.uniform();  // u1 = 1: the rim probes'
+        const double u2 = stream.uniform();
+        const Vec3 reused = cone_rays(u1, u2);
+        const Vec3 fresh = ConeSampler(cone, axis)(u1, u2);
+        ASSERT_TRUE(reused.x == fresh.x && reused.y == fresh.y && reused.z == fresh.z) << k;
+        const Vec3 reused_diffuse = hemisphere_rays(u1, u2);
+        const Vec3 fresh_diffuse = CosineHemisphereSampler(axis)(u1, u2);
+        ASSERT_TRUE(reused_diffuse.x == fresh_diffuse.x && reused_diffuse.y == fresh_diffuse.y &&
+                    reused_diffuse.z == fresh_diffuse.z)
+            << k;
+        EXPECT_GE(dot(reused, axis), std::cos(cone.half_angle) - 1e-12);
+    }
+}
+
 TEST(Directions, OrthonormalBasisIsOrthonormal) {
     for (const Vec3& n : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, normalize(Vec3{1, 2, 3}),
                           normalize(Vec3{-1, 0.001, -0.2})}) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "rt/sampling/adaptive_mean.h"
 #include "rt/sampling/sampling_settings.h"
@@ -219,14 +220,21 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
     }
     const SamplingSettings& sampling = settings_.sampling;
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
+    // The lobe's basis and cone edge, once for all its rays.
+    std::optional<CosineHemisphereSampler> hemisphere;
+    std::optional<ConeSampler> cone;
+    if (lobe.diffuse) {
+        hemisphere.emplace(lobe.axis);
+    } else {
+        cone.emplace(lobe.cone, lobe.axis);
+    }
     const auto take = [&](std::uint32_t k) {
         double u1 = 0.0;
         double u2 = 0.0;
         const double j1 = sample.stream.uniform();
         const double j2 = sample.stream.uniform();
         ray_strata_.point(k, j1, j2, u1, u2);
-        Vec3 direction = lobe.diffuse ? sample_cosine_hemisphere(lobe.axis, u1, u2)
-                                      : sample_cone(lobe.cone, lobe.axis, u1, u2);
+        Vec3 direction = lobe.diffuse ? (*hemisphere)(u1, u2) : (*cone)(u1, u2);
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
         const Rgb value =
             trace({s.position, direction}, lobe.kind, depth + 1, true, sample, weight);
@@ -234,17 +242,17 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
         return SeenSample<SurfaceSeen>{value, sample.last_seen};
     };
     const auto rim_agrees = [&](const SurfaceSeen& seen) {
-        return lobe.diffuse || rim_sees(lobe, s, seen, sample);
+        return lobe.diffuse || rim_sees(lobe, *cone, s, seen, sample);
     };
     return adaptive_mean(total, sampling.adaptive ? &sampling.ray_stop : nullptr, take, rim_agrees)
         .mean();
 }
 
-bool RayTracer::rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
-                         SampleContext& sample) const {
+bool RayTracer::rim_sees(const Lobe& lobe, const ConeSampler& cone, const SurfacePoint& s,
+                         const SurfaceSeen& seen, SampleContext& sample) const {
     const bool full = settings_.sampling.illuminate_distributed;  // as for the lobe's own rays
     for (int quarter = 0; quarter < 4; ++quarter) {
-        Vec3 direction = sample_cone(lobe.cone, lobe.axis, 1.0, quarter / 4.0);  // u1 = 1: rim
+        Vec3 direction = cone(1.0, quarter / 4.0);  // u1 = 1: rim
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
         ++sample.tree.probes;
         if (!(first_surface({s.position, direction}, RayStart::Elsewhere, full, sample) == seen)) {

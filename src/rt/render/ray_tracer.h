@@ -85,8 +85,8 @@ private:
                       ///< it keeps the simple model
     };
     /// Whether rays along the cone's rim see `seen` too (see gather).
-    bool rim_sees(const Lobe& lobe, const SurfacePoint& s, const SurfaceSeen& seen,
-                  SampleContext& sample) const;
+    bool rim_sees(const Lobe& lobe, const ConeSampler& cone, const SurfacePoint& s,
+                  const SurfaceSeen& seen, SampleContext& sample) const;
     Rgb secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, bool full,
                        SampleContext& sample, double weight) const;
     Rgb refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, LobeRays rays,

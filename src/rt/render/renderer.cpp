@@ -1,10 +1,12 @@
 #include "rt/render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -59,16 +61,71 @@ bool representable(const Rgb& c) {
     return std::fabs(c.r) <= FLT_MAX && std::fabs(c.g) <= FLT_MAX && std::fabs(c.b) <= FLT_MAX;
 }
 
+// What the rays through pixel centres saw, kept for the rows around the one a thread renders:
+// the adaptive rule asks each centre for up to four neighbouring pixels. Without fuzzy feelers
+// (the only random numbers a probe draws) a centre's answer depends on the pixel alone, so it is
+// traced once per visit instead of once per asking neighbour; the picture is the same. A kept
+// answer adds the counters of its rays again, so that -p's table stays what the rule asked for,
+// the same whichever thread or process renders which rows.
+struct CentreSeen {
+    SurfaceSeen seen;
+    TraceCounters probe;    ///< the centre ray's counters
+    TraceCounters feelers;  ///< its hit's shadow feelers'
+};
+
+class CentreMemo {
+public:
+    explicit CentreMemo(int view_width) {
+        for (Row& row : rows_) {
+            row.seen.resize(static_cast<std::size_t>(view_width));
+        }
+    }
+
+    std::optional<CentreSeen>& at(int x, int y) {
+        Row& row = rows_[static_cast<std::size_t>(y) % rows_.size()];  // y-1, y, y+1 differ
+        if (row.y != y) {
+            row.y = y;
+            std::fill(row.seen.begin(), row.seen.end(), std::nullopt);
+        }
+        return row.seen[static_cast<std::size_t>(x)];
+    }
+
+private:
+    struct Row {
+        int y = -1;
+        std::vector<std::optional<CentreSeen>> seen;
+    };
+    std::array<Row, 4> rows_;
+};
+
 // Whether the centre rays of the four neighbouring pixels see the same surface (SurfaceSeen: one
 // polygon in the same light, or all miss): a polygon's edge or a shadow's edge can pass between
-// a pixel's first samples unseen, but rarely past its neighbours too.
-bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, SampleContext& probe) {
+// a pixel's first samples unseen, but rarely past its neighbours too. `memo` is null when the
+// answers may not be kept (fuzzy feelers).
+bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, SampleContext& probe,
+                    CentreMemo* memo) {
     const int offsets[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     for (const auto& offset : offsets) {
         const int nx = std::clamp(x + offset[0], 0, job.scene.view.width - 1);
         const int ny = std::clamp(y + offset[1], 0, job.scene.view.height - 1);
-        const Ray ray = job.camera.primary_ray(nx + 0.5, ny + 0.5);
-        if (!(job.tracer.first_surface(ray, RayStart::Eye, true, probe) == seen)) {
+        const auto ray_of_centre = [&] { return job.camera.primary_ray(nx + 0.5, ny + 0.5); };
+        SurfaceSeen centre;
+        if (memo == nullptr) {
+            centre = job.tracer.first_surface(ray_of_centre(), RayStart::Eye, true, probe);
+        } else {
+            std::optional<CentreSeen>& kept = memo->at(nx, ny);
+            if (!kept) {
+                KindCounters own;
+                SampleContext traced{probe.stream, own, probe.tree, {}};
+                kept = CentreSeen{
+                    job.tracer.first_surface(ray_of_centre(), RayStart::Eye, true, traced),
+                    own[RayKind::Probe], own[RayKind::ShadowFeeler]};
+            }
+            probe.counters[RayKind::Probe] += kept->probe;
+            probe.counters[RayKind::ShadowFeeler] += kept->feelers;
+            centre = kept->seen;
+        }
+        if (!(centre == seen)) {
             return false;
         }
     }
@@ -80,7 +137,8 @@ bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, Sampl
 // with -Dx. The rule may stop early only where every sample so far, and the centres of the four
 // neighbouring pixels, see the same surface. One sample per pixel looks through the pixel's
 // centre, as the original did.
-Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelReport& report) {
+Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelReport& report,
+                 CentreMemo* memo) {
     const SamplingSettings& sampling = job.settings.shading.sampling;
     const std::uint32_t total = job.pixel_strata.size();
     const auto take = [&](std::uint32_t k) {
@@ -107,7 +165,7 @@ Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelRepo
         SampleStream probe_stream(sampling.seed, x, y, total);  // after the pixel's samples
         SampleContext probe{probe_stream, counters, report.tree, {}};
         report.probes += 4;
-        return neighbours_see(job, x, y, seen, probe);
+        return neighbours_see(job, x, y, seen, probe, memo);
     };
     const RunningStatistics statistics = adaptive_mean(
         total, sampling.adaptive ? &sampling.pixel_stop : nullptr, take, neighbours_agree);
@@ -144,6 +202,10 @@ void render_rows(RenderJob& job, KindCounters& counters) {
     const PixelRect& w = job.settings.window;
     const bool pixel_events = job.observer.wants_pixel_events();
     const bool sample_events = job.observer.wants_sample_reports();
+    std::optional<CentreMemo> memo;
+    if (!job.settings.shading.fuzzy.enabled()) {
+        memo.emplace(job.scene.view.width);
+    }
     while (!job.stopping) {
         int y = 0;
         if (job.settings.rows != nullptr) {
@@ -166,7 +228,8 @@ void render_rows(RenderJob& job, KindCounters& counters) {
                 job.observer.pixel_started(x, y);
             }
             PixelReport report;
-            job.film.set_pixel(x, y, render_pixel(job, x, y, counters, report));
+            job.film.set_pixel(x, y,
+                               render_pixel(job, x, y, counters, report, memo ? &*memo : nullptr));
             samples += report.samples;
             if (sample_events) {
                 std::lock_guard lock(job.observer_mutex);

@@ -15,10 +15,8 @@ double edge_power(const CosPowerCone& cone) {
     return std::pow(std::cos(half_angle), cone.exponent + 1.0);
 }
 
-Vec3 around(const Vec3& axis, double cos_theta, double phi) {
-    Vec3 tangent;
-    Vec3 bitangent;
-    orthonormal_basis(axis, tangent, bitangent);
+Vec3 around(const Vec3& axis, const Vec3& tangent, const Vec3& bitangent, double cos_theta,
+            double phi) {
     const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
     return tangent * (sin_theta * std::cos(phi)) + bitangent * (sin_theta * std::sin(phi)) +
            axis * cos_theta;
@@ -35,9 +33,19 @@ void orthonormal_basis(const Vec3& axis, Vec3& tangent, Vec3& bitangent) {
 }
 
 Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u2) {
-    const double edge = edge_power(cone);
-    const double cos_theta = std::pow(1.0 - u1 * (1.0 - edge), 1.0 / (cone.exponent + 1.0));
-    return around(axis, cos_theta, 2.0 * std::numbers::pi * u2);
+    return ConeSampler(cone, axis)(u1, u2);
+}
+
+ConeSampler::ConeSampler(const CosPowerCone& cone, const Vec3& axis)
+    : axis_(axis),
+      below_edge_(1.0 - edge_power(cone)),
+      inverse_power_(1.0 / (cone.exponent + 1.0)) {
+    orthonormal_basis(axis, tangent_, bitangent_);
+}
+
+Vec3 ConeSampler::operator()(double u1, double u2) const {
+    const double cos_theta = std::pow(1.0 - u1 * below_edge_, inverse_power_);
+    return around(axis_, tangent_, bitangent_, cos_theta, 2.0 * std::numbers::pi * u2);
 }
 
 double mean_cosine(const CosPowerCone& cone) {
@@ -52,7 +60,15 @@ double mean_cosine(const CosPowerCone& cone) {
 }
 
 Vec3 sample_cosine_hemisphere(const Vec3& normal, double u1, double u2) {
-    return around(normal, std::sqrt(1.0 - u1), 2.0 * std::numbers::pi * u2);
+    return CosineHemisphereSampler(normal)(u1, u2);
+}
+
+CosineHemisphereSampler::CosineHemisphereSampler(const Vec3& normal) : normal_(normal) {
+    orthonormal_basis(normal, tangent_, bitangent_);
+}
+
+Vec3 CosineHemisphereSampler::operator()(double u1, double u2) const {
+    return around(normal_, tangent_, bitangent_, std::sqrt(1.0 - u1), 2.0 * std::numbers::pi * u2);
 }
 
 }  // namespace rt

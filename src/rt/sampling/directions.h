@@ -22,10 +22,39 @@ struct CosPowerCone {
 /// to the axis by inverting the cone's distribution exactly, the turn around it uniformly.
 Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u2);
 
+/// sample_cone for many directions of one cone around one axis (the rays of one lobe): the
+/// axis's basis and the cone's edge, a cosine and a power, are worked out once instead of for
+/// every ray. It gives sample_cone's directions bit for bit.
+class ConeSampler {
+public:
+    ConeSampler(const CosPowerCone& cone, const Vec3& axis);
+    Vec3 operator()(double u1, double u2) const;
+
+private:
+    Vec3 axis_;
+    Vec3 tangent_;
+    Vec3 bitangent_;
+    double below_edge_;     ///< 1 - cos^(n+1) of the edge
+    double inverse_power_;  ///< 1 / (n + 1)
+};
+
 /// The mean of cos(angle to the axis) over the cone's distribution (for tests and for -K).
 double mean_cosine(const CosPowerCone& cone);
 
 /// A cosine-weighted direction of the hemisphere around the unit normal (diffuse rays of -Ds).
 Vec3 sample_cosine_hemisphere(const Vec3& normal, double u1, double u2);
+
+/// sample_cosine_hemisphere for many directions around one normal, its basis worked out once;
+/// the same directions bit for bit.
+class CosineHemisphereSampler {
+public:
+    explicit CosineHemisphereSampler(const Vec3& normal);
+    Vec3 operator()(double u1, double u2) const;
+
+private:
+    Vec3 normal_;
+    Vec3 tangent_;
+    Vec3 bitangent_;
+};
 
 }  // namespace rt
