@@ -9,8 +9,10 @@
 
 namespace rt::bvh {
 
-/// Bit k set: lane k's triangle may be hit.
-inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) {
+/// Bit k set: lane k's triangle, corner[vertex][axis][lane], may be hit. Shared by the BVH's
+/// leaf packets and the voxel methods' cell packets (voxel/cell_packets.h), which lay their
+/// corners out alike.
+inline int fan_candidates(const float (&corner)[3][3][4], const FloatRay& ray) {
     using simd::Float4;
     const Float4 ox = Float4::broadcast(ray.origin[ray.kx]);
     const Float4 oy = Float4::broadcast(ray.origin[ray.ky]);
@@ -21,9 +23,9 @@ inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) 
     Float4 y[3];
     Float4 size = Float4::broadcast(0.0f);
     for (int v = 0; v < 3; ++v) {
-        const Float4 az = Float4::load(packet.corner[v][ray.kz]) - oz;
-        x[v] = (Float4::load(packet.corner[v][ray.kx]) - ox) - sx * az;
-        y[v] = (Float4::load(packet.corner[v][ray.ky]) - oy) - sy * az;
+        const Float4 az = Float4::load(corner[v][ray.kz]) - oz;
+        x[v] = (Float4::load(corner[v][ray.kx]) - ox) - sx * az;
+        y[v] = (Float4::load(corner[v][ray.ky]) - oy) - sy * az;
         size = max(size, max(abs(x[v]), abs(y[v])));
     }
     const Float4 e0 = x[1] * y[2] - y[1] * x[2];
@@ -37,6 +39,11 @@ inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) 
         (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);
     const simd::Mask4 all_negative = (e0 <= margin) & (e1 <= margin) & (e2 <= margin);
     return (all_positive | all_negative).bits();
+}
+
+/// Bit k set: lane k's triangle may be hit.
+inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) {
+    return fan_candidates(packet.corner, ray);
 }
 
 }  // namespace rt::bvh

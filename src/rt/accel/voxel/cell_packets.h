@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "rt/accel/bvh/float4.h"
+#include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/scene/scene.h"
 
@@ -49,36 +49,11 @@ inline unsigned used_lanes(const CellPacket& packet) {
 /// Bit k set: lane k's triangle may be hit by the ray (usable), or lane k is marked "always".
 // Lane for lane the operations of triangle_candidate (float_prefilter/triangle_prefilter.h).
 inline int cell_packet_candidates(const CellPacket& packet, const FloatRay& ray) {
-    using simd::Float4;
-    const Float4 ox = Float4::broadcast(ray.origin[ray.kx]);
-    const Float4 oy = Float4::broadcast(ray.origin[ray.ky]);
-    const Float4 oz = Float4::broadcast(ray.origin[ray.kz]);
-    const Float4 sx = Float4::broadcast(ray.shear_x);
-    const Float4 sy = Float4::broadcast(ray.shear_y);
-    Float4 x[3];
-    Float4 y[3];
-    Float4 size = Float4::broadcast(0.0f);
-    for (int v = 0; v < 3; ++v) {
-        const Float4 az = Float4::load(packet.corner[v][ray.kz]) - oz;
-        x[v] = (Float4::load(packet.corner[v][ray.kx]) - ox) - sx * az;
-        y[v] = (Float4::load(packet.corner[v][ray.ky]) - oy) - sy * az;
-        size = max(size, max(abs(x[v]), abs(y[v])));
-    }
-    const Float4 e0 = x[1] * y[2] - y[1] * x[2];
-    const Float4 e1 = x[2] * y[0] - y[2] * x[0];
-    const Float4 e2 = x[0] * y[1] - y[0] * x[1];
-    const Float4 margin = size * (Float4::broadcast(ray.edge_margin_linear) +
-                                  size * Float4::broadcast(kRelativeSlack)) +
-                          Float4::broadcast(ray.edge_margin_constant);
-    const Float4 negative_margin = Float4::broadcast(0.0f) - margin;
-    const simd::Mask4 all_positive =
-        (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);
-    const simd::Mask4 all_negative = (e0 <= margin) & (e1 <= margin) & (e2 <= margin);
     int always = 0;
     for (int lane = 0; lane < 4; ++lane) {
         always |= (packet.polygon[lane] & kAlwaysTestBit) != 0 ? 1 << lane : 0;
     }
-    return (all_positive | all_negative).bits() | always;
+    return bvh::fan_candidates(packet.corner, ray) | always;
 }
 
 /// A voxel's packets, and its bounds (voxel_bounds.h) where the structure has them.
