@@ -40,17 +40,17 @@ Options parse_example(const SwitchSpec& spec) {
 
 TEST(SwitchTable, HasEverySwitchOfTheAppendixAndTheLongOptions) {
     const std::vector<std::string_view> expected = {
-        "-n",     "-w",       "-m",        "-tv",      "-c",        "-od",     "-oo",
-        "-ol",    "-on",      "-of",       "-op",      "-ss",       "-p",      "-r",
-        "-Sp",    "-Sg",      "-Stg",      "-Stb",     "-R",        "-Wr",     "-Wc",
-        "-Wt",    "-A",       "-T",        "-Co",      "-Ci",       "-Cf",     "-Dx",
-        "-De",    "-Dd",      "-Dt",       "-Da",      "-Dl",       "-Ds",     "-Dr",
-        "-Df",    "-Dp",      "-Db",       "-Po",      "-Pt",       "-Ot",     "-Oi",
-        "-Of",    "-O1",      "-K",        "-I",       "-L",        "-E",      "-F",
-        "-Xp",    "-Xr",      "-M",        "-V",       "-dc",       "-ds",     "-dsp",
-        "-dso",   "-dl",      "-doo",      "-doi",     "-dof",      "-df",     "-dd",
-        "-dx",    "-de",      "--output",  "--resume", "--model",   "--help",  "--version",
-        "--seed", "--cutoff", "--threads", "--tile",   "--accel",   "--zbuffer", "--quiet",
+        "-n",          "-w",          "-m",        "-tv",      "-c",      "-od",       "-oo",
+        "-ol",         "-on",         "-of",       "-op",      "-ss",     "-p",        "-r",
+        "-Sp",         "-Sg",         "-Stg",      "-Stb",     "-R",      "-Wr",       "-Wc",
+        "-Wt",         "-A",          "-T",        "-Co",      "-Ci",     "-Cf",       "-Dx",
+        "-De",         "-Dd",         "-Dt",       "-Da",      "-Dl",     "-Ds",       "-Dr",
+        "-Df",         "-Dp",         "-Db",       "-Po",      "-Pt",     "-Ot",       "-Oi",
+        "-Of",         "-O1",         "-K",        "-I",       "-L",      "-E",        "-F",
+        "-Xp",         "-Xr",         "-M",        "-V",       "-dc",     "-ds",       "-dsp",
+        "-dso",        "-dl",         "-doo",      "-doi",     "-dof",    "-df",       "-dd",
+        "-dx",         "-de",         "--output",  "--resume", "--model", "--help",    "--version",
+        "--seed",      "--cutoff",    "--threads", "--tile",   "--accel", "--zbuffer", "--quiet",
         "--no-window", "--max-memory"};
     std::vector<std::string_view> actual;
     for (const SwitchSpec& spec : switch_table()) {

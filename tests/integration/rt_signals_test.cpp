@@ -12,7 +12,6 @@
 #include <gtest/gtest.h>
 
 #include "support/run_program.h"
-
 #include "support/temp_dir.h"
 #include "support/x_display.h"
 

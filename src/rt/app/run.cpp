@@ -163,8 +163,7 @@ std::filesystem::path partial_path(const std::filesystem::path& path) {
 // written at all. The file being resumed is the exception: it is the partial picture itself.
 void write_outputs(const Film& film, const Options& options, const RunConsole& console) {
     const bool unfinished = !film.complete();
-    if (unfinished && options.resume.empty() &&
-        film.first_finished_row() > film.window().bottom) {
+    if (unfinished && options.resume.empty() && film.first_finished_row() > film.window().bottom) {
         if (console.warning) {
             console.warning("stopped before the first line was finished: no file was written");
         }
