@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "rt/accel/bvh/bvh.h"
+#include "rt/accel/bvh/leaf_exact_hit.h"
 #include "rt/accel/bvh/packet_setup.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/geometry/ray_polygon.h"
@@ -117,19 +118,7 @@ void fill_inactive_lanes(PacketValues& v, std::uint32_t active) {
     }
 }
 
-// The exact test of a packet lane's polygon, as bvh_traversal.cpp's exact_hit: a triangle's
-// corners from the packet's copy of its indices.
-std::optional<double> exact_hit(const RaySpace& space, const Scene& scene,
-                                const bvh::TrianglePacket& packet, int lane, std::uint32_t id,
-                                Interval t) {
-    if (packet.position[0][lane] != bvh::kNotTriangle) {
-        const std::uint32_t ids[3] = {packet.position[0][lane], packet.position[1][lane],
-                                      packet.position[2][lane]};
-        return intersect_polygon(space,
-                                 PolygonView{scene.positions, ids, scene.polygons[id].normal}, t);
-    }
-    return intersect_polygon(space, scene.polygon_view(id), t);
-}
+using bvh::exact_hit;  // leaf_exact_hit.h
 
 // Asks for what the exact tests of a packet's triangles read (the polygon records and the
 // triangles' corners) while the pre-filter runs: they are scattered through the scene, and the

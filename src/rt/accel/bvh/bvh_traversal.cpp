@@ -11,6 +11,7 @@
 
 #include "rt/accel/bvh/box_test.h"
 #include "rt/accel/bvh/bvh.h"
+#include "rt/accel/bvh/leaf_exact_hit.h"
 #include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/geometry/ray_polygon.h"
 
@@ -29,19 +30,7 @@ struct StackEntry {
     float entry;  ///< where the ray's line enters the child's box, scaled t
 };
 
-// The exact test of the polygon of a packet's lane: a triangle's corners come from the packet's
-// copy of its indices (one memory access fewer than Scene::polygon_view, the same arithmetic).
-std::optional<double> exact_hit(const RaySpace& space, const Scene& scene,
-                                const bvh::TrianglePacket& packet, int lane, std::uint32_t id,
-                                Interval t) {
-    if (packet.position[0][lane] != bvh::kNotTriangle) {
-        const std::uint32_t ids[3] = {packet.position[0][lane], packet.position[1][lane],
-                                      packet.position[2][lane]};
-        return intersect_polygon(space,
-                                 PolygonView{scene.positions, ids, scene.polygons[id].normal}, t);
-    }
-    return intersect_polygon(space, scene.polygon_view(id), t);
-}
+using bvh::exact_hit;  // leaf_exact_hit.h
 
 // The nearest hit so far, in brute force's order (hit.h). The ray's exact RaySpace is prepared on
 // the first exact test: most rays never need one.
