@@ -4,6 +4,11 @@
 // not hit anything in it. The bounds are argued in float_ray.cpp.
 #pragma once
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
 #include "rt/core/ray.h"
 
 namespace rt {
@@ -30,11 +35,42 @@ struct FloatRay {
     float edge_margin_linear = 0.0f;    ///< times the triangle's 2D size
     float edge_margin_constant = 0.0f;  ///< plus this
 
+    /// With AVX2, set up with one vector division for the three axes; the values are bit for
+    /// bit those of the portable form (float_ray.cpp).
     FloatRay(const Ray& ray, double scene_scale);
 
+    /// The portable, one-axis-at-a-time set-up, whatever the processor (for the tests).
+    static FloatRay portable(const Ray& ray, double scene_scale);
+
     /// t as the float tests see it, rounded towards -inf or +inf (so comparisons stay safe).
-    float scaled_down(double t) const;
-    float scaled_up(double t) const;
+    /// Inline: the traversal calls them after every leaf.
+    float scaled_down(double t) const {
+        const double x = t * scale_t;
+        const auto f = static_cast<float>(x);
+        return static_cast<double>(f) > x ? next_down(f) : f;
+    }
+    float scaled_up(double t) const {
+        const double x = t * scale_t;
+        const auto f = static_cast<float>(x);
+        return static_cast<double>(f) < x ? next_up(f) : f;
+    }
+
+private:
+    FloatRay() = default;
+
+    /// The next float towards +inf (towards -inf for next_down); infinities and NaN stay.
+    static float next_up(float f) {
+        if (!(f < HUGE_VALF)) {
+            return f;
+        }
+        if (f == 0.0f) {
+            return std::numeric_limits<float>::denorm_min();
+        }
+        const auto bits = std::bit_cast<std::uint32_t>(f);
+        return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
+    }
+    static float next_down(float f) { return -next_up(-f); }
+    void set_up_portable(const Ray& ray, double scene_scale);
 };
 
 /// The relative slack of every float bound (2^-20, sixteen times float's rounding unit).
