@@ -82,7 +82,7 @@ double power_of_two_below(double x, double& inverse) {
 // 2)) without a branch: random directions would mispredict one.
 int largest_axis(double ax, double ay, double az) {
     // Bit 0: ax > ay, bit 1: ax > az, bit 2: ay > az; each entry is that expression's answer.
-    constexpr int kAxis[8] = {2, 2, 2, 0, 1, 2, 1, 0};
+    static constexpr int kAxis[8] = {2, 2, 2, 0, 1, 2, 1, 0};
     return kAxis[static_cast<int>(ax > ay) | (static_cast<int>(ax > az) << 1) |
                  (static_cast<int>(ay > az) << 2)];
 }
