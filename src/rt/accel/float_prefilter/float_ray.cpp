@@ -44,11 +44,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#define RT_FLOAT_RAY_AVX2 1
-#endif
+#include <limits>
 
 namespace rt {
 
@@ -57,11 +53,10 @@ namespace {
 constexpr double kLargestScale = 0x1p40;
 constexpr double kSmallestScale = 0x1p-40;
 constexpr double kLargestInverse = 0x1p60;
-constexpr double kBoundUp = 1.0 + 0x1p-20;
 
 // A positive bound, rounded up: the 2^-20 spare swallows the conversion's rounding.
 float bound_up(double x) {
-    return static_cast<float>(x * kBoundUp);
+    return static_cast<float>(x * (1.0 + 0x1p-20));
 }
 
 // 2^-e for the exponent e of x, so that x * result lies in [1, 2): cheap bit work for the usual
@@ -78,103 +73,9 @@ double power_of_two_below(double x, double& inverse) {
     return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - exponent) << 52);
 }
 
-// The axis of the largest |direction component| ((ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 :
-// 2)) without a branch: random directions would mispredict one.
-int largest_axis(double ax, double ay, double az) {
-    // Bit 0: ax > ay, bit 1: ax > az, bit 2: ay > az; each entry is that expression's answer.
-    static constexpr int kAxis[8] = {2, 2, 2, 0, 1, 2, 1, 0};
-    return kAxis[static_cast<int>(ax > ay) | (static_cast<int>(ax > az) << 1) |
-                 (static_cast<int>(ay > az) << 2)];
-}
-
-#ifdef RT_FLOAT_RAY_AVX2
-const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
-
-// The portable set-up's operations with the three axes in the lanes of one register (the
-// fourth unused): the same IEEE operations on the same operands, so the same bits, with one
-// division instruction instead of three and no branch on the direction. No FMA: target "avx2"
-// alone does not allow contraction.
-// The largest of three values that are not NaN (else the ray is unusable) and not negative, in
-// lanes 0-2 (lane 3 is 0): any order of max gives the same value, as std::max does.
-__attribute__((target("avx2"))) double largest_of(__m256d v) {
-    const __m128d pair = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
-    return _mm_cvtsd_f64(_mm_max_sd(pair, _mm_unpackhi_pd(pair, pair)));
-}
-
-__attribute__((target("avx2"))) void set_up_avx2(FloatRay& f, const Ray& ray, double scene_scale) {
-    const __m256d sign = _mm256_set1_pd(-0.0);
-    const __m256d d =
-        _mm256_set_m128d(_mm_load_sd(&ray.direction.z), _mm_loadu_pd(&ray.direction.x));
-    const __m256d o = _mm256_set_m128d(_mm_load_sd(&ray.origin.z), _mm_loadu_pd(&ray.origin.x));
-    const __m256d a = _mm256_andnot_pd(sign, d);
-    const __m256d ao = _mm256_andnot_pd(sign, o);
-    // Ordered comparisons: a NaN lane is not finite. The unused lane is 0.
-    const __m256d infinity = _mm256_set1_pd(HUGE_VAL);
-    const bool finite =
-        _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(a, infinity, _CMP_LT_OQ),
-                                         _mm256_cmp_pd(ao, infinity, _CMP_LT_OQ))) == 0xf;
-    const double largest = largest_of(a);
-    const double m = scene_scale + largest_of(ao);
-    f.usable = finite && largest > 0.0 && m >= kSmallestScale && m <= kLargestScale;
-    if (!f.usable) {
-        return;
-    }
-    const double shrink = power_of_two_below(largest, f.scale_t);
-    const __m256d scaled = _mm256_mul_pd(d, _mm256_set1_pd(shrink));  // exact
-    __m256d inv = _mm256_div_pd(_mm256_set1_pd(1.0), scaled);
-    // Clamped to +-2^60 with the sign of `scaled` (which 1/scaled has, also for +-0).
-    const __m256d size =
-        _mm256_min_pd(_mm256_andnot_pd(sign, inv), _mm256_set1_pd(kLargestInverse));
-    inv = _mm256_or_pd(size, _mm256_and_pd(sign, inv));
-    const __m256d margin =
-        _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(0x1p-20 * m), size), _mm256_set1_pd(kBoundUp));
-    alignas(16) float origin[4];
-    alignas(16) float inverse[4];
-    alignas(16) float slab_margin[4];
-    _mm_store_ps(origin, _mm256_cvtpd_ps(o));
-    _mm_store_ps(inverse, _mm256_cvtpd_ps(inv));
-    _mm_store_ps(slab_margin, _mm256_cvtpd_ps(margin));
-    alignas(32) double abs_d[4];
-    alignas(32) double scaled_d[4];
-    alignas(32) double inv_d[4];
-    _mm256_store_pd(abs_d, a);
-    _mm256_store_pd(scaled_d, scaled);
-    _mm256_store_pd(inv_d, inv);
-    for (int k = 0; k < 3; ++k) {
-        f.origin[k] = origin[k];
-        f.inverse[k] = inverse[k];
-        f.slab_margin[k] = slab_margin[k];
-    }
-    f.kz = largest_axis(abs_d[0], abs_d[1], abs_d[2]);
-    f.kx = (f.kz + 1) % 3;
-    f.ky = (f.kx + 1) % 3;
-    f.shear_x = static_cast<float>(scaled_d[f.kx] * inv_d[f.kz]);
-    f.shear_y = static_cast<float>(scaled_d[f.ky] * inv_d[f.kz]);
-    const double eps = 0x1p-20 * m;
-    f.edge_margin_linear = bound_up(8.0 * eps);
-    f.edge_margin_constant = bound_up(8.0 * eps * eps);
-}
-#endif
-
 }  // namespace
 
 FloatRay::FloatRay(const Ray& ray, double scene_scale) {
-#ifdef RT_FLOAT_RAY_AVX2
-    if (cpu_has_avx2) {
-        set_up_avx2(*this, ray, scene_scale);
-        return;
-    }
-#endif
-    set_up_portable(ray, scene_scale);
-}
-
-FloatRay FloatRay::portable(const Ray& ray, double scene_scale) {
-    FloatRay f;
-    f.set_up_portable(ray, scene_scale);
-    return f;
-}
-
-void FloatRay::set_up_portable(const Ray& ray, double scene_scale) {
     const Vec3& d = ray.direction;
     const double ax = std::fabs(d.x);
     const double ay = std::fabs(d.y);
@@ -202,7 +103,7 @@ void FloatRay::set_up_portable(const Ray& ray, double scene_scale) {
         slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
     }
 
-    kz = largest_axis(ax, ay, az);
+    kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
     // |scaled[kz]| is in [1, 2), so its inverse was not clamped; two roundings, well inside

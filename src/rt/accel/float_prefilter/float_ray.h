@@ -35,12 +35,7 @@ struct FloatRay {
     float edge_margin_linear = 0.0f;    ///< times the triangle's 2D size
     float edge_margin_constant = 0.0f;  ///< plus this
 
-    /// With AVX2, set up with one vector division for the three axes; the values are bit for
-    /// bit those of the portable form (float_ray.cpp).
     FloatRay(const Ray& ray, double scene_scale);
-
-    /// The portable, one-axis-at-a-time set-up, whatever the processor (for the tests).
-    static FloatRay portable(const Ray& ray, double scene_scale);
 
     /// t as the float tests see it, rounded towards -inf or +inf (so comparisons stay safe).
     /// Inline: the traversal calls them after every leaf.
@@ -56,8 +51,6 @@ struct FloatRay {
     }
 
 private:
-    FloatRay() = default;
-
     /// The next float towards +inf (towards -inf for next_down); infinities and NaN stay.
     static float next_up(float f) {
         if (!(f < HUGE_VALF)) {
@@ -70,7 +63,6 @@ private:
         return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
     }
     static float next_down(float f) { return -next_up(-f); }
-    void set_up_portable(const Ray& ray, double scene_scale);
 };
 
 /// The relative slack of every float bound (2^-20, sixteen times float's rounding unit).
