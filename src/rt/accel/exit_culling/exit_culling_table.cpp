@@ -50,6 +50,12 @@ ExitCullingTable::ExitCullingTable(const CullingFrame& frame,
     for (const PolygonReach& reach : reaches) {
         add_grazing(reach, band);
     }
+    full_.resize(static_cast<std::size_t>(count));
+    for (int cell = 0; cell < count; ++cell) {
+        const auto rows = region(cell);
+        full_[static_cast<std::size_t>(cell)] = std::all_of(
+            rows.begin(), rows.end(), [&](std::uint16_t row) { return row == bins_.full_row(); });
+    }
 }
 
 std::vector<PolygonReach> ExitCullingTable::reaches_of(const Scene& scene,
@@ -131,7 +137,21 @@ int ExitCullingTable::entry_cell(const Ray& ray) const {
     return cells_.cell_of(q);
 }
 
+bool ExitCullingTable::starts_in_full_cell(const Vec3& origin) const {
+    const Box3& world = cells_.world();
+    const bool inside = origin.x >= world.lo.x && origin.x <= world.hi.x &&
+                        origin.y >= world.lo.y && origin.y <= world.hi.y &&
+                        origin.z >= world.lo.z && origin.z <= world.hi.z;
+    return inside && full_[static_cast<std::size_t>(cells_.cell_of(origin))] != 0;
+}
+
 bool ExitCullingTable::nothing_ahead(const Ray& ray, Interval t) const {
+    // Rays leaving a surface start in a cell a polygon crosses, whose every bin is set: whatever
+    // the rest of the test would say, they are passed on, so say it at once. (For an origin in
+    // the world, entry_cell() below finds this same cell: the clip starts at t = 0.)
+    if (starts_in_full_cell(ray.origin)) {
+        return false;
+    }
     if (!(t.min >= 0.0) || !is_finite(ray.origin) || !is_finite(ray.direction) ||
         (ray.direction.x == 0.0 && ray.direction.y == 0.0 && ray.direction.z == 0.0)) {
         return false;

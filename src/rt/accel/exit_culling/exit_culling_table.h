@@ -49,9 +49,14 @@ private:
     /// The cell a ray starting at `origin` enters the world in; -1 if it never does.
     int entry_cell(const Ray& ray) const;
 
+    /// Whether a ray starting at `origin` is surely passed on: the origin lies in the world, in
+    /// a cell whose every bin is set (every cell a polygon crosses). No division, no clipping.
+    bool starts_in_full_cell(const Vec3& origin) const;
+
     OccupiedCells cells_;
     DirectionBins bins_;
     std::vector<std::uint16_t> rows_;  ///< per cell, bins_.rows() row masks
+    std::vector<std::uint8_t> full_;   ///< per cell: 1 when every bin of its region is set
 };
 
 }  // namespace rt
