@@ -2,7 +2,8 @@
 // ray starting at p with direction d. The hit point Y = p + t d lies in that polygon's reach, so
 // in the box of some occupied cell (occupied_cells.h), at least margin() inside the world box.
 // - If p is inside the world box, p lies in the box of its cell grown by margin() (the cell is
-//   found by a rounded division, wrong only within rounding of a cell boundary).
+//   found by a rounded product with the reciprocal cell size, wrong only within a few ulps of a
+//   cell boundary).
 // - If p is outside, the ray must cross the world box to reach Y; q = p + t_entry d, where it
 //   enters, is computed to within far below margin() (origins farther than 100 diagonals from
 //   the corners are not culled), so q too lies in its cell's box grown by margin(), and Y = q + (t

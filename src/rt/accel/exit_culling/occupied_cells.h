@@ -63,6 +63,7 @@ private:
     Box3 world_;
     int resolution_ = 1;
     Vec3 cell_size_;
+    Vec3 inverse_cell_size_;  ///< 0 along an axis of no extent (one cell)
     std::vector<Node> tree_;
     std::size_t occupied_ = 0;
 };
