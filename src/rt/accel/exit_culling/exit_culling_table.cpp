@@ -17,8 +17,6 @@
 #include <bit>
 #include <cmath>
 
-#include "rt/accel/voxel/box.h"
-
 namespace rt {
 
 namespace {
@@ -127,13 +125,32 @@ void ExitCullingTable::fill_region(int cell) {
     }
 }
 
-int ExitCullingTable::entry_cell(const Ray& ray) const {
+// clip_to_box() from t = 0, with the reciprocals nothing_ahead() shares with bin_of(): the same
+// arithmetic, so the same entry point.
+int ExitCullingTable::entry_cell(const Ray& ray, const Vec3& inverse) const {
     const Box3& world = cells_.world();
-    Interval inside;
-    if (!clip_to_box(ray, world, {0.0, Box3::kInfinity}, inside)) {
+    double near = 0.0;
+    double far = Box3::kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis];
+        if (ray.direction[axis] == 0.0) {
+            if (o < world.lo[axis] || o > world.hi[axis]) {
+                return -1;
+            }
+            continue;
+        }
+        double t0 = (world.lo[axis] - o) * inverse[axis];
+        double t1 = (world.hi[axis] - o) * inverse[axis];
+        if (t0 > t1) {
+            std::swap(t0, t1);
+        }
+        near = std::max(near, t0);
+        far = std::min(far, t1);
+    }
+    if (!(near <= far)) {
         return -1;
     }
-    Vec3 q = ray.at(inside.min);
+    Vec3 q = ray.at(near);
     q = max_components(world.lo, min_components(world.hi, q));
     return cells_.cell_of(q);
 }
@@ -160,14 +177,21 @@ bool ExitCullingTable::nothing_ahead(const Ray& ray, Interval t) const {
     if (cells_.tree().empty()) {
         return true;  // no polygon anywhere
     }
-    if (distance_to(cells_.frame().positions, ray.origin) > cells_.frame().far_limit) {
+    // The far test on squares: no square root (an overflow to infinity still says "far").
+    const Vec3 gap =
+        max_components(cells_.frame().positions.lo - ray.origin,
+                       max_components(Vec3{}, ray.origin - cells_.frame().positions.hi));
+    const double far_limit = cells_.frame().far_limit;
+    if (dot(gap, gap) > far_limit * far_limit) {
         return false;
     }
-    const int cell = entry_cell(ray);
+    // One division per axis, shared by the clip and the direction's bin.
+    const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
+    const int cell = entry_cell(ray, inverse);
     if (cell < 0) {
         return true;
     }
-    return !bins_.contains(region(cell), bins_.bin_of(ray.direction));
+    return !bins_.contains(region(cell), bins_.bin_of(ray.direction, inverse));
 }
 
 double ExitCullingTable::empty_fraction() const {

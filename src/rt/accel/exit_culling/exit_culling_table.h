@@ -46,8 +46,9 @@ private:
     void fill_region(int cell);
     /// The directions of grazing hits on one polygon, from every cell they may start in.
     void add_grazing(const PolygonReach& reach, std::vector<std::uint16_t>& band);
-    /// The cell a ray starting at `origin` enters the world in; -1 if it never does.
-    int entry_cell(const Ray& ray) const;
+    /// The cell a ray enters the world in (its own cell if it starts inside); -1 if it never
+    /// does. `inverse` holds 1 / direction per axis.
+    int entry_cell(const Ray& ray, const Vec3& inverse) const;
 
     /// Whether a ray starting at `origin` is surely passed on: the origin lies in the world, in
     /// a cell whose every bin is set (every cell a polygon crosses). No division, no clipping.
