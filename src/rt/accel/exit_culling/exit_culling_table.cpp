@@ -45,10 +45,16 @@ ExitCullingTable::ExitCullingTable(const CullingFrame& frame,
     for (int cell = 0; cell < count; ++cell) {
         fill_region(cell);
     }
+    find_full_cells();
     std::vector<std::uint16_t> band(static_cast<std::size_t>(bins_.rows()));
     for (const PolygonReach& reach : reaches) {
         add_grazing(reach, band);
     }
+    find_full_cells();
+}
+
+void ExitCullingTable::find_full_cells() {
+    const int count = static_cast<int>(rows_.size() / static_cast<std::size_t>(bins_.rows()));
     full_.resize(static_cast<std::size_t>(count));
     for (int cell = 0; cell < count; ++cell) {
         const auto rows = region(cell);
@@ -76,7 +82,9 @@ void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::u
     if (reach.grazing_box.empty()) {
         return;
     }
-    bins_.band_of(reach.normal, reach.grazing_cosine, band);
+    // The band costs a sine per bin: found only for a cell that can still take bits. Most cells
+    // a polygon's grazing box meets are full already (the polygon's own cells, for one).
+    bool band_found = false;
     const double widen =
         1e-12 * std::max(reach.grazing_box.magnitude(), cells_.world().magnitude());
     int first[3];
@@ -87,10 +95,17 @@ void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::u
         for (int y = first[1]; y <= last[1]; ++y) {
             for (int x = first[0]; x <= last[0]; ++x) {
                 const int cell = x + r * (y + r * z);
-                const Box3 start = cells_.cell_box(cell).grown(cells_.margin());
+                if (full_[static_cast<std::size_t>(cell)] != 0) {
+                    continue;
+                }
+                const Box3 start = cells_.cell_box(x, y, z).grown(cells_.margin());
                 const Box3 common = intersection(start, reach.grazing_box);
                 if (common.empty() || !grazing_slab_meets_box(reach, common)) {
                     continue;
+                }
+                if (!band_found) {
+                    bins_.band_of(reach.normal, reach.grazing_cosine, band);
+                    band_found = true;
                 }
                 const std::span<std::uint16_t> set{
                     rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),

@@ -46,6 +46,8 @@ private:
     void fill_region(int cell);
     /// The directions of grazing hits on one polygon, from every cell they may start in.
     void add_grazing(const PolygonReach& reach, std::vector<std::uint16_t>& band);
+    /// Sets full_ from rows_.
+    void find_full_cells();
     /// The cell a ray enters the world in (its own cell if it starts inside); -1 if it never
     /// does. `inverse` holds 1 / direction per axis.
     int entry_cell(const Ray& ray, const Vec3& inverse) const;

@@ -52,6 +52,9 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
     cell_size_ = world_.extent() / resolution_;
     for (int axis = 0; axis < 3; ++axis) {
         inverse_cell_size_[axis] = cell_size_[axis] > 0.0 ? 1.0 / cell_size_[axis] : 0.0;
+        for (int index = 0; index <= resolution_; ++index) {
+            boundaries_[axis].push_back(boundary(axis, index));
+        }
     }
 
     std::vector<Box3> cells(static_cast<std::size_t>(resolution_) * resolution_ * resolution_);
@@ -108,7 +111,7 @@ void OccupiedCells::add_reach(const PolygonReach& reach, std::vector<Box3>& cell
         for (int y = first[1]; y <= last[1]; ++y) {
             for (int x = first[0]; x <= last[0]; ++x) {
                 const int cell = x + resolution_ * (y + resolution_ * z);
-                const Box3 piece = intersection(reach.box, cell_box(cell));
+                const Box3 piece = intersection(reach.box, cell_box(x, y, z));
                 if (!piece.empty() && slab_meets_box(reach, piece)) {
                     cells[cell].add(piece);
                 }
@@ -159,14 +162,8 @@ int OccupiedCells::cell_of(const Vec3& p) const {
 }
 
 Box3 OccupiedCells::cell_box(int cell) const {
-    const int index[3] = {cell % resolution_, (cell / resolution_) % resolution_,
-                          cell / (resolution_ * resolution_)};
-    Box3 box;
-    for (int axis = 0; axis < 3; ++axis) {
-        box.lo[axis] = boundary(axis, index[axis]);
-        box.hi[axis] = boundary(axis, index[axis] + 1);
-    }
-    return box;
+    return cell_box(cell % resolution_, (cell / resolution_) % resolution_,
+                    cell / (resolution_ * resolution_));
 }
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 // of boxes whose directions it already has.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -41,6 +42,10 @@ public:
     /// as cells and boundaries are rounded separately.
     void cell_range(const Box3& box, int first[3], int last[3]) const;
     Box3 cell_box(int cell) const;
+    Box3 cell_box(int x, int y, int z) const {
+        return {{boundaries_[0][x], boundaries_[1][y], boundaries_[2][z]},
+                {boundaries_[0][x + 1], boundaries_[1][y + 1], boundaries_[2][z + 1]}};
+    }
 
     /// A binary tree over the occupied cells' boxes, root first; leaves have no children.
     struct Node {
@@ -63,7 +68,8 @@ private:
     Box3 world_;
     int resolution_ = 1;
     Vec3 cell_size_;
-    Vec3 inverse_cell_size_;  ///< 0 along an axis of no extent (one cell)
+    Vec3 inverse_cell_size_;                         ///< 0 along an axis of no extent (one cell)
+    std::array<std::vector<double>, 3> boundaries_;  ///< boundary(axis, 0..resolution), looked up
     std::vector<Node> tree_;
     std::size_t occupied_ = 0;
 };
