@@ -18,7 +18,7 @@ ExitCullingTable timed_table(const Scene& scene, const ExitCullingSettings& sett
     const int resolution = settings.grid_resolution > 0
                                ? settings.grid_resolution
                                : default_exit_culling_resolution(scene.polygons.size());
-    ExitCullingTable table(scene, resolution, settings.bins_per_side);
+    ExitCullingTable table(scene, resolution, settings.bins_per_side, settings.build_threads);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return table;
 }

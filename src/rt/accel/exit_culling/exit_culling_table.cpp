@@ -17,6 +17,8 @@
 #include <bit>
 #include <cmath>
 
+#include "rt/accel/exit_culling/parallel_parts.h"
+
 namespace rt {
 
 namespace {
@@ -29,28 +31,64 @@ Box3 differences(const Box3& target, const Box3& start, double widen) {
 
 }  // namespace
 
-ExitCullingTable::ExitCullingTable(const Scene& scene, int resolution, int bins_per_side)
-    : ExitCullingTable(culling_frame(scene), scene, resolution, bins_per_side) {}
+ExitCullingTable::ExitCullingTable(const Scene& scene, int resolution, int bins_per_side,
+                                   int threads)
+    : ExitCullingTable(culling_frame(scene), scene, resolution, bins_per_side, threads) {}
 
 ExitCullingTable::ExitCullingTable(const CullingFrame& frame, const Scene& scene, int resolution,
-                                   int bins_per_side)
-    : ExitCullingTable(frame, reaches_of(scene, frame), resolution, bins_per_side) {}
+                                   int bins_per_side, int threads)
+    : ExitCullingTable(
+          frame, reaches_of(scene, frame, culling_build_threads(threads, scene.polygons.size())),
+          resolution, bins_per_side, culling_build_threads(threads, scene.polygons.size())) {}
 
 ExitCullingTable::ExitCullingTable(const CullingFrame& frame,
                                    const std::vector<PolygonReach>& reaches, int resolution,
-                                   int bins_per_side)
-    : cells_(frame, reaches, resolution), bins_(bins_per_side) {
+                                   int bins_per_side, int threads)
+    : cells_(frame, reaches, resolution, threads), bins_(bins_per_side) {
     const int count = resolution * resolution * resolution;
     rows_.assign(static_cast<std::size_t>(count) * bins_.rows(), 0);
-    for (int cell = 0; cell < count; ++cell) {
-        fill_region(cell);
-    }
+    // Each cell writes only its own rows.
+    run_in_parts(static_cast<std::size_t>(count), std::min(threads, count),
+                 [&](std::size_t begin, std::size_t end, int) {
+                     for (std::size_t cell = begin; cell < end; ++cell) {
+                         fill_region(static_cast<int>(cell));
+                     }
+                 });
     find_full_cells();
-    std::vector<std::uint16_t> band(static_cast<std::size_t>(bins_.rows()));
-    for (const PolygonReach& reach : reaches) {
-        add_grazing(reach, band);
-    }
+    add_all_grazing(reaches, threads);
     find_full_cells();
+}
+
+std::vector<PolygonReach> ExitCullingTable::reaches_of(const Scene& scene,
+                                                       const CullingFrame& frame, int threads) {
+    std::vector<PolygonReach> reaches(scene.polygons.size());
+    run_in_parts(reaches.size(), threads, [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t id = begin; id < end; ++id) {
+            reaches[id] = polygon_reach(scene, static_cast<std::uint32_t>(id), 0.0, frame.rounding);
+        }
+    });
+    return reaches;
+}
+
+void ExitCullingTable::add_all_grazing(const std::vector<PolygonReach>& reaches, int threads) {
+    const int parts = std::max(threads, 1);
+    // Part 0 writes the table itself; the others their own copies, or-ed in after.
+    std::vector<std::vector<std::uint16_t>> copies(static_cast<std::size_t>(parts - 1),
+                                                   std::vector<std::uint16_t>(rows_.size(), 0));
+    run_in_parts(reaches.size(), parts, [&](std::size_t begin, std::size_t end, int part) {
+        const std::span<std::uint16_t> rows =
+            part == 0 ? std::span<std::uint16_t>(rows_)
+                      : std::span<std::uint16_t>(copies[static_cast<std::size_t>(part - 1)]);
+        std::vector<std::uint16_t> band(static_cast<std::size_t>(bins_.rows()));
+        for (std::size_t i = begin; i < end; ++i) {
+            add_grazing(reaches[i], band, rows);
+        }
+    });
+    for (const std::vector<std::uint16_t>& copy : copies) {
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            rows_[i] |= copy[i];
+        }
+    }
 }
 
 void ExitCullingTable::find_full_cells() {
@@ -63,22 +101,13 @@ void ExitCullingTable::find_full_cells() {
     }
 }
 
-std::vector<PolygonReach> ExitCullingTable::reaches_of(const Scene& scene,
-                                                       const CullingFrame& frame) {
-    std::vector<PolygonReach> reaches;
-    reaches.reserve(scene.polygons.size());
-    for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
-        reaches.push_back(polygon_reach(scene, id, 0.0, frame.rounding));
-    }
-    return reaches;
-}
-
 // A grazing hit is reported at Y within the polygon's grazing box. If the crossing X is ahead of
 // the origin p, the tree pass has the direction already (X is in the polygon's plain reach). If
 // X is behind p, then p lies between X and Y on a line within the grazing angle of the plane, so
 // p is in the grazing box too: only cells meeting it need the grazing directions, and only
 // those in the band of directions that see the polygon edge-on.
-void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::uint16_t>& band) {
+void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::uint16_t>& band,
+                                   std::span<std::uint16_t> rows) const {
     if (reach.grazing_box.empty()) {
         return;
     }
@@ -107,9 +136,9 @@ void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::u
                     bins_.band_of(reach.normal, reach.grazing_cosine, band);
                     band_found = true;
                 }
-                const std::span<std::uint16_t> set{
-                    rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),
-                    static_cast<std::size_t>(bins_.rows())};
+                const std::span<std::uint16_t> set =
+                    rows.subspan(static_cast<std::size_t>(cell) * bins_.rows(),
+                                 static_cast<std::size_t>(bins_.rows()));
                 bins_.add_directions_of(differences(reach.grazing_box, start, widen), set, band);
             }
         }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "rt/accel/exit_culling/parallel_parts.h"
+
 namespace rt {
 
 namespace {
@@ -37,7 +39,7 @@ CullingFrame culling_frame(const Scene& scene) {
 }
 
 OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches,
-                             int resolution)
+                             int resolution, int threads)
     : frame_(frame), resolution_(resolution) {
     if (resolution < 1 || resolution > 64) {
         throw std::invalid_argument("exit culling grid resolution must be 1..64");
@@ -58,7 +60,7 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
     }
 
     std::vector<Box3> cells(static_cast<std::size_t>(resolution_) * resolution_ * resolution_);
-    fill(reaches, cells);
+    fill(reaches, cells, threads);
     std::vector<Box3> leaves;
     std::vector<std::uint32_t> codes;
     for (int cell = 0; cell < static_cast<int>(cells.size()); ++cell) {
@@ -94,10 +96,26 @@ void OccupiedCells::cell_range(const Box3& box, int first[3], int last[3]) const
     }
 }
 
-void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const {
-    for (const PolygonReach& reach : reaches) {
-        if (!reach.box.empty()) {
-            add_reach(reach, cells);
+// Part 0 fills `cells`, the others their own copies, joined after: a union of boxes is exact and
+// does not depend on the order.
+void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells,
+                         int threads) const {
+    const int parts = std::max(threads, 1);
+    std::vector<std::vector<Box3>> copies(static_cast<std::size_t>(parts - 1),
+                                          std::vector<Box3>(cells.size()));
+    run_in_parts(reaches.size(), parts, [&](std::size_t begin, std::size_t end, int part) {
+        std::vector<Box3>& mine = part == 0 ? cells : copies[static_cast<std::size_t>(part - 1)];
+        for (std::size_t i = begin; i < end; ++i) {
+            if (!reaches[i].box.empty()) {
+                add_reach(reaches[i], mine);
+            }
+        }
+    });
+    for (const std::vector<Box3>& copy : copies) {
+        for (std::size_t cell = 0; cell < cells.size(); ++cell) {
+            if (!copy[cell].empty()) {
+                cells[cell].add(copy[cell]);
+            }
         }
     }
 }

@@ -26,8 +26,10 @@ CullingFrame culling_frame(const Scene& scene);
 
 class OccupiedCells {
 public:
-    /// `resolution` cells along each axis (1..64) of the box of every reach (both kinds).
-    OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches, int resolution);
+    /// `resolution` cells along each axis (1..64) of the box of every reach (both kinds), filled
+    /// by `threads` threads (the same cells for any number).
+    OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches, int resolution,
+                  int threads = 1);
 
     /// Every reach box, grown by margin(): no hit point lies outside it, or within margin() of
     /// its boundary.
@@ -59,7 +61,7 @@ public:
 private:
     int axis_cell(int axis, double coordinate) const;
     double boundary(int axis, int index) const;
-    void fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const;
+    void fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells, int threads) const;
     void add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const;
     void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);

@@ -1,0 +1,68 @@
+// The table's build may run on several threads and skips work that cannot change it (full cells
+// in the grazing pass); neither may change a single bit of it.
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "rt/accel/exit_culling/exit_culling_table.h"
+#include "rt/accel/exit_culling/parallel_parts.h"
+
+#include <gtest/gtest.h>
+
+#include "accel/accel_test_scenes.h"
+
+namespace rt::test {
+namespace {
+
+std::vector<std::uint16_t> rows_of(const ExitCullingTable& table) {
+    return {table.bin_rows().begin(), table.bin_rows().end()};
+}
+
+TEST(ExitCullingBuild, AnyThreadCountBuildsTheSameTable) {
+    const Scene scenes[] = {make_soup(21, 3000), make_soup(22, 500, true),
+                            make_sphere({1, 2, 3}, 5.0, 20, 40, false), load_twocubes()};
+    double emptiest = 0.0;
+    for (const Scene& scene : scenes) {
+        for (const int resolution : {3, 8, 12}) {
+            const ExitCullingTable one(scene, resolution, 8, 1);
+            emptiest = std::max(emptiest, one.empty_fraction());
+            for (const int threads : {2, 3, 7}) {
+                const ExitCullingTable many(scene, resolution, 8, threads);
+                EXPECT_EQ(rows_of(one), rows_of(many))
+                    << scene.polygons.size() << " polygons, " << resolution << "^3 cells, "
+                    << threads << " threads";
+            }
+        }
+    }
+    EXPECT_GT(emptiest, 0.3) << "tables this full would prove little";
+}
+
+TEST(ExitCullingBuild, PartsCoverTheRangeOnce) {
+    for (const std::size_t count : {0u, 1u, 5u, 1000u}) {
+        for (const int parts : {1, 2, 3, 8}) {
+            std::vector<int> seen(count, 0);
+            std::vector<int> part_of(count, -1);
+            run_in_parts(count, parts, [&](std::size_t begin, std::size_t end, int part) {
+                for (std::size_t i = begin; i < end; ++i) {
+                    ++seen[i];
+                    part_of[i] = part;
+                }
+            });
+            for (std::size_t i = 0; i < count; ++i) {
+                EXPECT_EQ(seen[i], 1) << count << " items in " << parts << " parts, item " << i;
+                if (i > 0) {
+                    EXPECT_GE(part_of[i], part_of[i - 1]) << "parts are contiguous, in order";
+                }
+            }
+        }
+    }
+}
+
+TEST(ExitCullingBuild, SmallScenesBuildOnTheCallingThread) {
+    EXPECT_EQ(culling_build_threads(0, 71), 1);
+    EXPECT_GE(culling_build_threads(0, 1000000), 1);
+    EXPECT_EQ(culling_build_threads(3, 71), 3);
+}
+
+}  // namespace
+}  // namespace rt::test
