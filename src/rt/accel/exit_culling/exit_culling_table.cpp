@@ -199,14 +199,6 @@ int ExitCullingTable::entry_cell(const Ray& ray, const Vec3& inverse) const {
     return cells_.cell_of(q);
 }
 
-bool ExitCullingTable::starts_in_full_cell(const Vec3& origin) const {
-    const Box3& world = cells_.world();
-    const bool inside = origin.x >= world.lo.x && origin.x <= world.hi.x &&
-                        origin.y >= world.lo.y && origin.y <= world.hi.y &&
-                        origin.z >= world.lo.z && origin.z <= world.hi.z;
-    return inside && full_[static_cast<std::size_t>(cells_.cell_of(origin))] != 0;
-}
-
 bool ExitCullingTable::nothing_ahead(const Ray& ray, Interval t) const {
     // Rays leaving a surface start in a cell a polygon crosses, whose every bin is set: whatever
     // the rest of the test would say, they are passed on, so say it at once. (For an origin in

@@ -29,6 +29,17 @@ public:
     /// for a zero or non-finite ray, or for an origin more than 100 scene diagonals away.
     bool nothing_ahead(const Ray& ray, Interval t) const;
 
+    /// Whether a ray starting at `origin` is surely not culled: the origin lies in the world, in
+    /// a cell whose every bin is set (every cell a polygon crosses). No division, no clipping:
+    /// rays leaving a surface, most of all rays, end here (nothing_ahead() asks it first).
+    bool starts_in_full_cell(const Vec3& origin) const {
+        const Box3& world = cells_.world();
+        const bool inside = origin.x >= world.lo.x && origin.x <= world.hi.x &&
+                            origin.y >= world.lo.y && origin.y <= world.hi.y &&
+                            origin.z >= world.lo.z && origin.z <= world.hi.z;
+        return inside && full_[static_cast<std::size_t>(cells_.cell_of(origin))] != 0;
+    }
+
     int resolution() const { return cells_.resolution(); }
     int bins_per_side() const { return bins_.side(); }
     std::size_t occupied_cells() const { return cells_.occupied_count(); }
@@ -59,10 +70,6 @@ private:
     /// The cell a ray enters the world in (its own cell if it starts inside); -1 if it never
     /// does. `inverse` holds 1 / direction per axis.
     int entry_cell(const Ray& ray, const Vec3& inverse) const;
-
-    /// Whether a ray starting at `origin` is surely passed on: the origin lies in the world, in
-    /// a cell whose every bin is set (every cell a polygon crosses). No division, no clipping.
-    bool starts_in_full_cell(const Vec3& origin) const;
 
     OccupiedCells cells_;
     DirectionBins bins_;

@@ -52,6 +52,7 @@ OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonR
     }
     world_ = world_.grown(frame_.margin);
     cell_size_ = world_.extent() / resolution_;
+    top_cell_ = resolution_ - 1;
     for (int axis = 0; axis < 3; ++axis) {
         inverse_cell_size_[axis] = cell_size_[axis] > 0.0 ? 1.0 / cell_size_[axis] : 0.0;
         for (int index = 0; index <= resolution_; ++index) {
@@ -156,15 +157,6 @@ void OccupiedCells::build_node(const std::vector<Box3>& leaves, std::size_t begi
     tree_[slot] = node;
 }
 
-// A product with the reciprocal, not a division, and truncation after the clamp (which makes the
-// value non-negative) rather than floor(): a few ulps of the world's size apart at most, far
-// below margin(), and without the division and the libm call that made this the costliest step
-// of a culling test.
-int OccupiedCells::axis_cell(int axis, double coordinate) const {
-    const double scaled = (coordinate - world_.lo[axis]) * inverse_cell_size_[axis];
-    return static_cast<int>(std::clamp(scaled, 0.0, static_cast<double>(resolution_ - 1)));
-}
-
 double OccupiedCells::boundary(int axis, int index) const {
     if (index <= 0) {
         return world_.lo[axis];
@@ -173,10 +165,6 @@ double OccupiedCells::boundary(int axis, int index) const {
         return world_.hi[axis];
     }
     return world_.lo[axis] + index * cell_size_[axis];
-}
-
-int OccupiedCells::cell_of(const Vec3& p) const {
-    return axis_cell(0, p.x) + resolution_ * (axis_cell(1, p.y) + resolution_ * axis_cell(2, p.z));
 }
 
 Box3 OccupiedCells::cell_box(int cell) const {
