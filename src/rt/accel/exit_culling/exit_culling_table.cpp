@@ -37,14 +37,10 @@ ExitCullingTable::ExitCullingTable(const Scene& scene, int resolution, int bins_
 
 ExitCullingTable::ExitCullingTable(const CullingFrame& frame, const Scene& scene, int resolution,
                                    int bins_per_side, int threads)
-    : ExitCullingTable(
-          frame, reaches_of(scene, frame, culling_build_threads(threads, scene.polygons.size())),
-          resolution, bins_per_side, culling_build_threads(threads, scene.polygons.size())) {}
-
-ExitCullingTable::ExitCullingTable(const CullingFrame& frame,
-                                   const std::vector<PolygonReach>& reaches, int resolution,
-                                   int bins_per_side, int threads)
-    : cells_(frame, reaches, resolution, threads), bins_(bins_per_side) {
+    : cells_(frame, ReachSource{&scene, frame.rounding}, resolution,
+             culling_build_threads(threads, scene.polygons.size())),
+      bins_(bins_per_side) {
+    threads = culling_build_threads(threads, scene.polygons.size());
     const int count = resolution * resolution * resolution;
     rows_.assign(static_cast<std::size_t>(count) * bins_.rows(), 0);
     // Each cell writes only its own rows.
@@ -55,33 +51,22 @@ ExitCullingTable::ExitCullingTable(const CullingFrame& frame,
                      }
                  });
     find_full_cells();
-    add_all_grazing(reaches, threads);
+    add_all_grazing(ReachSource{&scene, frame.rounding}, threads);
     find_full_cells();
 }
 
-std::vector<PolygonReach> ExitCullingTable::reaches_of(const Scene& scene,
-                                                       const CullingFrame& frame, int threads) {
-    std::vector<PolygonReach> reaches(scene.polygons.size());
-    run_in_parts(reaches.size(), threads, [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t id = begin; id < end; ++id) {
-            reaches[id] = polygon_reach(scene, static_cast<std::uint32_t>(id), 0.0, frame.rounding);
-        }
-    });
-    return reaches;
-}
-
-void ExitCullingTable::add_all_grazing(const std::vector<PolygonReach>& reaches, int threads) {
+void ExitCullingTable::add_all_grazing(const ReachSource& reaches, int threads) {
     const int parts = std::max(threads, 1);
     // Part 0 writes the table itself; the others their own copies, or-ed in after.
     std::vector<std::vector<std::uint16_t>> copies(static_cast<std::size_t>(parts - 1),
                                                    std::vector<std::uint16_t>(rows_.size(), 0));
-    run_in_parts(reaches.size(), parts, [&](std::size_t begin, std::size_t end, int part) {
+    run_in_parts(reaches.count(), parts, [&](std::size_t begin, std::size_t end, int part) {
         const std::span<std::uint16_t> rows =
             part == 0 ? std::span<std::uint16_t>(rows_)
                       : std::span<std::uint16_t>(copies[static_cast<std::size_t>(part - 1)]);
         std::vector<std::uint16_t> band(static_cast<std::size_t>(bins_.rows()));
-        for (std::size_t i = begin; i < end; ++i) {
-            add_grazing(reaches[i], band, rows);
+        for (std::size_t id = begin; id < end; ++id) {
+            add_grazing(reaches(id), band, rows);
         }
     });
     for (const std::vector<std::uint16_t>& copy : copies) {

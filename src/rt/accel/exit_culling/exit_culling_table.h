@@ -54,12 +54,8 @@ private:
         return {rows_.data() + static_cast<std::size_t>(cell) * bins_.rows(),
                 static_cast<std::size_t>(bins_.rows())};
     }
-    ExitCullingTable(const CullingFrame& frame, const std::vector<PolygonReach>& reaches,
-                     int resolution, int bins_per_side, int threads);
-    static std::vector<PolygonReach> reaches_of(const Scene& scene, const CullingFrame& frame,
-                                                int threads);
     /// The grazing pass over every reach, each thread or-ing into its own copy of the rows.
-    void add_all_grazing(const std::vector<PolygonReach>& reaches, int threads);
+    void add_all_grazing(const ReachSource& reaches, int threads);
     /// The directions towards the reaches' occupied cells, from one cell.
     void fill_region(int cell);
     /// The directions of grazing hits on one polygon, from every cell they may start in.

@@ -38,14 +38,21 @@ CullingFrame culling_frame(const Scene& scene) {
     return frame;
 }
 
-OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches,
-                             int resolution, int threads)
+OccupiedCells::OccupiedCells(const CullingFrame& frame, const ReachSource& reaches, int resolution,
+                             int threads)
     : frame_(frame), resolution_(resolution) {
     if (resolution < 1 || resolution > 64) {
         throw std::invalid_argument("exit culling grid resolution must be 1..64");
     }
-    for (const PolygonReach& reach : reaches) {
-        world_.add(reach.all());
+    // Each part its own box, joined after (a union is exact and order-free).
+    std::vector<Box3> parts(static_cast<std::size_t>(std::max(threads, 1)));
+    run_in_parts(reaches.count(), threads, [&](std::size_t begin, std::size_t end, int part) {
+        for (std::size_t id = begin; id < end; ++id) {
+            parts[static_cast<std::size_t>(part)].add(reaches(id).all());
+        }
+    });
+    for (const Box3& part : parts) {
+        world_.add(part);
     }
     if (world_.empty()) {
         world_ = frame_.positions;
@@ -99,16 +106,16 @@ void OccupiedCells::cell_range(const Box3& box, int first[3], int last[3]) const
 
 // Part 0 fills `cells`, the others their own copies, joined after: a union of boxes is exact and
 // does not depend on the order.
-void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells,
-                         int threads) const {
+void OccupiedCells::fill(const ReachSource& reaches, std::vector<Box3>& cells, int threads) const {
     const int parts = std::max(threads, 1);
     std::vector<std::vector<Box3>> copies(static_cast<std::size_t>(parts - 1),
                                           std::vector<Box3>(cells.size()));
-    run_in_parts(reaches.size(), parts, [&](std::size_t begin, std::size_t end, int part) {
+    run_in_parts(reaches.count(), parts, [&](std::size_t begin, std::size_t end, int part) {
         std::vector<Box3>& mine = part == 0 ? cells : copies[static_cast<std::size_t>(part - 1)];
-        for (std::size_t i = begin; i < end; ++i) {
-            if (!reaches[i].box.empty()) {
-                add_reach(reaches[i], mine);
+        for (std::size_t id = begin; id < end; ++id) {
+            const PolygonReach reach = reaches(id);
+            if (!reach.box.empty()) {
+                add_reach(reach, mine);
             }
         }
     });

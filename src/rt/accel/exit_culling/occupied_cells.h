@@ -25,11 +25,22 @@ struct CullingFrame {
 };
 CullingFrame culling_frame(const Scene& scene);
 
+/// The reach of each polygon of a scene, computed when asked: the build asks for each one up to
+/// three times rather than keep them all (168 bytes a polygon, 1.7 GB for 10M triangles).
+struct ReachSource {
+    const Scene* scene = nullptr;
+    double rounding = 0.0;  ///< CullingFrame::rounding
+    std::size_t count() const { return scene->polygons.size(); }
+    PolygonReach operator()(std::size_t id) const {
+        return polygon_reach(*scene, static_cast<std::uint32_t>(id), 0.0, rounding);
+    }
+};
+
 class OccupiedCells {
 public:
     /// `resolution` cells along each axis (1..64) of the box of every reach (both kinds), filled
     /// by `threads` threads (the same cells for any number).
-    OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches, int resolution,
+    OccupiedCells(const CullingFrame& frame, const ReachSource& reaches, int resolution,
                   int threads = 1);
 
     /// Every reach box, grown by margin(): no hit point lies outside it, or within margin() of
@@ -72,7 +83,7 @@ private:
         return static_cast<int>(std::clamp(scaled, 0.0, top_cell_));
     }
     double boundary(int axis, int index) const;
-    void fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells, int threads) const;
+    void fill(const ReachSource& reaches, std::vector<Box3>& cells, int threads) const;
     void add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const;
     void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);
