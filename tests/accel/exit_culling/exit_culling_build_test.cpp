@@ -37,6 +37,36 @@ TEST(ExitCullingBuild, AnyThreadCountBuildsTheSameTable) {
     EXPECT_GT(emptiest, 0.3) << "tables this full would prove little";
 }
 
+// The pass that answers most rays (every ray leaving a surface) rests on this: a cell a polygon
+// crosses has every direction bin set. Points on polygons, at corners, edge midpoints and
+// centroids, must all be found in full cells.
+TEST(ExitCullingBuild, PointsOnPolygonsStartInFullCells) {
+    const Scene scenes[] = {load_twocubes(), make_sphere({1, 2, 3}, 5.0, 12, 24, false),
+                            make_soup(23, 300), make_boxes(13, 12)};
+    for (const Scene& scene : scenes) {
+        for (const int resolution : {4, 8, 13}) {
+            const ExitCullingTable table(scene, resolution, 8);
+            int points = 0;
+            for (const Polygon& polygon : scene.polygons) {
+                Vec3 centroid;
+                for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
+                    const Vec3 corner = scene.corner_position(polygon, k);
+                    const Vec3 next =
+                        scene.corner_position(polygon, (k + 1) % polygon.corner_count);
+                    centroid += corner / static_cast<double>(polygon.corner_count);
+                    for (const Vec3& p : {corner, 0.5 * (corner + next)}) {
+                        EXPECT_TRUE(table.starts_in_full_cell(p))
+                            << scene.polygons.size() << " polygons, " << resolution << "^3 cells";
+                        ++points;
+                    }
+                }
+                EXPECT_TRUE(table.starts_in_full_cell(centroid));
+            }
+            EXPECT_GT(points, 0);
+        }
+    }
+}
+
 TEST(ExitCullingBuild, PartsCoverTheRangeOnce) {
     for (const std::size_t count : {0u, 1u, 5u, 1000u}) {
         for (const int parts : {1, 2, 3, 8}) {
