@@ -3,8 +3,9 @@
 // part with z in [z0, z1] (z0 = max(the box's lowest s * w_a, 0)) and w_b in [b0, b1], u ranges
 // within [b0 / z1 or b0 / z0, b1 / z0 or b1 / z1] by the signs of b0 and b1 (and to -inf or +inf
 // when z0 == 0), because u is monotone in w_b and in z separately. That rectangle, widened for
-// rounding and cut to [-1, 1], is marked. bin_of() computes u the same way, to within an ulp, and
-// maps u to a column with the same monotone arithmetic, so the direction's bin lies inside.
+// rounding and cut to [-1, 1], is marked. bin_of() computes u the same way, to within an ulp (two
+// when it multiplies by the reciprocal of z), and maps u to a column with the same monotone
+// arithmetic, so the direction's bin lies inside.
 #include "rt/accel/exit_culling/direction_bins.h"
 
 #include <algorithm>
@@ -95,6 +96,21 @@ DirectionBin DirectionBins::bin_of(const Vec3& d) const {
     // |d_b| <= major, so u and v are in [-1, 1] exactly.
     const double u = d[(axis + 1) % 3] / major;
     const double v = d[(axis + 2) % 3] / major;
+    return {2 * axis + (d[axis] < 0.0 ? 1 : 0), cell_of(v), cell_of(u)};
+}
+
+DirectionBin DirectionBins::bin_of(const Vec3& d, const Vec3& inverse) const {
+    const double ax = std::fabs(d.x);
+    const double ay = std::fabs(d.y);
+    const double az = std::fabs(d.z);
+    const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+    const double inverse_major = std::fabs(inverse[axis]);
+    if (!(inverse_major < Box3::kInfinity)) {
+        return bin_of(d);  // a subnormal major component
+    }
+    // Rounded twice, so |u| may pass 1 by an ulp: cell_of() clamps it.
+    const double u = d[(axis + 1) % 3] * inverse_major;
+    const double v = d[(axis + 2) % 3] * inverse_major;
     return {2 * axis + (d[axis] < 0.0 ? 1 : 0), cell_of(v), cell_of(u)};
 }
 

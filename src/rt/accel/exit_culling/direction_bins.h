@@ -32,6 +32,8 @@ public:
 
     /// The bin of a finite nonzero direction (its length does not matter).
     DirectionBin bin_of(const Vec3& direction) const;
+    /// The same, given 1 / direction per axis: a product instead of two divisions.
+    DirectionBin bin_of(const Vec3& direction, const Vec3& inverse) const;
     bool contains(std::span<const std::uint16_t> set, const DirectionBin& bin) const {
         return (set[bin.face * side_ + bin.row] >> bin.column) & 1u;
     }

@@ -18,7 +18,7 @@ ExitCullingTable timed_table(const Scene& scene, const ExitCullingSettings& sett
     const int resolution = settings.grid_resolution > 0
                                ? settings.grid_resolution
                                : default_exit_culling_resolution(scene.polygons.size());
-    ExitCullingTable table(scene, resolution, settings.bins_per_side);
+    ExitCullingTable table(scene, resolution, settings.bins_per_side, settings.build_threads);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return table;
 }
@@ -39,7 +39,8 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
 
 std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
                                             TraceCounters& counters) const {
-    if (!table_.nothing_ahead(ray, t)) {
+    // The first test inline: most rays leave a surface and are passed on by it alone.
+    if (table_.starts_in_full_cell(ray.origin) || !table_.nothing_ahead(ray, t)) {
         return wrapped_->closest_hit(ray, t, counters);
     }
     ++counters.culled_exits;
@@ -53,7 +54,7 @@ std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
 }
 
 bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    if (!table_.nothing_ahead(ray, t)) {
+    if (table_.starts_in_full_cell(ray.origin) || !table_.nothing_ahead(ray, t)) {
         return wrapped_->occluded(ray, t, counters);
     }
     ++counters.culled_exits;

@@ -20,6 +20,7 @@ struct ExitCullingSettings {
     int grid_resolution = 0;    ///< cells along each axis (1..64); 0: chosen from the scene
     int bins_per_side = 8;      ///< direction bins along each edge of a cube face (1..16)
     bool check_culled = false;  ///< -de: trace every culled ray with the wrapped accelerator too
+    int build_threads = 0;      ///< 0: one a core for a large scene (parallel_parts.h)
 };
 
 /// What -p prints for exit culling. The number of culled rays is TraceCounters::culled_exits.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "rt/accel/exit_culling/parallel_parts.h"
+
 namespace rt {
 
 namespace {
@@ -36,23 +38,37 @@ CullingFrame culling_frame(const Scene& scene) {
     return frame;
 }
 
-OccupiedCells::OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches,
-                             int resolution)
+OccupiedCells::OccupiedCells(const CullingFrame& frame, const ReachSource& reaches, int resolution,
+                             int threads)
     : frame_(frame), resolution_(resolution) {
     if (resolution < 1 || resolution > 64) {
         throw std::invalid_argument("exit culling grid resolution must be 1..64");
     }
-    for (const PolygonReach& reach : reaches) {
-        world_.add(reach.all());
+    // Each part its own box, joined after (a union is exact and order-free).
+    std::vector<Box3> parts(static_cast<std::size_t>(std::max(threads, 1)));
+    run_in_parts(reaches.count(), threads, [&](std::size_t begin, std::size_t end, int part) {
+        for (std::size_t id = begin; id < end; ++id) {
+            parts[static_cast<std::size_t>(part)].add(reaches(id).all());
+        }
+    });
+    for (const Box3& part : parts) {
+        world_.add(part);
     }
     if (world_.empty()) {
         world_ = frame_.positions;
     }
     world_ = world_.grown(frame_.margin);
     cell_size_ = world_.extent() / resolution_;
+    top_cell_ = resolution_ - 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        inverse_cell_size_[axis] = cell_size_[axis] > 0.0 ? 1.0 / cell_size_[axis] : 0.0;
+        for (int index = 0; index <= resolution_; ++index) {
+            boundaries_[axis].push_back(boundary(axis, index));
+        }
+    }
 
     std::vector<Box3> cells(static_cast<std::size_t>(resolution_) * resolution_ * resolution_);
-    fill(reaches, cells);
+    fill(reaches, cells, threads);
     std::vector<Box3> leaves;
     std::vector<std::uint32_t> codes;
     for (int cell = 0; cell < static_cast<int>(cells.size()); ++cell) {
@@ -88,10 +104,26 @@ void OccupiedCells::cell_range(const Box3& box, int first[3], int last[3]) const
     }
 }
 
-void OccupiedCells::fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const {
-    for (const PolygonReach& reach : reaches) {
-        if (!reach.box.empty()) {
-            add_reach(reach, cells);
+// Part 0 fills `cells`, the others their own copies, joined after: a union of boxes is exact and
+// does not depend on the order.
+void OccupiedCells::fill(const ReachSource& reaches, std::vector<Box3>& cells, int threads) const {
+    const int parts = std::max(threads, 1);
+    std::vector<std::vector<Box3>> copies(static_cast<std::size_t>(parts - 1),
+                                          std::vector<Box3>(cells.size()));
+    run_in_parts(reaches.count(), parts, [&](std::size_t begin, std::size_t end, int part) {
+        std::vector<Box3>& mine = part == 0 ? cells : copies[static_cast<std::size_t>(part - 1)];
+        for (std::size_t id = begin; id < end; ++id) {
+            const PolygonReach reach = reaches(id);
+            if (!reach.box.empty()) {
+                add_reach(reach, mine);
+            }
+        }
+    });
+    for (const std::vector<Box3>& copy : copies) {
+        for (std::size_t cell = 0; cell < cells.size(); ++cell) {
+            if (!copy[cell].empty()) {
+                cells[cell].add(copy[cell]);
+            }
         }
     }
 }
@@ -105,7 +137,7 @@ void OccupiedCells::add_reach(const PolygonReach& reach, std::vector<Box3>& cell
         for (int y = first[1]; y <= last[1]; ++y) {
             for (int x = first[0]; x <= last[0]; ++x) {
                 const int cell = x + resolution_ * (y + resolution_ * z);
-                const Box3 piece = intersection(reach.box, cell_box(cell));
+                const Box3 piece = intersection(reach.box, cell_box(x, y, z));
                 if (!piece.empty() && slab_meets_box(reach, piece)) {
                     cells[cell].add(piece);
                 }
@@ -132,11 +164,6 @@ void OccupiedCells::build_node(const std::vector<Box3>& leaves, std::size_t begi
     tree_[slot] = node;
 }
 
-int OccupiedCells::axis_cell(int axis, double coordinate) const {
-    const double scaled = std::floor((coordinate - world_.lo[axis]) / cell_size_[axis]);
-    return static_cast<int>(std::clamp(scaled, 0.0, static_cast<double>(resolution_ - 1)));
-}
-
 double OccupiedCells::boundary(int axis, int index) const {
     if (index <= 0) {
         return world_.lo[axis];
@@ -147,19 +174,9 @@ double OccupiedCells::boundary(int axis, int index) const {
     return world_.lo[axis] + index * cell_size_[axis];
 }
 
-int OccupiedCells::cell_of(const Vec3& p) const {
-    return axis_cell(0, p.x) + resolution_ * (axis_cell(1, p.y) + resolution_ * axis_cell(2, p.z));
-}
-
 Box3 OccupiedCells::cell_box(int cell) const {
-    const int index[3] = {cell % resolution_, (cell / resolution_) % resolution_,
-                          cell / (resolution_ * resolution_)};
-    Box3 box;
-    for (int axis = 0; axis < 3; ++axis) {
-        box.lo[axis] = boundary(axis, index[axis]);
-        box.hi[axis] = boundary(axis, index[axis] + 1);
-    }
-    return box;
+    return cell_box(cell % resolution_, (cell / resolution_) % resolution_,
+                    cell / (resolution_ * resolution_));
 }
 
 }  // namespace rt

@@ -4,6 +4,8 @@
 // of boxes whose directions it already has.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -23,10 +25,23 @@ struct CullingFrame {
 };
 CullingFrame culling_frame(const Scene& scene);
 
+/// The reach of each polygon of a scene, computed when asked: the build asks for each one up to
+/// three times rather than keep them all (168 bytes a polygon, 1.7 GB for 10M triangles).
+struct ReachSource {
+    const Scene* scene = nullptr;
+    double rounding = 0.0;  ///< CullingFrame::rounding
+    std::size_t count() const { return scene->polygons.size(); }
+    PolygonReach operator()(std::size_t id) const {
+        return polygon_reach(*scene, static_cast<std::uint32_t>(id), 0.0, rounding);
+    }
+};
+
 class OccupiedCells {
 public:
-    /// `resolution` cells along each axis (1..64) of the box of every reach (both kinds).
-    OccupiedCells(const CullingFrame& frame, std::span<const PolygonReach> reaches, int resolution);
+    /// `resolution` cells along each axis (1..64) of the box of every reach (both kinds), filled
+    /// by `threads` threads (the same cells for any number).
+    OccupiedCells(const CullingFrame& frame, const ReachSource& reaches, int resolution,
+                  int threads = 1);
 
     /// Every reach box, grown by margin(): no hit point lies outside it, or within margin() of
     /// its boundary.
@@ -36,11 +51,18 @@ public:
     int resolution() const { return resolution_; }
 
     /// The cell holding a point of the world (clamped at the boundary), as x + R (y + R z).
-    int cell_of(const Vec3& p) const;
+    int cell_of(const Vec3& p) const {
+        return axis_cell(0, p.x) +
+               resolution_ * (axis_cell(1, p.y) + resolution_ * axis_cell(2, p.z));
+    }
     /// The cells along each axis that may meet the box: one more each way than its corners' own,
     /// as cells and boundaries are rounded separately.
     void cell_range(const Box3& box, int first[3], int last[3]) const;
     Box3 cell_box(int cell) const;
+    Box3 cell_box(int x, int y, int z) const {
+        return {{boundaries_[0][x], boundaries_[1][y], boundaries_[2][z]},
+                {boundaries_[0][x + 1], boundaries_[1][y + 1], boundaries_[2][z + 1]}};
+    }
 
     /// A binary tree over the occupied cells' boxes, root first; leaves have no children.
     struct Node {
@@ -52,9 +74,16 @@ public:
     std::size_t memory_bytes() const { return tree_.capacity() * sizeof(Node); }
 
 private:
-    int axis_cell(int axis, double coordinate) const;
+    // A product with the reciprocal, not a division, and truncation after the clamp (which makes
+    // the value non-negative) rather than floor(): a few ulps of the world's size apart at most,
+    // far below margin(), and without the division and the libm call that made this the
+    // costliest step of a culling test. Inline: every ray the culling layer sees comes here.
+    int axis_cell(int axis, double coordinate) const {
+        const double scaled = (coordinate - world_.lo[axis]) * inverse_cell_size_[axis];
+        return static_cast<int>(std::clamp(scaled, 0.0, top_cell_));
+    }
     double boundary(int axis, int index) const;
-    void fill(std::span<const PolygonReach> reaches, std::vector<Box3>& cells) const;
+    void fill(const ReachSource& reaches, std::vector<Box3>& cells, int threads) const;
     void add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const;
     void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);
@@ -63,6 +92,9 @@ private:
     Box3 world_;
     int resolution_ = 1;
     Vec3 cell_size_;
+    Vec3 inverse_cell_size_;                         ///< 0 along an axis of no extent (one cell)
+    double top_cell_ = 0.0;                          ///< resolution - 1
+    std::array<std::vector<double>, 3> boundaries_;  ///< boundary(axis, 0..resolution), looked up
     std::vector<Node> tree_;
     std::size_t occupied_ = 0;
 };
