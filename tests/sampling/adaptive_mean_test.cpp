@@ -101,5 +101,64 @@ TEST(AdaptiveMean, OneSampleIsAllThereIs) {
     EXPECT_EQ(adaptive_mean(1, nullptr, take, confirm).count(), 1u);
 }
 
+// Records, for each sample taken, how far the loop promised to go: every promise must be kept.
+struct PromisedSamples {
+    FlatSamples flat;
+    std::vector<std::uint32_t> certain;
+
+    SeenSample<int> operator()(std::uint32_t k, std::uint32_t certain_end) {
+        certain.push_back(certain_end);
+        return flat(k);
+    }
+};
+
+void expect_promises_kept(const PromisedSamples& take, std::uint32_t taken) {
+    for (std::size_t k = 0; k < take.certain.size(); ++k) {
+        EXPECT_GT(take.certain[k], k);
+        EXPECT_LE(take.certain[k], taken) << "sample " << k;
+    }
+}
+
+TEST(AdaptiveMean, ItTellsWhichSamplesWillBeTakenWhateverTheyBring) {
+    const ChiSquareStop stop;
+    PromisedSamples take;
+    Confirmer confirm;
+    EXPECT_EQ(adaptive_mean(kTotal, &stop, take, confirm).count(), 4u);
+    EXPECT_EQ(take.certain, (std::vector<std::uint32_t>{4, 4, 4, 4}));  // the minimum
+
+    PromisedSamples edge;
+    edge.flat.seen_at[1] = 8;  // from the third sample on, every sample is certain
+    EXPECT_EQ(adaptive_mean(kTotal, &stop, edge, confirm).count(), kTotal);
+    EXPECT_EQ(edge.certain[0], 4u);
+    EXPECT_EQ(edge.certain[1], 4u);
+    EXPECT_EQ(edge.certain[2], kTotal);
+    expect_promises_kept(edge, kTotal);
+
+    PromisedSamples refused;
+    Confirmer no{false, {}};
+    EXPECT_EQ(adaptive_mean(kTotal, &stop, refused, no).count(), kTotal);
+    EXPECT_EQ(refused.certain[3], 4u);
+    EXPECT_EQ(refused.certain[4], kTotal);  // after the confirmation failed
+    expect_promises_kept(refused, kTotal);
+
+    PromisedSamples every;
+    EXPECT_EQ(adaptive_mean(kTotal, nullptr, every, confirm).count(), kTotal);  // -Dx
+    EXPECT_EQ(every.certain, std::vector<std::uint32_t>(kTotal, kTotal));
+}
+
+TEST(AdaptiveMean, NoisySamplesAreCertainOnlyOneAtATimeAfterTheMinimum) {
+    const ChiSquareStop stop;
+    std::vector<std::uint32_t> certain;
+    const auto noisy = [&](std::uint32_t k, std::uint32_t certain_end) {
+        certain.push_back(certain_end);
+        return SeenSample<int>{k % 2 == 0 ? Rgb{} : Rgb{1, 1, 1}, 7};
+    };
+    Confirmer confirm;
+    EXPECT_EQ(adaptive_mean(kTotal, &stop, noisy, confirm).count(), kTotal);
+    for (std::uint32_t k = 4; k < kTotal; ++k) {
+        EXPECT_EQ(certain[k], k + 1);  // the rule might stop after any of them
+    }
+}
+
 }  // namespace
 }  // namespace rt

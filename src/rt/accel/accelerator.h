@@ -74,6 +74,12 @@ public:
             }
         }
     }
+    /// closest_hit_packet for eye rays (see eye_ray_closest_hit): a method that answers eye rays
+    /// from something of its own (the z-buffer) asks eye_ray_closest_hit lane by lane.
+    virtual void eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                            TraceCounters& counters) const {
+        closest_hit_packet(packet, hits, counters);
+    }
     /// occluded for each active lane: bit k set when lane k is blocked (inactive lanes: 0).
     virtual std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
         std::uint32_t blocked = 0;

@@ -79,6 +79,43 @@ Rgb RayTracer::trace(const Ray& ray, RayKind kind, int depth, bool distributed,
     ++counters.rays;
     const std::optional<Hit> hit =
         nearest_hit(ray, kind == RayKind::Eye ? RayStart::Eye : RayStart::Elsewhere, counters);
+    return shade(ray, hit, kind, depth, distributed, sample, weight);
+}
+
+void RayTracer::eye_ray_hits(std::span<const Ray> rays, std::span<std::optional<Hit>> hits,
+                             TraceCounters& counters) const {
+    if (stop_ != nullptr && stop_->load(std::memory_order_relaxed)) {
+        return;  // abandoned: trace_eye_ray returns black without looking at the hits
+    }
+    RayPacket packet;
+    packet.t.fill(Interval{epsilon_, kBeyondAnyScene});
+    PacketHits found;
+    for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
+        const std::size_t lanes = std::min<std::size_t>(kPacketSize, rays.size() - first);
+        std::copy_n(rays.begin() + static_cast<std::ptrdiff_t>(first), lanes, packet.rays.begin());
+        packet.active = (1u << lanes) - 1u;
+        accel_.eye_ray_closest_hit_packet(packet, found, counters);
+        std::copy_n(found.begin(), lanes, hits.begin() + static_cast<std::ptrdiff_t>(first));
+    }
+}
+
+Rgb RayTracer::trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                             SampleContext& sample) const {
+    return trace_found(ray, hit, RayKind::Eye, 1, false, sample, 1.0);
+}
+
+Rgb RayTracer::trace_found(const Ray& ray, const std::optional<Hit>& hit, RayKind kind, int depth,
+                           bool distributed, SampleContext& sample, double weight) const {
+    if (stop_ != nullptr && stop_->load(std::memory_order_relaxed)) {
+        return {};  // abandoned: the caller discards the sample
+    }
+    ++sample.counters[kind].rays;
+    return shade(ray, hit, kind, depth, distributed, sample, weight);
+}
+
+Rgb RayTracer::shade(const Ray& ray, const std::optional<Hit>& hit, RayKind kind, int depth,
+                     bool distributed, SampleContext& sample, double weight) const {
+    TraceCounters& counters = sample.counters[kind];
     if (!hit) {
         sample.last_seen = {};
         return {};  // the background is black
@@ -228,16 +265,18 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
     } else {
         cone.emplace(lobe.cone, lobe.axis);
     }
-    const auto take = [&](std::uint32_t k) {
+    const auto direction_of = [&](std::uint32_t k) {
         double u1 = 0.0;
         double u2 = 0.0;
         const double j1 = sample.stream.uniform();
         const double j2 = sample.stream.uniform();
         ray_strata_.point(k, j1, j2, u1, u2);
-        Vec3 direction = lobe.diffuse ? (*hemisphere)(u1, u2) : (*cone)(u1, u2);
-        direction = keep_on_side(direction, s.facing_normal, lobe.outside);
+        const Vec3 direction = lobe.diffuse ? (*hemisphere)(u1, u2) : (*cone)(u1, u2);
+        return keep_on_side(direction, s.facing_normal, lobe.outside);
+    };
+    const auto take = [&](std::uint32_t k) {
         const Rgb value =
-            trace({s.position, direction}, lobe.kind, depth + 1, true, sample, weight);
+            trace({s.position, direction_of(k)}, lobe.kind, depth + 1, true, sample, weight);
         ++sample.tree.distributed_rays;
         return SeenSample<SurfaceSeen>{value, sample.last_seen};
     };

@@ -6,6 +6,8 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "rt/accel/accelerator.h"
@@ -67,6 +69,15 @@ public:
     Rgb trace(const Ray& ray, RayKind kind, int depth, bool distributed, SampleContext& sample,
               double weight = 1.0) const;
 
+    /// The nearest hits of eye rays (nearest_hit with RayStart::Eye), asked eight at a time
+    /// through the accelerator's packet walk: rays of neighbouring samples share its path, and
+    /// each answer is exactly the single ray's. The walk's counters go to `counters`.
+    void eye_ray_hits(std::span<const Ray> rays, std::span<std::optional<Hit>> hits,
+                      TraceCounters& counters) const;
+    /// trace for an eye ray whose nearest hit eye_ray_hits has found: the same value, random
+    /// numbers and counters, the walk's own counters apart.
+    Rgb trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit, SampleContext& sample) const;
+
     /// What a ray meets first: its polygon, and its hit's shadow feelers, without shading it or
     /// tracing further (the adaptive rule's probes). `full` as for a ray that is not distributed
     /// (the full model's feelers, -T).
@@ -77,6 +88,12 @@ private:
     struct Lobe;
     /// The accelerator's nearest hit beyond epsilon: eye rays through its eye-ray entry point.
     std::optional<Hit> nearest_hit(const Ray& ray, RayStart start, TraceCounters& counters) const;
+    /// trace for a ray whose nearest hit (nearest_hit) is found already, in a packet.
+    Rgb trace_found(const Ray& ray, const std::optional<Hit>& hit, RayKind kind, int depth,
+                    bool distributed, SampleContext& sample, double weight) const;
+    /// trace from the ray's nearest hit on: local illumination and the subtree.
+    Rgb shade(const Ray& ray, const std::optional<Hit>& hit, RayKind kind, int depth,
+              bool distributed, SampleContext& sample, double weight) const;
     /// How the lobes at one hit send their rays.
     enum class LobeRays {
         Distributed,  ///< a distribution in each cone, as many rays as -Xr asks for

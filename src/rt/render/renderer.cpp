@@ -13,6 +13,7 @@
 #include "rt/geometry/camera.h"
 #include "rt/render/ray_tracer.h"
 #include "rt/sampling/adaptive_mean.h"
+#include "rt/sampling/chi_square.h"
 #include "rt/sampling/sample_stream.h"
 #include "rt/sampling/sampling_settings.h"
 #include "rt/sampling/strata.h"
@@ -98,6 +99,70 @@ private:
     std::array<Row, 4> rows_;
 };
 
+// A pixel's eye ray: its random numbers after the jitter within its stratum (the sample's tree
+// draws on from there), and the ray. One sample per pixel looks through the pixel's centre, as
+// the original did.
+struct EyeSample {
+    SampleStream stream{0, 0, 0, 0};
+    Ray ray;
+};
+
+EyeSample eye_sample(const RenderJob& job, int x, int y, std::uint32_t k) {
+    SampleStream stream(job.settings.shading.sampling.seed, x, y, k);
+    double px = 0.5;
+    double py = 0.5;
+    if (job.pixel_strata.size() > 1) {
+        const double j1 = stream.uniform();
+        const double j2 = stream.uniform();
+        job.pixel_strata.point(k, j1, j2, px, py);
+    }
+    return {stream, job.camera.primary_ray(x + px, y + py)};
+}
+
+// The eye rays a run of neighbouring pixels takes whatever the adaptive rule decides (the first
+// minimum_samples of each, or all with -Dx), found before the pixels are shaded so that they go
+// through the accelerator eight at a time: samples of one pixel and of its neighbours are
+// coherent rays. Each sample keeps its own random stream, so the picture is the same.
+class FirstEyeRays {
+public:
+    static constexpr int kPixels = 8;  ///< pixels found at once
+
+    explicit FirstEyeRays(const RenderJob& job)
+        : per_pixel_(job.settings.shading.sampling.adaptive
+                         ? minimum_samples(job.pixel_strata.size())
+                         : job.pixel_strata.size()) {}
+
+    /// Finds the first eye rays of pixels x0 to x1 (at most kPixels) of row y.
+    void find(const RenderJob& job, int x0, int x1, int y, TraceCounters& eye_counters) {
+        x0_ = x0;
+        samples_.clear();
+        rays_.clear();
+        for (int x = x0; x <= x1; ++x) {
+            for (std::uint32_t k = 0; k < per_pixel_; ++k) {
+                samples_.push_back(eye_sample(job, x, y, k));
+                rays_.push_back(samples_.back().ray);
+            }
+        }
+        hits_.assign(rays_.size(), std::nullopt);
+        job.tracer.eye_ray_hits(rays_, hits_, eye_counters);
+    }
+
+    std::uint32_t per_pixel() const { return per_pixel_; }
+    const EyeSample& sample(int x, std::uint32_t k) const { return samples_[index(x, k)]; }
+    const std::optional<Hit>& hit(int x, std::uint32_t k) const { return hits_[index(x, k)]; }
+
+private:
+    std::size_t index(int x, std::uint32_t k) const {
+        return static_cast<std::size_t>(x - x0_) * per_pixel_ + k;
+    }
+
+    std::uint32_t per_pixel_;
+    int x0_ = 0;
+    std::vector<EyeSample> samples_;
+    std::vector<Ray> rays_;
+    std::vector<std::optional<Hit>> hits_;
+};
+
 // Whether the centre rays of the four neighbouring pixels see the same surface (SurfaceSeen: one
 // polygon in the same light, or all miss): a polygon's edge or a shadow's edge can pass between
 // a pixel's first samples unseen, but rarely past its neighbours too. `memo` is null when the
@@ -135,24 +200,38 @@ bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, Sampl
 // The pixel's value: the mean of up to n x n samples (manual 2.2), jittered in their strata
 // and taken in progressive order until the chi-square rule (-Xp) is satisfied, or all of them
 // with -Dx. The rule may stop early only where every sample so far, and the centres of the four
-// neighbouring pixels, see the same surface. One sample per pixel looks through the pixel's
-// centre, as the original did.
-Rgb render_pixel(RenderJob& job, int x, int y, KindCounters& counters, PixelReport& report,
-                 CentreMemo* memo) {
+// neighbouring pixels, see the same surface. The first samples' hits are in `first`.
+Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, KindCounters& counters,
+                 PixelReport& report, CentreMemo* memo) {
     const SamplingSettings& sampling = job.settings.shading.sampling;
     const std::uint32_t total = job.pixel_strata.size();
-    const auto take = [&](std::uint32_t k) {
-        SampleStream stream(sampling.seed, x, y, k);
-        double px = 0.5;
-        double py = 0.5;
-        if (total > 1) {
-            const double j1 = stream.uniform();
-            const double j2 = stream.uniform();
-            job.pixel_strata.point(k, j1, j2, px, py);
+    // Once the rule cannot stop early, the rest of the samples are found eight at a time too.
+    std::array<EyeSample, kPacketSize> ahead;
+    std::array<Ray, kPacketSize> ahead_rays;
+    std::array<std::optional<Hit>, kPacketSize> ahead_hits;
+    std::uint32_t ahead_first = 0;
+    std::uint32_t ahead_count = 0;
+    const auto take = [&](std::uint32_t k, std::uint32_t certain) {
+        if (k >= first.per_pixel() && certain - k > 1 && k - ahead_first >= ahead_count) {
+            ahead_first = k;
+            ahead_count = std::min<std::uint32_t>(kPacketSize, certain - k);
+            for (std::uint32_t i = 0; i < ahead_count; ++i) {
+                ahead[i] = eye_sample(job, x, y, k + i);
+                ahead_rays[i] = ahead[i].ray;
+            }
+            job.tracer.eye_ray_hits(std::span(ahead_rays).first(ahead_count), ahead_hits,
+                                    counters[RayKind::Eye]);
         }
-        SampleContext sample{stream, counters, report.tree, {}};
-        Rgb value = job.tracer.trace(job.camera.primary_ray(x + px, y + py), RayKind::Eye, 1, false,
-                                     sample);
+        const bool found_first = k < first.per_pixel();
+        const bool found_ahead = !found_first && k - ahead_first < ahead_count;
+        EyeSample eye = found_first   ? first.sample(x, k)
+                        : found_ahead ? ahead[k - ahead_first]
+                                      : eye_sample(job, x, y, k);
+        SampleContext sample{eye.stream, counters, report.tree, {}};
+        Rgb value = found_first ? job.tracer.trace_eye_ray(eye.ray, first.hit(x, k), sample)
+                    : found_ahead
+                        ? job.tracer.trace_eye_ray(eye.ray, ahead_hits[k - ahead_first], sample)
+                        : job.tracer.trace(eye.ray, RayKind::Eye, 1, false, sample);
         // An intensity beyond the float range (or not a number) would spoil the pixel and the
         // outputs: the sample counts as black, and the run says how many there were.
         if (!representable(value)) {
@@ -206,6 +285,7 @@ void render_rows(RenderJob& job, KindCounters& counters) {
     if (!job.settings.shading.fuzzy.enabled()) {
         memo.emplace(job.scene.view.width);
     }
+    FirstEyeRays first(job);
     while (!job.stopping) {
         int y = 0;
         if (job.settings.rows != nullptr) {
@@ -223,13 +303,17 @@ void render_rows(RenderJob& job, KindCounters& counters) {
         }
         std::uint64_t samples = 0;
         for (int x = w.left; x <= w.right && !job.stop_now(); ++x) {
+            if ((x - w.left) % FirstEyeRays::kPixels == 0) {
+                first.find(job, x, std::min(w.right, x + FirstEyeRays::kPixels - 1), y,
+                           counters[RayKind::Eye]);
+            }
             if (pixel_events) {
                 std::lock_guard lock(job.observer_mutex);
                 job.observer.pixel_started(x, y);
             }
             PixelReport report;
-            job.film.set_pixel(x, y,
-                               render_pixel(job, x, y, counters, report, memo ? &*memo : nullptr));
+            job.film.set_pixel(
+                x, y, render_pixel(job, x, y, first, counters, report, memo ? &*memo : nullptr));
             samples += report.samples;
             if (sample_events) {
                 std::lock_guard lock(job.observer_mutex);

@@ -2,7 +2,9 @@
 // written once for a pixel's samples (-Xp) and for the distributed rays of a lobe (-Xr).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <type_traits>
 
 #include "rt/core/rgb.h"
 #include "rt/sampling/chi_square.h"
@@ -23,16 +25,29 @@ struct SeenSample {
 /// same, the chi-square rule `stop` is met, and confirm(seen) agrees that nothing else is near
 /// (the neighbours' centres, a cone's rim). confirm is asked once, the first time the rest holds;
 /// if it disagrees, every sample is taken.
+///
+/// take may also be called as take(k, certain): samples k to certain - 1 will be taken whatever
+/// they bring (the first minimum_samples, and all the rest once they cannot stop early), so a
+/// caller can find their rays together (packets).
 template <class Take, class Confirm>
 RunningStatistics adaptive_mean(std::uint32_t total, const ChiSquareStop* stop, Take&& take,
                                 Confirm&& confirm) {
     const std::uint32_t minimum = stop != nullptr ? minimum_samples(total) : total;
     RunningStatistics statistics;
-    decltype(take(std::uint32_t{0}).seen) seen{};
+    constexpr bool kTellsCertain = std::is_invocable_v<Take, std::uint32_t, std::uint32_t>;
+    const auto take_one = [&](std::uint32_t k, std::uint32_t certain) {
+        if constexpr (kTellsCertain) {
+            return take(k, certain);
+        } else {
+            (void)certain;
+            return take(k);
+        }
+    };
+    decltype(take_one(0, 0).seen) seen{};
     bool one_surface = true;
     bool confirm_asked = false;
     for (std::uint32_t k = 0; k < total; ++k) {
-        const auto sample = take(k);
+        const auto sample = take_one(k, one_surface ? std::max(minimum, k + 1) : total);
         statistics.add(sample.value);
         one_surface = one_surface && (k == 0 || sample.seen == seen);
         seen = sample.seen;

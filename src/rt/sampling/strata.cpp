@@ -23,7 +23,8 @@ std::uint64_t spread_key(std::uint32_t i, std::uint32_t j) {
 
 }  // namespace
 
-ProgressiveStrata::ProgressiveStrata(int nx, int ny) : nx_(std::max(1, nx)), ny_(std::max(1, ny)) {
+ProgressiveStrata::ProgressiveStrata(int nx, int ny)
+    : nx_(std::max(1, nx)), ny_(std::max(1, ny)), nx_real_(nx_), ny_real_(ny_) {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
     for (int j = 0; j < ny_; ++j) {
         for (int i = 0; i < nx_; ++i) {
@@ -35,17 +36,17 @@ ProgressiveStrata::ProgressiveStrata(int nx, int ny) : nx_(std::max(1, nx)), ny_
     std::sort(keyed.begin(), keyed.end());
     order_.reserve(keyed.size());
     for (const auto& entry : keyed) {
-        order_.push_back(entry.second);
+        const std::uint32_t stratum = entry.second;
+        order_.push_back({static_cast<double>(stratum % static_cast<std::uint32_t>(nx_)),
+                          static_cast<double>(stratum / static_cast<std::uint32_t>(nx_))});
     }
 }
 
 void ProgressiveStrata::point(std::uint32_t index, double u1, double u2, double& x,
                               double& y) const {
-    const std::uint32_t stratum = order_[index % order_.size()];
-    const auto i = static_cast<int>(stratum % static_cast<std::uint32_t>(nx_));
-    const auto j = static_cast<int>(stratum / static_cast<std::uint32_t>(nx_));
-    x = (i + u1) / nx_;
-    y = (j + u2) / ny_;
+    const Corner& corner = order_[index < order_.size() ? index : index % order_.size()];
+    x = (corner.i + u1) / nx_real_;
+    y = (corner.j + u2) / ny_real_;
 }
 
 }  // namespace rt

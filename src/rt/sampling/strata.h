@@ -18,9 +18,16 @@ public:
     void point(std::uint32_t index, double u1, double u2, double& x, double& y) const;
 
 private:
+    /// A stratum's column and row, as the doubles point() adds to: no division per sample.
+    struct Corner {
+        double i;
+        double j;
+    };
     int nx_;
     int ny_;
-    std::vector<std::uint32_t> order_;  ///< stratum j * nx + i, in visiting order
+    double nx_real_;
+    double ny_real_;
+    std::vector<Corner> order_;  ///< the strata in visiting order
 };
 
 }  // namespace rt

@@ -48,6 +48,15 @@ public:
     /// ray sent here, and every ray while the buffer is off, goes to the fallback.
     std::optional<Hit> eye_ray_closest_hit(const Ray& ray, Interval t,
                                            TraceCounters& counters) const override;
+    /// Every lane as eye_ray_closest_hit.
+    void eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                    TraceCounters& counters) const override {
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            if ((packet.active >> lane) & 1u) {
+                hits[lane] = eye_ray_closest_hit(packet.rays[lane], packet.t[lane], counters);
+            }
+        }
+    }
     /// The item buffer plus the fallback.
     std::size_t memory_bytes() const override;
 
