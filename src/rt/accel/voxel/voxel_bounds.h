@@ -25,8 +25,8 @@ namespace rt {
 /// Slots (of 32 bits) the bounds take in front of a voxel's ids.
 inline constexpr std::uint32_t kVoxelBoundsSlots = 6;
 /// A structure gets bounds when its occupied voxels hold at least this many polygons on average:
-/// with fewer, testing each polygon's own box costs about what the one test of the bounds would.
-inline constexpr double kBoundsFromMeanPolygons = 10.0;
+/// with fewer, testing the voxel's one packet costs about what the one test of the bounds would.
+inline constexpr double kBoundsFromMeanPolygons = 2.0;
 
 /// Whether a structure whose `occupied` voxels hold `references` polygon ids in all gets bounds.
 inline bool worth_voxel_bounds(std::size_t references, std::size_t occupied) {
