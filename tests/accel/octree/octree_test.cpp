@@ -174,7 +174,7 @@ TEST(Octree, LeavesHoldFewPolygonsUnlessAtTheFinestLevel) {
         leaves += node.is_leaf() ? 1 : 0;
     }
     EXPECT_GT(leaves, 1000u / kMaxLeafPolygons);
-    EXPECT_LT(accel.memory_bytes(), 1000u * 200u);
+    EXPECT_LT(accel.memory_bytes(), 1000u * 250u);  // with leaf bounds and packets
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <set>
 #include <vector>
 
+#include "rt/accel/voxel/cell_pair_test.h"
 #include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/geometry/ray_polygon.h"
 
@@ -138,6 +139,44 @@ TEST(CellPackets, NeverRejectAPolygonTheExactTestHits) {
     EXPECT_GT(hits, 3000) << "too few hits for the test to mean much";
     EXPECT_GT(rejected, 500000) << "the float test rejects almost nothing";
 }
+
+#ifdef RT_VOXEL_AVX2
+TEST(CellPackets, PairTestAgreesWithTheFourWideTestLaneForLane) {
+    if (!cpu_has_avx2_for_cells()) {
+        GTEST_SKIP() << "no AVX2 on this CPU";
+    }
+    std::mt19937 rng(47);
+    const Scene scene = random_polygons(rng, 300);
+    std::vector<std::uint32_t> all(scene.polygons.size());
+    for (std::uint32_t id = 0; id < all.size(); ++id) {
+        all[id] = id;
+    }
+    const CellPackets packets(scene, 1, 0, [&](std::size_t) { return std::span(all); });
+    const std::span<const CellPacket> cell = packets.cell(0).packets;
+    ASSERT_GE(cell.size(), 2u);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    int kept = 0;
+    for (int i = 0; i < 2000; ++i) {
+        // Through a polygon's first corner, nudged: many lanes near their edges.
+        const Polygon& p = scene.polygons[rng() % scene.polygons.size()];
+        const Vec3 target =
+            scene.corner_position(p, 0) + Vec3{normal(rng), normal(rng), normal(rng)} * 1e-3;
+        Ray ray{{normal(rng), normal(rng), normal(rng)}, {}};
+        ray.direction = target - ray.origin;
+        const FloatRay float_ray(ray, packets.scale());
+        ASSERT_TRUE(float_ray.usable);
+        for (std::size_t k = 0; k + 1 < cell.size(); ++k) {
+            const unsigned pair = cell_pair_candidates(&cell[k], float_ray);
+            const auto first = static_cast<unsigned>(cell_packet_candidates(cell[k], float_ray));
+            const auto second =
+                static_cast<unsigned>(cell_packet_candidates(cell[k + 1], float_ray));
+            ASSERT_EQ(pair, first | (second << 4)) << "case " << i << ", packet " << k;
+            kept += std::popcount(first);
+        }
+    }
+    EXPECT_GT(kept, 2000) << "too few lanes kept for the test to mean much";
+}
+#endif
 
 }  // namespace
 }  // namespace rt

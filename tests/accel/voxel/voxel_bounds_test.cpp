@@ -84,6 +84,8 @@ TEST(VoxelBounds, OnlyWhereVoxelsHoldManyPolygons) {
     EXPECT_FALSE(worth_voxel_bounds(0, 0));
     EXPECT_FALSE(worth_voxel_bounds(90, 10));
     EXPECT_TRUE(worth_voxel_bounds(100, 10));
+    EXPECT_FALSE(worth_voxel_bounds(19, 10, kLeafBoundsFromMeanPolygons));
+    EXPECT_TRUE(worth_voxel_bounds(20, 10, kLeafBoundsFromMeanPolygons));
 }
 
 }  // namespace

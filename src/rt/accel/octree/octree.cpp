@@ -28,7 +28,11 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
                 : build_octree_depth_first(scene, settings.octree, settings.no_fudge)),
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(tree_.world, false)) {
-    add_leaf_bounds(scene, tree_);
+    // Under -on, no bounds: they skip the leaves where most near hits would be found, and -on
+    // is there to show the near hits the manual describes (3.1).
+    if (!rules_.accept_near_hits) {
+        add_leaf_bounds(scene, tree_);
+    }
     packets_ = CellPackets(scene, tree_.nodes.size(), tree_.bounds_slots, [&](std::size_t n) {
         const OctreeNode& node = tree_.nodes[n];
         return node.is_leaf() ? tree_.leaf_polygons(node) : std::span<const std::uint32_t>{};

@@ -43,6 +43,7 @@ OctreeTree laid_out_depth_first(const OctreeTree& in) {
     out.world = in.world;
     out.depth = in.depth;
     out.step = in.step;
+    out.per_step = in.per_step;
     out.nodes.reserve(in.nodes.size());
     out.polygons.reserve(in.polygons.size());
     out.nodes.emplace_back();

@@ -16,7 +16,8 @@ void add_leaf_bounds(const Scene& scene, OctreeTree& tree) {
     }
     // (The ids are at most 2^32 - 1 slots; bounds must not push them past it.)
     const std::uint64_t slots = tree.polygons.size() + std::uint64_t{kVoxelBoundsSlots} * occupied;
-    if (tree.bounds_slots != 0 || !worth_voxel_bounds(tree.polygons.size(), occupied) ||
+    if (tree.bounds_slots != 0 ||
+        !worth_voxel_bounds(tree.polygons.size(), occupied, kLeafBoundsFromMeanPolygons) ||
         slots > std::numeric_limits<std::uint32_t>::max()) {
         return;
     }

@@ -51,6 +51,7 @@ OctreeFill::OctreeFill(const Scene& scene, const OctreeBuildSettings& settings, 
     tree_.depth = depth;
     tree_.world = world_box(scene, true);
     tree_.step = tree_.world.extent() * (1.0 / static_cast<double>(std::int64_t{1} << tree_.depth));
+    tree_.per_step = {1.0 / tree_.step.x, 1.0 / tree_.step.y, 1.0 / tree_.step.z};
     // -ss: the pool's first allocation; it then doubles as needed, up to the -ol limit.
     try {
         tree_.nodes.reserve(pool_limit(seed));

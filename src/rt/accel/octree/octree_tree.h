@@ -38,6 +38,7 @@ struct OctreeTree {
     Box3 world;                           ///< a cube (up to rounding)
     int depth = 0;                        ///< the finest level; the root is level 0
     Vec3 step;                            ///< world extent / 2^depth: one lattice step per axis
+    Vec3 per_step;                        ///< 1 / step, for the walk (set with step)
     std::vector<OctreeNode> nodes;        ///< nodes[0] is the root; children in x, y, z bit order
     std::vector<std::uint32_t> polygons;  ///< each leaf's ids, ascending
     /// kVoxelBoundsSlots once add_leaf_bounds has put bounds in front of each leaf's ids, else 0.

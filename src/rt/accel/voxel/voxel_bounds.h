@@ -24,14 +24,18 @@ namespace rt {
 
 /// Slots (of 32 bits) the bounds take in front of a voxel's ids.
 inline constexpr std::uint32_t kVoxelBoundsSlots = 6;
-/// A structure gets bounds when its occupied voxels hold at least this many polygons on average:
-/// with fewer, testing each polygon's own box costs about what the one test of the bounds would.
+/// SEADS voxels get bounds when the occupied ones hold at least this many polygons on average:
+/// with fewer, the voxel's few packets cost about what the one test of the bounds would.
 inline constexpr double kBoundsFromMeanPolygons = 10.0;
+/// The octree's leaves, from this many: a leaf's test is a float test per packet of four fan
+/// triangles, and its bounds pay from sparser leaves (twocubes4; docs/accelerators.md).
+inline constexpr double kLeafBoundsFromMeanPolygons = 2.0;
 
 /// Whether a structure whose `occupied` voxels hold `references` polygon ids in all gets bounds.
-inline bool worth_voxel_bounds(std::size_t references, std::size_t occupied) {
-    return occupied > 0 && static_cast<double>(references) >=
-                               kBoundsFromMeanPolygons * static_cast<double>(occupied);
+inline bool worth_voxel_bounds(std::size_t references, std::size_t occupied,
+                               double from_mean = kBoundsFromMeanPolygons) {
+    return occupied > 0 &&
+           static_cast<double>(references) >= from_mean * static_cast<double>(occupied);
 }
 
 /// Each polygon's box grown by `growth`, as floats rounded outward: lo x y z, hi x y z.

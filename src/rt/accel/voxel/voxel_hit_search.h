@@ -11,6 +11,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/voxel/cell_packets.h"
+#include "rt/accel/voxel/cell_pair_test.h"
 #include "rt/accel/voxel/polygon_boxes.h"
 #include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/geometry/ray_polygon.h"
@@ -82,23 +83,39 @@ protected:
     bool test_packets(std::span<const CellPacket> packets, Test&& test) {
         const FloatRay& ray = triangle_.get();
         for (const CellPacket& packet : packets) {
-            unsigned lanes = ray.usable ? static_cast<unsigned>(cell_packet_candidates(packet, ray))
-                                        : used_lanes(packet);
-            for (; lanes != 0; lanes &= lanes - 1) {
-                const std::uint32_t word = packet.polygon[__builtin_ctz(lanes)];
-                const std::uint32_t id = word & ~kAlwaysTestBit;
-                const bool needs_box = (word & kAlwaysTestBit) != 0 || !ray.usable;
-                if (tested_.seen(id) || (needs_box && !boxes_.line_may_meet(line_, id))) {
-                    continue;
-                }
-                ++counters_.polygon_tests;
-                if (test(id)) {
-                    return true;
-                }
+            const unsigned lanes = ray.usable
+                                       ? static_cast<unsigned>(cell_packet_candidates(packet, ray))
+                                       : used_lanes(packet);
+            if (test_lanes(packet, lanes, test)) {
+                return true;
             }
         }
         return false;
     }
+
+#ifdef RT_VOXEL_AVX2
+    /// The same, the float test taking two packets at a time (cell_pair_test.h).
+    template <class Test>
+    __attribute__((target("avx2"))) bool test_packets_avx2(std::span<const CellPacket> packets,
+                                                           Test&& test) {
+        const FloatRay& ray = triangle_.get();
+        if (!ray.usable) {
+            return test_packets(packets, test);
+        }
+        const CellPacket* packet = packets.data();
+        const CellPacket* const end = packet + packets.size();
+        for (; end - packet >= 2; packet += 2) {
+            const unsigned lanes = cell_pair_candidates(packet, ray);
+            if (lanes != 0 && (test_lanes(packet[0], lanes & 0xfu, test) ||
+                               test_lanes(packet[1], lanes >> 4, test))) {
+                return true;
+            }
+        }
+        return packet != end &&
+               test_lanes(*packet, static_cast<unsigned>(cell_packet_candidates(*packet, ray)),
+                          test);
+    }
+#endif
 
     const Scene& scene_;
     const PolygonBoxes& boxes_;
@@ -107,6 +124,26 @@ protected:
     const RaySpace& space_;
     TraceCounters& counters_;
     TestedPolygons tested_;
+
+private:
+    // The polygons of the packet's `lanes` (those the float test kept, or every used one).
+    template <class Test>
+    [[gnu::always_inline]] bool test_lanes(const CellPacket& packet, unsigned lanes, Test& test) {
+        const bool usable = triangle_.get().usable;
+        for (; lanes != 0; lanes &= lanes - 1) {
+            const std::uint32_t word = packet.polygon[__builtin_ctz(lanes)];
+            const std::uint32_t id = word & ~kAlwaysTestBit;
+            const bool needs_box = (word & kAlwaysTestBit) != 0 || !usable;
+            if (tested_.seen(id) || (needs_box && !boxes_.line_may_meet(line_, id))) {
+                continue;
+            }
+            ++counters_.polygon_tests;
+            if (test(id)) {
+                return true;
+            }
+        }
+        return false;
+    }
 };
 
 /// The nearest hit over every polygon tested so far along one ray, in brute force's order
