@@ -1,68 +1,26 @@
 // The float test of two consecutive cell packets at once, with AVX2: eight fan triangles per
-// instruction instead of four. Lane for lane the operations of cell_packet_candidates (and so of
-// fan_candidates in bvh/packet_prefilter.h), in the same order, with no FMA (target "avx2" alone
-// does not allow contraction): every lane gets the same answer as the four-wide test.
+// instruction instead of four, by the BVH's pair test (bvh/packet_pair_prefilter.h), so every lane
+// gets the same answer as the four-wide cell_packet_candidates.
 #pragma once
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define RT_VOXEL_AVX2 1
+#include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/voxel/cell_packets.h"
-
-#include <immintrin.h>
 
 namespace rt {
 
 /// Whether this CPU runs the AVX2 forms.
 bool cpu_has_avx2_for_cells();
 
-__attribute__((target("avx2"))) inline __m256 load_cell_pair(const CellPacket* packet, int v,
-                                                             int axis) {
-    return _mm256_set_m128(_mm_loadu_ps(packet[1].corner[v][axis]),
-                           _mm_loadu_ps(packet[0].corner[v][axis]));
-}
-
 /// cell_packet_candidates of packet[0] (bits 0-3) and packet[1] (bits 4-7).
 __attribute__((target("avx2"))) inline unsigned cell_pair_candidates(const CellPacket* packet,
                                                                      const FloatRay& ray) {
-    const __m256 ox = _mm256_set1_ps(ray.origin[ray.kx]);
-    const __m256 oy = _mm256_set1_ps(ray.origin[ray.ky]);
-    const __m256 oz = _mm256_set1_ps(ray.origin[ray.kz]);
-    const __m256 sx = _mm256_set1_ps(ray.shear_x);
-    const __m256 sy = _mm256_set1_ps(ray.shear_y);
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    __m256 x[3];
-    __m256 y[3];
-    __m256 size = _mm256_setzero_ps();
-    for (int v = 0; v < 3; ++v) {
-        const __m256 az = _mm256_sub_ps(load_cell_pair(packet, v, ray.kz), oz);
-        x[v] = _mm256_sub_ps(_mm256_sub_ps(load_cell_pair(packet, v, ray.kx), ox),
-                             _mm256_mul_ps(sx, az));
-        y[v] = _mm256_sub_ps(_mm256_sub_ps(load_cell_pair(packet, v, ray.ky), oy),
-                             _mm256_mul_ps(sy, az));
-        size = _mm256_max_ps(
-            size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]), _mm256_andnot_ps(sign, y[v])));
-    }
-    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
-    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
-    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
-    const __m256 margin = _mm256_add_ps(
-        _mm256_mul_ps(size, _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
-                                          _mm256_mul_ps(size, _mm256_set1_ps(kRelativeSlack)))),
-        _mm256_set1_ps(ray.edge_margin_constant));
-    const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
-    const __m256 all_positive =
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
-                                    _mm256_cmp_ps(e1, negative_margin, _CMP_GE_OQ)),
-                      _mm256_cmp_ps(e2, negative_margin, _CMP_GE_OQ));
-    const __m256 all_negative = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
-        _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
     unsigned always = 0;
     for (unsigned lane = 0; lane < 8; ++lane) {
         always |= (packet[lane / 4].polygon[lane % 4] & kAlwaysTestBit) != 0 ? 1u << lane : 0u;
     }
-    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative))) |
-           always;
+    return bvh::fan_pair_candidates(packet[0].corner, packet[1].corner, ray) | always;
 }
 
 }  // namespace rt
