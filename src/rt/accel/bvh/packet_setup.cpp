@@ -3,9 +3,9 @@
 // checks it); a change there must be made here too.
 #include "rt/accel/bvh/packet_setup.h"
 
-#include <bit>
 #include <cmath>
-#include <limits>
+
+#include "rt/accel/float_prefilter/float_ray.h"
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #include <immintrin.h>
@@ -14,43 +14,20 @@
 
 namespace rt::bvh {
 
-namespace {
-
-float next_up(float f) {
-    if (!(f < HUGE_VALF)) {
-        return f;
-    }
-    if (f == 0.0f) {
-        return std::numeric_limits<float>::denorm_min();
-    }
-    const auto bits = std::bit_cast<std::uint32_t>(f);
-    return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
-}
-
-float next_down(float f) {
-    return -next_up(-f);
-}
-
-}  // namespace
-
 float lane_scaled_down(const PacketValues& v, int lane, double t) {
-    const double x = t * v.scale_t[lane];
-    const auto f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? next_down(f) : f;
+    return float_below(t * v.scale_t[lane]);
 }
 
 float lane_scaled_up(const PacketValues& v, int lane, double t) {
-    const double x = t * v.scale_t[lane];
-    const auto f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? next_up(f) : f;
+    return float_above(t * v.scale_t[lane]);
 }
 
 #ifdef RT_PACKET_SETUP_AVX2
 
 namespace {
 
-// FloatRay's next_up and next_down for four floats that are finite (the only ones that can
-// have been rounded the wrong way).
+// next_float_up and next_float_down (float_ray.h) for four floats that are finite (the only ones
+// that can have been rounded the wrong way).
 __attribute__((target("avx2"))) __m128 step_up(__m128 f, __m128 apply) {
     const __m128i bits = _mm_castps_si128(f);
     const __m128 zero = _mm_setzero_ps();
@@ -58,7 +35,7 @@ __attribute__((target("avx2"))) __m128 step_up(__m128 f, __m128 apply) {
     __m128i stepped = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(_mm_add_epi32(bits, one)),
                                                      _mm_castsi128_ps(_mm_sub_epi32(bits, one)),
                                                      _mm_cmplt_ps(f, zero)));
-    // next_up(+-0) is the smallest denormal.
+    // next_float_up(+-0) is the smallest denormal.
     stepped = _mm_castps_si128(
         _mm_blendv_ps(_mm_castsi128_ps(stepped), _mm_castsi128_ps(one), _mm_cmpeq_ps(f, zero)));
     return _mm_blendv_ps(f, _mm_castsi128_ps(stepped), apply);

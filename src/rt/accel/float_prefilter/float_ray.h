@@ -39,31 +39,44 @@ struct FloatRay {
 
     /// t as the float tests see it, rounded towards -inf or +inf (so comparisons stay safe).
     /// Inline: the traversal calls them after every leaf.
-    float scaled_down(double t) const {
-        const double x = t * scale_t;
-        const auto f = static_cast<float>(x);
-        return static_cast<double>(f) > x ? next_down(f) : f;
-    }
-    float scaled_up(double t) const {
-        const double x = t * scale_t;
-        const auto f = static_cast<float>(x);
-        return static_cast<double>(f) < x ? next_up(f) : f;
-    }
-
-private:
-    /// The next float towards +inf (towards -inf for next_down); infinities and NaN stay.
-    static float next_up(float f) {
-        if (!(f < HUGE_VALF)) {
-            return f;
-        }
-        if (f == 0.0f) {
-            return std::numeric_limits<float>::denorm_min();
-        }
-        const auto bits = std::bit_cast<std::uint32_t>(f);
-        return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
-    }
-    static float next_down(float f) { return -next_up(-f); }
+    float scaled_down(double t) const;
+    float scaled_up(double t) const;
 };
+
+/// The next float towards +inf (towards -inf for next_float_down); infinities and NaN stay.
+inline float next_float_up(float f) {
+    if (!(f < HUGE_VALF)) {
+        return f;
+    }
+    if (f == 0.0f) {
+        return std::numeric_limits<float>::denorm_min();
+    }
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
+}
+
+inline float next_float_down(float f) {
+    return -next_float_up(-f);
+}
+
+/// x as a float rounded towards -inf (float_below) or +inf (float_above).
+inline float float_below(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? next_float_down(f) : f;
+}
+
+inline float float_above(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? next_float_up(f) : f;
+}
+
+inline float FloatRay::scaled_down(double t) const {
+    return float_below(t * scale_t);
+}
+
+inline float FloatRay::scaled_up(double t) const {
+    return float_above(t * scale_t);
+}
 
 /// The relative slack of every float bound (2^-20, sixteen times float's rounding unit).
 constexpr float kRelativeSlack = 0x1p-20f;
