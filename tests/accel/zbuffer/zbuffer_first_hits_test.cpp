@@ -4,6 +4,7 @@
 #include "rt/accel/zbuffer/zbuffer_first_hits.h"
 
 #include <string>
+#include <vector>
 
 #include "rt/accel/brute_force.h"
 
@@ -28,7 +29,17 @@ public:
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override {
         return brute_.occluded(ray, t, counters);
     }
+    void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                            TraceCounters& counters) const override {
+        ++packet_calls;
+        Accelerator::closest_hit_packet(packet, hits, counters);
+    }
+    std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override {
+        ++packet_calls;
+        return Accelerator::occluded_packet(packet, counters);
+    }
     mutable int calls = 0;
+    mutable int packet_calls = 0;  ///< closest_hit_packet and occluded_packet (eye rays too)
 
 private:
     BruteForce brute_;
@@ -182,6 +193,55 @@ TEST(ZBufferFirstHits, OtherRaysGoToTheFallback) {
     EXPECT_EQ(fallback.calls, calls + 3);
     zbuffer->eye_ray_closest_hit(view.primary_ray(10, 10), {1e-9, kBeyondAnyScene}, counters);
     EXPECT_EQ(fallback.calls, calls + 3);
+}
+
+// Packets of rays that are not eye rays, and eye-ray packets while the buffer is off, go to the
+// fallback whole (for a packet walk such as the BVH's), each lane with brute force's answer.
+TEST(ZBufferFirstHits, PacketsGoToTheFallbackWhole) {
+    const Scene scene = load_twocubes();
+    const Camera view = scene.view.camera();
+    const CountingFallback fallback(scene);
+    ZBufferSettings off;
+    off.max_bytes = 1000;
+    const auto zbuffer = make_zbuffer_first_hits(scene, view, fallback);
+    const auto zbuffer_off = make_zbuffer_first_hits(scene, view, fallback, off);
+    ASSERT_FALSE(zbuffer_off->statistics().active);
+    const BruteForce brute(scene);
+    const std::vector<TestRay> rays = make_test_rays(scene, 6, 400);
+    TraceCounters counters;
+    int packets = 0;
+    for (std::size_t first = 0; first + kPacketSize <= rays.size(); first += kPacketSize) {
+        RayPacket packet;
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            packet.rays[lane] = rays[first + lane].ray;
+            packet.t[lane] = rays[first + lane].t;
+        }
+        packet.active = first % 16 == 0 ? 0xffu : 0x5au;
+        PacketHits hits;
+        PacketHits eye_hits;
+        zbuffer->closest_hit_packet(packet, hits, counters);
+        const std::uint32_t blocked = zbuffer->occluded_packet(packet, counters);
+        zbuffer_off->eye_ray_closest_hit_packet(packet, eye_hits, counters);
+        packets += 3;
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            if (((packet.active >> lane) & 1u) == 0) {
+                EXPECT_FALSE(hits[lane] || eye_hits[lane] || ((blocked >> lane) & 1u));
+                continue;
+            }
+            const std::optional<Hit> want =
+                brute.closest_hit(packet.rays[lane], packet.t[lane], counters);
+            for (const std::optional<Hit>& got : {hits[lane], eye_hits[lane]}) {
+                ASSERT_EQ(want.has_value(), got.has_value());
+                if (want) {
+                    EXPECT_EQ(want->t, got->t);
+                    EXPECT_EQ(want->polygon, got->polygon);
+                }
+            }
+            EXPECT_EQ(brute.occluded(packet.rays[lane], packet.t[lane], counters),
+                      ((blocked >> lane) & 1u) != 0);
+        }
+    }
+    EXPECT_EQ(fallback.packet_calls, packets);
 }
 
 TEST(ZBufferFirstHits, OverTheMemoryLimitEveryRayGoesToTheFallback) {

@@ -1,6 +1,7 @@
 #include "rt/accel/exit_culling/exit_culling.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 
@@ -11,6 +12,7 @@ namespace rt {
 namespace {
 
 constexpr std::size_t kViolationsKept = 10;
+constexpr std::uint32_t kAllLanes = (1u << kPacketSize) - 1u;
 
 ExitCullingTable timed_table(const Scene& scene, const ExitCullingSettings& settings,
                              double& seconds) {
@@ -39,8 +41,7 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
 
 std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
                                             TraceCounters& counters) const {
-    // The first test inline: most rays leave a surface and are passed on by it alone.
-    if (table_.starts_in_full_cell(ray.origin) || !table_.nothing_ahead(ray, t)) {
+    if (!culls(ray, t)) {
         return wrapped_->closest_hit(ray, t, counters);
     }
     ++counters.culled_exits;
@@ -54,7 +55,7 @@ std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
 }
 
 bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    if (table_.starts_in_full_cell(ray.origin) || !table_.nothing_ahead(ray, t)) {
+    if (!culls(ray, t)) {
         return wrapped_->occluded(ray, t, counters);
     }
     ++counters.culled_exits;
@@ -65,6 +66,63 @@ bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) 
         return truth;
     }
     return false;
+}
+
+std::uint32_t ExitCulling::culled_lanes(const RayPacket& packet) const {
+    std::uint32_t culled = 0;
+    for (std::uint32_t a = packet.active & kAllLanes; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        culled |= culls(packet.rays[lane], packet.t[lane]) ? 1u << lane : 0u;
+    }
+    return culled;
+}
+
+void ExitCulling::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                     TraceCounters& counters) const {
+    const std::uint32_t culled = culled_lanes(packet);
+    const std::uint32_t passed = packet.active & kAllLanes & ~culled;
+    if (culled == 0) {
+        wrapped_->closest_hit_packet(packet, hits, counters);
+        return;
+    }
+    if (passed != 0) {
+        RayPacket rest = packet;
+        rest.active = passed;
+        wrapped_->closest_hit_packet(rest, hits, counters);
+    }
+    counters.culled_exits += static_cast<std::uint64_t>(std::popcount(culled));
+    for (std::uint32_t a = culled; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        hits[lane] = std::nullopt;
+        if (check_culled_) {  // as closest_hit checks it, one ray at a time
+            TraceCounters ignored;
+            hits[lane] = wrapped_->closest_hit(packet.rays[lane], packet.t[lane], ignored);
+            record_if_violated(packet.rays[lane], hits[lane].has_value());
+        }
+    }
+}
+
+std::uint32_t ExitCulling::occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
+    const std::uint32_t culled = culled_lanes(packet);
+    const std::uint32_t passed = packet.active & kAllLanes & ~culled;
+    if (culled == 0) {
+        return wrapped_->occluded_packet(packet, counters);
+    }
+    std::uint32_t blocked = 0;
+    if (passed != 0) {
+        RayPacket rest = packet;
+        rest.active = passed;
+        blocked = wrapped_->occluded_packet(rest, counters);
+    }
+    counters.culled_exits += static_cast<std::uint64_t>(std::popcount(culled));
+    for (std::uint32_t a = culled; check_culled_ && a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        TraceCounters ignored;
+        const bool truth = wrapped_->occluded(packet.rays[lane], packet.t[lane], ignored);
+        record_if_violated(packet.rays[lane], truth);
+        blocked |= truth ? 1u << lane : 0u;
+    }
+    return blocked;
 }
 
 void ExitCulling::record_if_violated(const Ray& ray, bool violated) const {

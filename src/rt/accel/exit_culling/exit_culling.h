@@ -2,6 +2,8 @@
 // another. A ray the inclusion-cone table says can hit nothing ends at once, counted in
 // TraceCounters::culled_exits; every other ray goes to the wrapped accelerator. The table is
 // conservative, so the picture never changes; -de re-traces every culled ray to prove it.
+// A packet is tested lane by lane against the table, and its lanes that are not culled go on as
+// one packet, so that the wrapped method's packet walk (the BVH's) still serves them.
 #pragma once
 
 #include <atomic>
@@ -51,6 +53,13 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    /// Each lane as closest_hit answers it: the culled lanes here (counted as closest_hit counts
+    /// them), the others in one packet to the wrapped accelerator. Eye-ray packets come here too,
+    /// as eye rays do, through Accelerator::eye_ray_closest_hit_packet.
+    void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                            TraceCounters& counters) const override;
+    /// Each lane as occluded answers it, the lanes not culled in one packet.
+    std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
     /// The table plus the wrapped accelerator.
     std::size_t memory_bytes() const override;
 
@@ -58,6 +67,13 @@ public:
     ExitCullingStatistics statistics() const;
 
 private:
+    /// Whether the table says the ray can hit nothing. The first test inline: most rays leave a
+    /// surface and are passed on by it alone.
+    bool culls(const Ray& ray, Interval t) const {
+        return !table_.starts_in_full_cell(ray.origin) && table_.nothing_ahead(ray, t);
+    }
+    /// The active lanes of the packet that the table culls.
+    std::uint32_t culled_lanes(const RayPacket& packet) const;
     /// -de: whether the wrapped accelerator finds a hit on a culled ray; records it if so.
     void record_if_violated(const Ray& ray, bool violated) const;
 

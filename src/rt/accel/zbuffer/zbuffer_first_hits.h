@@ -48,14 +48,27 @@ public:
     /// ray sent here, and every ray while the buffer is off, goes to the fallback.
     std::optional<Hit> eye_ray_closest_hit(const Ray& ray, Interval t,
                                            TraceCounters& counters) const override;
-    /// Every lane as eye_ray_closest_hit.
+    /// Every lane as eye_ray_closest_hit; while the buffer is off, the whole packet goes to the
+    /// fallback as one, for its packet walk.
     void eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,
                                     TraceCounters& counters) const override {
+        if (!buffer_.active()) {
+            fallback_.eye_ray_closest_hit_packet(packet, hits, counters);
+            return;
+        }
         for (int lane = 0; lane < kPacketSize; ++lane) {
             if ((packet.active >> lane) & 1u) {
                 hits[lane] = eye_ray_closest_hit(packet.rays[lane], packet.t[lane], counters);
             }
         }
+    }
+    /// Packets of other rays go to the fallback whole, for its packet walk.
+    void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                            TraceCounters& counters) const override {
+        fallback_.closest_hit_packet(packet, hits, counters);
+    }
+    std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override {
+        return fallback_.occluded_packet(packet, counters);
     }
     /// The item buffer plus the fallback.
     std::size_t memory_bytes() const override;
