@@ -22,6 +22,32 @@ __attribute__((target("avx2"))) inline __m256 load_fan_pair(const FanCorners& fi
     return _mm256_set_m128(_mm_loadu_ps(second[v][axis]), _mm_loadu_ps(first[v][axis]));
 }
 
+/// The last step of every eight-wide fan-triangle pre-filter, from the corners in the ray's sheared
+/// 2D space (x, y) and their largest coordinate (size): the three edge functions, the margin
+/// (size * (linear + size * slack) + constant) and the all-positive or all-negative test, lane
+/// for lane fan_candidates' operations. Bit k: lane k's triangle may be hit.
+__attribute__((target("avx2"))) inline unsigned fan_edge_candidates(const __m256 (&x)[3],
+                                                                    const __m256 (&y)[3],
+                                                                    __m256 size, __m256 edge_linear,
+                                                                    __m256 edge_constant) {
+    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
+    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
+    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
+    const __m256 margin = _mm256_add_ps(
+        _mm256_mul_ps(
+            size, _mm256_add_ps(edge_linear, _mm256_mul_ps(size, _mm256_set1_ps(kRelativeSlack)))),
+        edge_constant);
+    const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
+    const __m256 all_positive =
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
+                                    _mm256_cmp_ps(e1, negative_margin, _CMP_GE_OQ)),
+                      _mm256_cmp_ps(e2, negative_margin, _CMP_GE_OQ));
+    const __m256 all_negative = _mm256_and_ps(
+        _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
+        _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
+    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative)));
+}
+
 /// Bits 0-3: fan_candidates(first, ray); bits 4-7: fan_candidates(second, ray).
 __attribute__((target("avx2"))) inline unsigned fan_pair_candidates(const FanCorners& first,
                                                                     const FanCorners& second,
@@ -44,22 +70,8 @@ __attribute__((target("avx2"))) inline unsigned fan_pair_candidates(const FanCor
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]), _mm256_andnot_ps(sign, y[v])));
     }
-    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
-    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
-    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
-    const __m256 margin = _mm256_add_ps(
-        _mm256_mul_ps(size, _mm256_add_ps(_mm256_set1_ps(ray.edge_margin_linear),
-                                          _mm256_mul_ps(size, _mm256_set1_ps(kRelativeSlack)))),
-        _mm256_set1_ps(ray.edge_margin_constant));
-    const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
-    const __m256 all_positive =
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
-                                    _mm256_cmp_ps(e1, negative_margin, _CMP_GE_OQ)),
-                      _mm256_cmp_ps(e2, negative_margin, _CMP_GE_OQ));
-    const __m256 all_negative = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
-        _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
-    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative)));
+    return fan_edge_candidates(x, y, size, _mm256_set1_ps(ray.edge_margin_linear),
+                               _mm256_set1_ps(ray.edge_margin_constant));
 }
 
 }  // namespace rt::bvh

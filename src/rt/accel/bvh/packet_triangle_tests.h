@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "rt/accel/bvh/bvh_layout.h"
+#include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/bvh/packet_setup.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 
@@ -41,22 +42,8 @@ __attribute__((target("avx2"))) inline std::uint32_t triangle_rays(const Triangl
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[c]), _mm256_andnot_ps(sign, y[c])));
     }
-    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
-    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
-    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
-    const __m256 margin = _mm256_add_ps(
-        _mm256_mul_ps(size, _mm256_add_ps(_mm256_load_ps(v.edge_linear),
-                                          _mm256_mul_ps(size, _mm256_set1_ps(rt::kRelativeSlack)))),
-        _mm256_load_ps(v.edge_constant));
-    const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
-    const __m256 all_positive =
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
-                                    _mm256_cmp_ps(e1, negative_margin, _CMP_GE_OQ)),
-                      _mm256_cmp_ps(e2, negative_margin, _CMP_GE_OQ));
-    const __m256 all_negative = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
-        _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
-    return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative)));
+    return fan_edge_candidates(x, y, size, _mm256_load_ps(v.edge_linear),
+                               _mm256_load_ps(v.edge_constant));
 }
 
 // triangle_rays for one lane in its own axes: triangle_candidate's operations
