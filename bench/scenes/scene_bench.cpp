@@ -51,7 +51,7 @@ int bench(const rt::bench::BenchArguments& arguments, const std::string& help) {
     settings.window = rt::film_window(scene.view.window, options.start_line);
     settings.threads = options.threads;
     start = std::chrono::steady_clock::now();
-    const rt::AcceleratorStack stack(scene, options.accel,
+    const rt::AcceleratorStack stack(scene, rt::run_accelerator_stack(options),
                                      {console.note, console.warning, console.trace});
     const rt::Accelerator* accel = &stack.top();
     run.build_seconds = seconds_since(start);

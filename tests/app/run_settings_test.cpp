@@ -326,13 +326,13 @@ TEST(PrepareSceneFromSwitches, ECreasesSmoothNormals) {
     EXPECT_LT(dot(blunt.corner_normals[face.first_corner], face.normal), 0.99);
 }
 
-// --- the intersection method (-od -ol -ss -op -on -of -tv --accel) ---------------------------
+// --- the intersection method (-od -ol -ss -op -on -of -tv --accel --threads) -----------------
 
 AccelSettings accel_for(const SceneHeader& header, std::vector<std::string> switches) {
     Scene scene = test::SceneBuilder().scene();
     scene.header = header;
     switches.insert(switches.begin(), "scene");
-    return method_for_scene(scene, parse_command_line(switches).accel.method);
+    return method_for_scene(scene, run_accelerator_stack(parse_command_line(switches)).method);
 }
 
 TEST(AccelSettingsFromSwitches, HeaderChoosesAndSwitchesOverride) {
@@ -370,6 +370,15 @@ TEST(AccelSettingsFromSwitches, EachOctreeSwitchSetsItsField) {
     EXPECT_TRUE(!on.octree.level_order && on.accept_near_hits && !on.no_fudge);
     const AccelSettings of = accel_for(octree, {"-of"});
     EXPECT_TRUE(!of.octree.level_order && !of.accept_near_hits && of.no_fudge);
+}
+
+TEST(AccelSettingsFromSwitches, ThreadsReachTheBuilds) {
+    SceneHeader octree;
+    octree.sptncde = 1;
+    octree.octr = 4;
+    EXPECT_EQ(accel_for(octree, {}).build_threads, 0U);
+    EXPECT_EQ(accel_for(octree, {"--threads", "3"}).build_threads, 3U);
+    EXPECT_EQ(accel_for(octree, {"--threads", "1", "--accel", "bvh"}).build_threads, 1U);
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ struct OctreeBuildSettings {
     std::optional<int> seed_size_power;  ///< -ss: 2^n nodes allocated at first
     bool level_order = false;            ///< -op, the "new fill-plane": a level at a time
     /// Threads for the default fill's subtrees (0: one a core); the tree is the same for any.
+    /// The Octree sets it from AccelSettings::build_threads.
     unsigned threads = 0;
     std::function<void(const std::string&)> fill_trace;  ///< -dof: the -op fill, level by level
 };
@@ -42,6 +43,9 @@ struct AccelSettings {
     bool accept_near_hits = false;              ///< -on
     bool no_fudge = false;                      ///< -of
     std::optional<int> terminate_after_voxels;  ///< -tv
+    /// --threads: the threads that build the method (and exit culling around it), 0 for one a
+    /// core. Every build gives the same structure for any number.
+    unsigned build_threads = 0;
 };
 
 /// The whole stack of accelerator_stack.h: the method, and the layers around it.

@@ -67,6 +67,7 @@ AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSet
     if (s.exit_culling) {
         ExitCullingSettings culling;
         culling.check_culled = s.check_exit_culling;
+        culling.build_threads = static_cast<int>(s.method.build_threads);
         auto wrapped = std::make_unique<ExitCulling>(scene, std::move(base_), culling);
         culling_ = wrapped.get();
         base_ = std::move(wrapped);

@@ -84,7 +84,7 @@ std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSet
         case AccelKind::Seads:
             return make_seads(scene, settings);
         case AccelKind::Bvh:
-            return make_bvh(scene);
+            return make_bvh(scene, BvhSettings{settings.build_threads});
         case AccelKind::Embree:
             break;
     }

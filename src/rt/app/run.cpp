@@ -459,7 +459,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
 
     warn_near_plane(scene, console);
     phase = Clock::now();
-    const AcceleratorStack stack(scene, options.accel,
+    const AcceleratorStack stack(scene, run_accelerator_stack(options),
                                  {console.note, console.warning, console.trace});
     const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);

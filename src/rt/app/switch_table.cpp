@@ -471,7 +471,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
     {.spelling = "--threads", .form = Integer, .topic = Program,
      .first = {"N", whole(0, 1024)},
      .apply = [](Options& o, A a) { o.threads = static_cast<int>(a.integer); },
-     .summary = "Render on N threads (0: every core)", .section = "new", .example = "--threads 2", .recorded = false},
+     .summary = "Build the intersection method and render on N threads (0: every core)", .section = "new", .example = "--threads 2", .recorded = false},
     {.spelling = "--tile", .form = Text, .topic = Program, .first = {"I/N", {}},
      .apply = [](Options& o, A a) { o.tile = parse_picture_part(a.text); },
      .summary = "Render only part I of N into a part file, for merge",

@@ -10,6 +10,13 @@ namespace rt {
 
 namespace {
 
+// The fill's settings, on the threads the program was given.
+OctreeBuildSettings fill_settings(const AccelSettings& settings) {
+    OctreeBuildSettings fill = settings.octree;
+    fill.threads = settings.build_threads;
+    return fill;
+}
+
 // The queries' visit, told each leaf's node number (its packets).
 template <class Visit>
 auto numbered(Visit& visit, const OctreeTree& tree) {
@@ -25,7 +32,7 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
     : scene_(scene),
       tree_(settings.octree.level_order
                 ? build_octree_level_order(scene, settings.octree, settings.no_fudge)
-                : build_octree_depth_first(scene, settings.octree, settings.no_fudge)),
+                : build_octree_depth_first(scene, fill_settings(settings), settings.no_fudge)),
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(tree_.world, false)) {
     // Under -on, no bounds: they skip the leaves where most near hits would be found, and -on
