@@ -6,9 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "rt/accel/embree/embree_functions.h"
 #include "rt/core/error.h"
-
-#include <embree3/rtcore.h>
 
 namespace rt {
 
@@ -33,7 +32,7 @@ bool embree_accepts(const RTCRay& r) {
 
 class EmbreeAccelerator : public Accelerator {
 public:
-    explicit EmbreeAccelerator(const Scene& scene);
+    EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene);
     ~EmbreeAccelerator() override;
     EmbreeAccelerator(const EmbreeAccelerator&) = delete;
     EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
@@ -59,33 +58,35 @@ private:
     void add_triangles(const Scene& scene);
     void throw_if_failed(const char* what) const;
 
+    const EmbreeFunctions& embree_;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<std::uint32_t> triangle_polygon_;  ///< Embree's primID -> our polygon id
     std::atomic<long long> allocated_{0};
 };
 
-EmbreeAccelerator::EmbreeAccelerator(const Scene& scene) {
-    device_ = rtcNewDevice(nullptr);
+EmbreeAccelerator::EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene)
+    : embree_(embree) {
+    device_ = embree_.rtcNewDevice(nullptr);
     if (device_ == nullptr) {
         throw Error("embree: cannot create a device");
     }
-    rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccelerator::track_memory, this);
-    scene_ = rtcNewScene(device_);
+    embree_.rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccelerator::track_memory, this);
+    scene_ = embree_.rtcNewScene(device_);
     add_triangles(scene);
-    rtcCommitScene(scene_);
+    embree_.rtcCommitScene(scene_);
     throw_if_failed("building the scene");
 }
 
 EmbreeAccelerator::~EmbreeAccelerator() {
     if (scene_ != nullptr) {
-        rtcReleaseScene(scene_);
+        embree_.rtcReleaseScene(scene_);
     }
-    rtcReleaseDevice(device_);
+    embree_.rtcReleaseDevice(device_);
 }
 
 void EmbreeAccelerator::throw_if_failed(const char* what) const {
-    const RTCError error = rtcGetDeviceError(device_);
+    const RTCError error = embree_.rtcGetDeviceError(device_);
     if (error != RTC_ERROR_NONE) {
         throw Error(std::string("embree: error ") + std::to_string(static_cast<int>(error)) + " " +
                     what);
@@ -106,22 +107,22 @@ void EmbreeAccelerator::add_triangles(const Scene& scene) {
     if (triangle_polygon_.empty()) {
         return;  // an empty scene: every ray misses
     }
-    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry geometry = embree_.rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                3 * sizeof(float), scene.positions.size()));
+        embree_.rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                        3 * sizeof(float), scene.positions.size()));
     for (std::size_t i = 0; i < scene.positions.size(); ++i) {
         for (int k = 0; k < 3; ++k) {
             vertices[3 * i + k] = static_cast<float>(scene.positions[i][k]);
         }
     }
     auto* triangles = static_cast<std::uint32_t*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(std::uint32_t), triangle_polygon_.size()));
+        embree_.rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                        3 * sizeof(std::uint32_t), triangle_polygon_.size()));
     std::copy(indices.begin(), indices.end(), triangles);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene_, geometry);
-    rtcReleaseGeometry(geometry);
+    embree_.rtcCommitGeometry(geometry);
+    embree_.rtcAttachGeometry(scene_, geometry);
+    embree_.rtcReleaseGeometry(geometry);
     throw_if_failed("adding the triangles");
 }
 
@@ -150,7 +151,7 @@ std::optional<Hit> EmbreeAccelerator::closest_hit(const Ray& ray, Interval t,
     if (!embree_accepts(hit.ray)) {
         return std::nullopt;
     }
-    rtcIntersect1(scene_, &context, &hit);
+    embree_.rtcIntersect1(scene_, &context, &hit);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
         return std::nullopt;
     }
@@ -185,7 +186,7 @@ void EmbreeAccelerator::closest_hit_packet(const RayPacket& packet, PacketHits& 
         rays.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
         rays.hit.primID[lane] = RTC_INVALID_GEOMETRY_ID;
     }
-    rtcIntersect8(valid, scene_, &context, &rays);
+    embree_.rtcIntersect8(valid, scene_, &context, &rays);
     for (int lane = 0; lane < kPacketSize; ++lane) {
         if (valid[lane] != 0 && rays.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
             hits[lane] = Hit{static_cast<double>(rays.ray.tfar[lane]),
@@ -201,14 +202,22 @@ bool EmbreeAccelerator::occluded(const Ray& ray, Interval t, TraceCounters& /*co
     if (!embree_accepts(r)) {
         return false;
     }
-    rtcOccluded1(scene_, &context, &r);
+    embree_.rtcOccluded1(scene_, &context, &r);
     return r.tfar < 0.0f && std::isinf(r.tfar);
 }
 
 }  // namespace
 
 std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene) {
-    return std::make_unique<EmbreeAccelerator>(scene);
+    const EmbreeFunctions* embree = nullptr;
+    try {
+        embree = &embree_functions();  // loaded only now, when the method is wanted
+    } catch (const Error& e) {
+        throw NotImplementedError(
+            std::string("the embree intersection method needs Embree 3, which cannot be loaded: ") +
+            e.what());
+    }
+    return std::make_unique<EmbreeAccelerator>(*embree, scene);
 }
 
 }  // namespace rt

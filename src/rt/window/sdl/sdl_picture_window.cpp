@@ -1,5 +1,6 @@
 // The window, with SDL2. One thread does everything SDL (initialisation, events, drawing), as
-// SDL's video functions want; the others only touch the PictureBoard and the atomic flags.
+// SDL's video functions want; the others only touch the PictureBoard and the atomic flags. SDL's
+// functions come from sdl_functions(), which loads libSDL2 only when a window is wanted.
 #include <atomic>
 #include <cstdlib>
 #include <future>
@@ -7,7 +8,9 @@
 #include <thread>
 #include <vector>
 
+#include "rt/core/error.h"
 #include "rt/window/picture_window.h"
+#include "rt/window/sdl/sdl_functions.h"
 
 #include <fmt/format.h>
 
@@ -56,8 +59,8 @@ bool is_close_key(const SDL_Keysym& key) {
 
 class SdlPictureWindow : public PictureWindow {
 public:
-    explicit SdlPictureWindow(const WindowRequest& request)
-        : request_(request), board_(request.width, request.height, request.mapping) {}
+    SdlPictureWindow(const SdlFunctions& sdl, const WindowRequest& request)
+        : sdl_(sdl), request_(request), board_(request.width, request.height, request.mapping) {}
 
     ~SdlPictureWindow() override {
         stopping_ = true;
@@ -100,39 +103,39 @@ private:
     void run(std::promise<std::string>& opened) {
         [[maybe_unused]] const ThirdPartyLeaksIgnored sdl_leaks;
         // rt keeps its own Ctrl-C handler (app/interrupt.cpp): SDL must not take SIGINT.
-        SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+        sdl_.SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
         // Only the display named; SDL would otherwise fall back to other drivers (offscreen,
         // KMS) that show nothing to anyone.
-        SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
-        if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-            opened.set_value(fmt::format("no window: {}", SDL_GetError()));
+        sdl_.SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
+        if (sdl_.SDL_Init(SDL_INIT_VIDEO) != 0) {
+            opened.set_value(fmt::format("no window: {}", sdl_.SDL_GetError()));
             return;
         }
-        window_ = SDL_CreateWindow(request_.title.c_str(), 0, 0, request_.width, request_.height,
-                                   SDL_WINDOW_SHOWN);
+        window_ = sdl_.SDL_CreateWindow(request_.title.c_str(), 0, 0, request_.width,
+                                        request_.height, SDL_WINDOW_SHOWN);
         if (window_ == nullptr) {
-            opened.set_value(fmt::format("no window: {}", SDL_GetError()));
-            SDL_Quit();
+            opened.set_value(fmt::format("no window: {}", sdl_.SDL_GetError()));
+            sdl_.SDL_Quit();
             return;
         }
         opened.set_value("");
         loop();
-        SDL_DestroyWindow(window_);
-        SDL_Quit();
+        sdl_.SDL_DestroyWindow(window_);
+        sdl_.SDL_Quit();
     }
 
     void loop() {
         std::vector<std::uint8_t> rgb;
         bool redraw = true;
-        std::uint32_t last_whole = SDL_GetTicks();
+        std::uint32_t last_whole = sdl_.SDL_GetTicks();
         while (!stopping_) {
             SDL_Event event;
-            if (SDL_WaitEventTimeout(&event, static_cast<int>(kFrameMilliseconds)) != 0) {
+            if (sdl_.SDL_WaitEventTimeout(&event, static_cast<int>(kFrameMilliseconds)) != 0) {
                 redraw = handle(event) || redraw;
                 continue;  // drain the queue before drawing
             }
             PictureBoard::Rows rows = board_.update(rgb);
-            const std::uint32_t now = SDL_GetTicks();
+            const std::uint32_t now = sdl_.SDL_GetTicks();
             if (redraw || now - last_whole >= kWholeRedrawMilliseconds) {
                 rows = {0, board_.height() - 1};
                 last_whole = now;
@@ -179,7 +182,7 @@ private:
 
     void close() {
         closed_ = true;
-        SDL_HideWindow(window_);
+        sdl_.SDL_HideWindow(window_);
         if (request_.on_close) {
             request_.on_close();
         }
@@ -210,24 +213,25 @@ private:
             title += fmt::format("  ({}, {}) = {:.4g} {:.4g} {:.4g}", cursor_x_, cursor_y_, v.r,
                                  v.g, v.b);
         }
-        SDL_SetWindowTitle(window_, title.c_str());
+        sdl_.SDL_SetWindowTitle(window_, title.c_str());
     }
 
     // Only the rows that changed go to the display: a render changes a few rows a frame.
     void draw(std::vector<std::uint8_t>& rgb, const PictureBoard::Rows& rows) {
-        SDL_Surface* screen = SDL_GetWindowSurface(window_);
+        SDL_Surface* screen = sdl_.SDL_GetWindowSurface(window_);
         SDL_Surface* picture =
-            SDL_CreateRGBSurfaceWithFormatFrom(rgb.data(), board_.width(), board_.height(), 24,
-                                               board_.width() * 3, SDL_PIXELFORMAT_RGB24);
+            sdl_.SDL_CreateRGBSurfaceWithFormatFrom(rgb.data(), board_.width(), board_.height(), 24,
+                                                    board_.width() * 3, SDL_PIXELFORMAT_RGB24);
         if (screen != nullptr && picture != nullptr) {
             SDL_Rect band{0, rows.top, board_.width(), rows.bottom - rows.top + 1};
             SDL_Rect to = band;
-            SDL_BlitSurface(picture, &band, screen, &to);
-            SDL_UpdateWindowSurfaceRects(window_, &band, 1);
+            sdl_.SDL_UpperBlit(picture, &band, screen, &to);  // what SDL_BlitSurface names
+            sdl_.SDL_UpdateWindowSurfaceRects(window_, &band, 1);
         }
-        SDL_FreeSurface(picture);
+        sdl_.SDL_FreeSurface(picture);
     }
 
+    const SdlFunctions& sdl_;
     WindowRequest request_;
     PictureBoard board_;
     std::thread thread_;
@@ -250,7 +254,14 @@ std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
         why_not = "no display (DISPLAY is not set)";
         return nullptr;
     }
-    auto window = std::make_unique<SdlPictureWindow>(request);
+    const SdlFunctions* sdl = nullptr;
+    try {
+        sdl = &sdl_functions();  // loaded only now, when a window is wanted on a display
+    } catch (const Error& e) {
+        why_not = fmt::format("no window: {}", e.what());  // as when SDL_Init fails
+        return nullptr;
+    }
+    auto window = std::make_unique<SdlPictureWindow>(*sdl, request);
     why_not = window->start();
     if (!why_not.empty()) {
         return nullptr;

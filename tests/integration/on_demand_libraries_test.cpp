@@ -1,0 +1,124 @@
+// SDL2 (the window) and Embree (--accel embree) are loaded only when a run wants them
+// (core/shared_library.h), so that they do not slow every start: no program names them in its
+// dynamic section, and when they cannot be loaded, rt and show say so as they do for a missing
+// display or a build without them. A file that is no library, put first on LD_LIBRARY_PATH under
+// the library's soname, stands for a missing library.
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "support/run_program.h"
+#include "support/temp_dir.h"
+#include <sys/wait.h>
+
+namespace rt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const std::string& word) {
+    std::string text = "'";
+    for (char c : word) {
+        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return text + "'";
+}
+
+// Runs the shell command in `folder`; its exit status, and its output and errors together.
+ProgramResult run_shell(const std::string& command, const fs::path& folder) {
+    const fs::path output = folder / "output.txt";
+    const std::string line = fmt::format("cd {} && {} </dev/null >{} 2>&1", quoted(folder.string()),
+                                         command, quoted(output.string()));
+    const int status = std::system(line.c_str());  // NOLINT(concurrency-mt-unsafe)
+    ProgramResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_text(output);
+    return result;
+}
+
+TEST(OnDemandLibraries, NoProgramNamesSdlOrEmbreeInItsDynamicSection) {
+    const TempDir dir;
+    if (run_shell("command -v readelf", dir.path()).exit_code != 0) {
+        GTEST_SKIP() << "readelf is missing (binutils)";
+    }
+    for (const char* program : {"rt", "show", "merge"}) {
+        SCOPED_TRACE(program);
+        const ProgramResult r =
+            run_shell("readelf -d " + quoted((bin_dir() / program).string()), dir.path());
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+        ASSERT_NE(r.out.find("(NEEDED)"), std::string::npos) << r.out;  // read as expected
+        for (const std::string& line : lines_of(r.out)) {
+            if (line.find("(NEEDED)") != std::string::npos) {
+                EXPECT_EQ(line.find("libSDL2"), std::string::npos) << line;
+                EXPECT_EQ(line.find("libembree3"), std::string::npos) << line;
+            }
+        }
+    }
+}
+
+// The programs run with a display named and `soname` replaced by a file that is no library.
+class WithoutTheLibrary : public ::testing::Test {
+protected:
+    ProgramResult run(const std::string& soname, const std::string& program,
+                      const std::vector<std::string>& args) {
+        const fs::path libraries = dir_.path() / "libraries";
+        fs::create_directory(libraries);
+        dir_.write("libraries/" + soname, "not a shared library\n");
+        // A display that is never reached: the library is loaded (and fails) before SDL looks.
+        std::string command = fmt::format(
+            "env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER LD_LIBRARY_PATH={} DISPLAY=:rt-none {}",
+            quoted(libraries.string()), quoted((bin_dir() / program).string()));
+        for (const std::string& a : args) {
+            command += ' ';
+            command += quoted(a);
+        }
+        return run_shell(command, dir_.path());
+    }
+    // twocubes4 into `output` only (-n: no .gro).
+    std::vector<std::string> render(const std::string& output) const {
+        const std::string scene = (source_dir() / "scenes" / "twocubes4").string();
+        return {scene, "-n", "--threads", "2", "--output", (dir_.path() / output).string()};
+    }
+
+    TempDir dir_;
+};
+
+TEST_F(WithoutTheLibrary, EmbreeIsOneErrorAndExitTwo) {
+    std::vector<std::string> args = render("a.ppm");
+    args.insert(args.end(), {"--accel", "embree", "--no-window"});
+    const ProgramResult r = run("libembree3.so.3", "rt", args);
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.out.find("rt: the embree intersection method needs Embree 3, which "),
+              std::string::npos)
+        << r.out;
+    // The build has Embree but cannot load it, or lacks it.
+    EXPECT_TRUE(r.out.find("cannot load libembree3.so.3: ") != std::string::npos ||
+                r.out.find("this build of rt lacks") != std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(dir_.path() / "a.ppm"));
+}
+
+TEST_F(WithoutTheLibrary, SdlRendersWithoutAWindowAndShowSummarises) {
+    const ProgramResult r = run("libSDL2-2.0.so.0", "rt", render("a.ppm"));
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    // The build has SDL2 but cannot load it, or lacks it.
+    EXPECT_TRUE(r.out.find("rt: no window: cannot load libSDL2-2.0.so.0: ") != std::string::npos ||
+                r.out.find("built without SDL2") != std::string::npos)
+        << r.out;
+    ASSERT_TRUE(fs::exists(dir_.path() / "a.ppm"));
+
+    const ProgramResult s = run("libSDL2-2.0.so.0", "show", {(dir_.path() / "a.ppm").string()});
+    EXPECT_EQ(s.exit_code, 0) << s.out;
+    EXPECT_NE(s.out.find("size      512 x 400 pixels"), std::string::npos) << s.out;
+    EXPECT_TRUE(s.out.find("show: no window: cannot load libSDL2-2.0.so.0: ") !=
+                    std::string::npos ||
+                s.out.find("built without SDL2") != std::string::npos)
+        << s.out;
+}
+
+}  // namespace
+}  // namespace rt::test
