@@ -89,7 +89,7 @@ std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSet
             break;
     }
 #if RT_WITH_EMBREE
-    return make_embree_accelerator(scene);
+    return make_embree_accelerator(scene, settings.build_threads);
 #else
     throw NotImplementedError(
         "the embree intersection method needs Embree 3, which this build of rt lacks");

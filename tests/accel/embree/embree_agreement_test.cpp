@@ -20,10 +20,11 @@
 namespace rt {
 namespace {
 
-std::unique_ptr<Accelerator> embree_or_skip(const Scene& scene) {
+std::unique_ptr<Accelerator> embree_or_skip(const Scene& scene, unsigned build_threads = 0) {
     try {
         AccelSettings settings;
         settings.kind = AccelKind::Embree;
+        settings.build_threads = build_threads;
         return make_accelerator(scene, settings);
     } catch (const NotImplementedError&) {
         return nullptr;
@@ -31,8 +32,9 @@ std::unique_ptr<Accelerator> embree_or_skip(const Scene& scene) {
 }
 
 // Rays from anywhere in and around the box, in any direction, over the default interval.
-void expect_mostly_same(const Scene& scene, int rays, std::uint64_t seed) {
-    const std::unique_ptr<Accelerator> embree = embree_or_skip(scene);
+void expect_mostly_same(const Scene& scene, int rays, std::uint64_t seed,
+                        unsigned build_threads = 0) {
+    const std::unique_ptr<Accelerator> embree = embree_or_skip(scene, build_threads);
     if (!embree) {
         GTEST_SKIP() << "this rt was built without Embree";
     }
@@ -65,6 +67,11 @@ TEST(EmbreeAgreement, Spheres) {
 
 TEST(EmbreeAgreement, Soup) {
     expect_mostly_same(test::make_triangle_soup(5000, 3), 5000, 3);
+}
+
+// --threads 1 reaches Embree's device as "threads=1": a configuration it must accept.
+TEST(EmbreeAgreement, BuiltOnOneThread) {
+    expect_mostly_same(test::make_triangle_soup(5000, 3), 5000, 3, 1);
 }
 
 TEST(EmbreeAgreement, TwoCubes) {

@@ -32,7 +32,7 @@ bool embree_accepts(const RTCRay& r) {
 
 class EmbreeAccelerator : public Accelerator {
 public:
-    EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene);
+    EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene, unsigned build_threads);
     ~EmbreeAccelerator() override;
     EmbreeAccelerator(const EmbreeAccelerator&) = delete;
     EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
@@ -65,9 +65,12 @@ private:
     std::atomic<long long> allocated_{0};
 };
 
-EmbreeAccelerator::EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene)
+EmbreeAccelerator::EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene,
+                                     unsigned build_threads)
     : embree_(embree) {
-    device_ = embree_.rtcNewDevice(nullptr);
+    // Embree's device configuration: "threads=N" caps the threads of its builds.
+    const std::string config = build_threads > 0 ? "threads=" + std::to_string(build_threads) : "";
+    device_ = embree_.rtcNewDevice(config.c_str());
     if (device_ == nullptr) {
         throw Error("embree: cannot create a device");
     }
@@ -208,7 +211,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, Interval t, TraceCounters& /*co
 
 }  // namespace
 
-std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene) {
+std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene, unsigned build_threads) {
     const EmbreeFunctions* embree = nullptr;
     try {
         embree = &embree_functions();  // loaded only now, when the method is wanted
@@ -217,7 +220,7 @@ std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene) {
             std::string("the embree intersection method needs Embree 3, which cannot be loaded: ") +
             e.what());
     }
-    return std::make_unique<EmbreeAccelerator>(*embree, scene);
+    return std::make_unique<EmbreeAccelerator>(*embree, scene, build_threads);
 }
 
 }  // namespace rt

@@ -12,8 +12,10 @@
 namespace rt {
 
 /// The scene must outlive the result. Polygons are cut into fans of triangles; a hit on any of
-/// them reports its polygon. Throws NotImplementedError if libembree3 cannot be loaded, Error if
-/// Embree cannot make a device.
-std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene);
+/// them reports its polygon. `build_threads` threads build it (0: Embree's default, every core).
+/// Throws NotImplementedError if libembree3 cannot be loaded, Error if Embree cannot make a
+/// device.
+std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene,
+                                                     unsigned build_threads = 0);
 
 }  // namespace rt
