@@ -1,8 +1,8 @@
-// SDL2 (the window) and Embree (--accel embree) are loaded only when a run wants them
-// (core/shared_library.h), so that they do not slow every start: no program names them in its
-// dynamic section, and when they cannot be loaded, rt and show say so as they do for a missing
-// display or a build without them. A file that is no library, put first on LD_LIBRARY_PATH under
-// the library's soname, stands for a missing library.
+// SDL2 (the window), Embree (--accel embree) and Assimp (model files) are loaded only when a run
+// wants them (core/shared_library.h), so that they do not slow every start: no program names them
+// in its dynamic section, and when they cannot be loaded, rt and show say so as they do for a
+// missing display, a build without them or a model they cannot read. A file that is no library,
+// put first on LD_LIBRARY_PATH under the library's soname, stands for a missing library.
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -40,7 +40,7 @@ ProgramResult run_shell(const std::string& command, const fs::path& folder) {
     return result;
 }
 
-TEST(OnDemandLibraries, NoProgramNamesSdlOrEmbreeInItsDynamicSection) {
+TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeOrAssimpInItsDynamicSection) {
     const TempDir dir;
     if (run_shell("command -v readelf", dir.path()).exit_code != 0) {
         GTEST_SKIP() << "readelf is missing (binutils)";
@@ -55,6 +55,7 @@ TEST(OnDemandLibraries, NoProgramNamesSdlOrEmbreeInItsDynamicSection) {
             if (line.find("(NEEDED)") != std::string::npos) {
                 EXPECT_EQ(line.find("libSDL2"), std::string::npos) << line;
                 EXPECT_EQ(line.find("libembree3"), std::string::npos) << line;
+                EXPECT_EQ(line.find("libassimp"), std::string::npos) << line;
             }
         }
     }
@@ -78,10 +79,11 @@ protected:
         }
         return run_shell(command, dir_.path());
     }
-    // twocubes4 into `output` only (-n: no .gro).
-    std::vector<std::string> render(const std::string& output) const {
-        const std::string scene = (source_dir() / "scenes" / "twocubes4").string();
-        return {scene, "-n", "--threads", "2", "--output", (dir_.path() / output).string()};
+    // twocubes4 (or `scene`) into `output` only (-n: no .gro).
+    std::vector<std::string> render(const std::string& output,
+                                    const std::string& scene = "twocubes4") const {
+        const std::string path = (source_dir() / "scenes" / scene).string();
+        return {path, "-n", "--threads", "2", "--output", (dir_.path() / output).string()};
     }
 
     TempDir dir_;
@@ -118,6 +120,27 @@ TEST_F(WithoutTheLibrary, SdlRendersWithoutAWindowAndShowSummarises) {
                     std::string::npos ||
                 s.out.find("built without SDL2") != std::string::npos)
         << s.out;
+}
+
+TEST_F(WithoutTheLibrary, AssimpIsOneErrorForAModelAndNoneWithout) {
+    std::vector<std::string> args = render("a.ppm", "bunny");
+    args.push_back("--no-window");
+    const ProgramResult r = run("libassimp.so.5", "rt", args);
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    // As for a model it cannot read: the model's name, then the library's.
+    EXPECT_NE(r.out.find("bunny.ply: cannot read the model: cannot load libassimp.so.5: "),
+              std::string::npos)
+        << r.out;
+    EXPECT_EQ(lines_of(r.out).size(), 1U) << r.out;
+    EXPECT_FALSE(fs::exists(dir_.path() / "a.ppm"));
+
+    // A scene without models never loads it.
+    std::vector<std::string> plain = render("b.ppm");
+    plain.push_back("--no-window");
+    const ProgramResult p = run("libassimp.so.5", "rt", plain);
+    EXPECT_EQ(p.exit_code, 0) << p.out;
+    EXPECT_EQ(p.out.find("libassimp"), std::string::npos) << p.out;
+    EXPECT_TRUE(fs::exists(dir_.path() / "b.ppm"));
 }
 
 }  // namespace

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <memory>
 #include <mutex>
 
+#include "rt/scene/read/assimp_functions.h"
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/model_header_check.h"
 #include "rt/scene/read/model_mesh_check.h"
@@ -14,9 +16,7 @@
 
 #include <fmt/format.h>
 
-#include <assimp/DefaultLogger.hpp>
-#include <assimp/Importer.hpp>
-#include <assimp/LogStream.hpp>
+#include <assimp/cimport.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
@@ -29,25 +29,31 @@ std::mutex assimp_mutex;
 
 // Keeps what Assimp logs (errors and warnings) instead of letting it print, so that its
 // complaints about a file it still reads (OFF: "Vertex index is out of range") become warnings.
+// The first stream attached creates Assimp's logger (no file, no other stream); the last one
+// detached deletes it.
 class AssimpLog {
 public:
-    AssimpLog() {
-        Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
-        // The logger owns and deletes the stream.
-        Assimp::DefaultLogger::get()->attachStream(new Stream(messages_),
-                                                   Assimp::Logger::Err | Assimp::Logger::Warn);
+    explicit AssimpLog(const AssimpFunctions& assimp) : assimp_(assimp) {
+        stream_.callback = &AssimpLog::write;
+        stream_.user = static_cast<char*>(static_cast<void*>(&messages_));
+        assimp_.aiEnableVerboseLogging(AI_FALSE);
+        assimp_.aiAttachLogStream(&stream_);
     }
-    ~AssimpLog() { Assimp::DefaultLogger::kill(); }
+    ~AssimpLog() { assimp_.aiDetachLogStream(&stream_); }
     AssimpLog(const AssimpLog&) = delete;
     AssimpLog& operator=(const AssimpLog&) = delete;
     const std::vector<std::string>& messages() const { return messages_; }
 
 private:
-    class Stream : public Assimp::LogStream {
-    public:
-        explicit Stream(std::vector<std::string>& out) : out_(out) {}
-        void write(const char* message) override {
+    // A stream of the C API hears every severity the logger lets through (info too): only the
+    // errors and warnings are kept, as their prefix says ("Error, T0: ", "Warn,  T0: ").
+    static void write(const char* message, char* user) noexcept {
+        auto& out = *static_cast<std::vector<std::string>*>(static_cast<void*>(user));
+        try {
             std::string m(message);
+            if (!m.starts_with("Error, ") && !m.starts_with("Warn, ")) {
+                return;
+            }
             // "Error, T0: OFF: Vertex index is out of range\n" -> "OFF: Vertex index ..."
             if (const std::size_t at = m.find(": "); at < 20) {  // npos is not
                 m.erase(0, at + 2);
@@ -55,16 +61,28 @@ private:
             while (!m.empty() && (m.back() == '\n' || m.back() == '\r')) {
                 m.pop_back();
             }
-            if (std::find(out_.begin(), out_.end(), m) == out_.end()) {
-                out_.push_back(m);
+            if (std::find(out.begin(), out.end(), m) == out.end()) {
+                out.push_back(m);
             }
+        } catch (...) {  // NOLINT(bugprone-empty-catch): nothing may leave for Assimp's C code
         }
+    }
 
-    private:
-        std::vector<std::string>& out_;
-    };
+    const AssimpFunctions& assimp_;
+    aiLogStream stream_{};
     std::vector<std::string> messages_;
 };
+
+// A scene from aiImportFileExWithProperties, released (with its importer) by aiReleaseImport.
+class SceneRelease {
+public:
+    explicit SceneRelease(const AssimpFunctions& assimp) : release_(assimp.aiReleaseImport) {}
+    void operator()(const aiScene* scene) const { release_(scene); }
+
+private:
+    decltype(AssimpFunctions::aiReleaseImport) release_;
+};
+using ImportedScene = std::unique_ptr<const aiScene, SceneRelease>;
 
 std::string lower_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
@@ -94,11 +112,14 @@ void check_header(const std::filesystem::path& path, const std::string& ext,
 // Attribute offsets per Assimp material: the file's own materials count from 0 in Assimp's order;
 // the stand-in Assimp adds for faces that name none takes offset 0 and no place (OBJ and STL call
 // it DefaultMaterial, PLY and OFF leave it unnamed, glTF appends it unnamed after the others).
-std::vector<long> material_offsets(const aiScene& scene, bool gltf, SurfaceMesh& mesh) {
+std::vector<long> material_offsets(const AssimpFunctions& assimp, const aiScene& scene, bool gltf,
+                                   SurfaceMesh& mesh) {
     std::vector<long> offsets(scene.mNumMaterials, 0);
     for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
         const aiMaterial& m = *scene.mMaterials[i];
-        const std::string name = m.GetName().C_Str();
+        aiString ai_name;  // empty when the material has none (what aiMaterial::GetName() does)
+        assimp.aiGetMaterialString(&m, AI_MATKEY_NAME, &ai_name);
+        const std::string name = ai_name.C_Str();
         const bool stand_in =
             gltf ? i + 1 == scene.mNumMaterials : name.empty() || name == AI_DEFAULT_MATERIAL_NAME;
         if (stand_in) {
@@ -106,7 +127,8 @@ std::vector<long> material_offsets(const aiScene& scene, bool gltf, SurfaceMesh&
         }
         offsets[i] = static_cast<long>(mesh.materials.size());
         MeshMaterial material{name, std::nullopt};
-        if (aiColor3D c; m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == aiReturn_SUCCESS) {
+        if (aiColor4D c;
+            assimp.aiGetMaterialColor(&m, AI_MATKEY_COLOR_DIFFUSE, &c) == aiReturn_SUCCESS) {
             material.diffuse = Rgb{c.r, c.g, c.b};
         }
         mesh.materials.push_back(material);
@@ -123,9 +145,9 @@ NodeTransform::Matrix3x4 rows_of(const aiMatrix4x4& m) {
 // (glTF places meshes by nodes; OBJ, PLY, STL and OFF have one identity node).
 class ModelFlattener {
 public:
-    ModelFlattener(const aiScene& scene, std::string name, bool gltf)
+    ModelFlattener(const AssimpFunctions& assimp, const aiScene& scene, std::string name, bool gltf)
         : scene_(scene), name_(std::move(name)) {
-        offsets_ = material_offsets(scene, gltf, mesh_);
+        offsets_ = material_offsets(assimp, scene, gltf, mesh_);
     }
 
     SurfaceMesh flatten() {
@@ -223,15 +245,17 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
     }
 }
 
-const aiScene* import_model(Assimp::Importer& importer, const std::filesystem::path& path,
-                            const std::string& name) {
+ImportedScene import_model(const AssimpFunctions& assimp, const std::filesystem::path& path,
+                           const std::string& name) {
     try {
         // No post-processing: no triangulation (n-gons keep their normal interpolation), and
         // joining and node transforms are done here (Assimp's joining keeps vertices apart that
-        // differ in normal, and reads out of bounds on an index out of range).
-        const aiScene* scene = importer.ReadFile(path.string(), 0);
+        // differ in normal, and reads out of bounds on an index out of range). No properties.
+        ImportedScene scene(
+            assimp.aiImportFileExWithProperties(path.string().c_str(), 0, nullptr, nullptr),
+            SceneRelease(assimp));
         if (scene == nullptr) {
-            std::string why = importer.GetErrorString();
+            std::string why = assimp.aiGetErrorString();
             while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())) != 0) {
                 why.pop_back();
             }
@@ -243,6 +267,16 @@ const aiScene* import_model(Assimp::Importer& importer, const std::filesystem::p
     }
 }
 
+// Assimp's functions, loaded the first time a model is read; a library that cannot be loaded is
+// the model's error.
+const AssimpFunctions& assimp_for(const std::string& name) {
+    try {
+        return assimp_functions();
+    } catch (const Error& e) {
+        throw InputError({name, 0, 0}, fmt::format("cannot read the model: {}", e.what()));
+    }
+}
+
 }  // namespace
 
 SurfaceMesh read_model_file(const std::filesystem::path& path, const std::string& written,
@@ -250,9 +284,9 @@ SurfaceMesh read_model_file(const std::filesystem::path& path, const std::string
     check_named_file(path, "optical surface file", written, named_at);
     const std::string name = path.string();
     const std::string ext = lower_extension(path);
+    const AssimpFunctions& assimp = assimp_for(name);
     const std::lock_guard<std::mutex> lock(assimp_mutex);
-    Assimp::Importer importer;
-    if (ext.empty() || !importer.IsExtensionSupported(ext)) {
+    if (ext.empty() || assimp.aiIsExtensionSupported(ext.c_str()) == AI_FALSE) {
         throw InputError(
             named_at,
             fmt::format("optical surface file '{}' has filetype 3 (a model file), "
@@ -263,12 +297,13 @@ SurfaceMesh read_model_file(const std::filesystem::path& path, const std::string
     check_header(path, ext, name);
     SurfaceMesh mesh;
     {
-        const AssimpLog log;
-        const aiScene* scene = import_model(importer, path, name);
+        ImportedScene scene(nullptr, SceneRelease(assimp));  // released after the log is gone
+        const AssimpLog log(assimp);
+        scene = import_model(assimp, path, name);
         if (scene->mRootNode == nullptr) {
             throw InputError({name, 0, 0}, "the model has no node tree");
         }
-        ModelFlattener flattener(*scene, name, ext == ".gltf" || ext == ".glb");
+        ModelFlattener flattener(assimp, *scene, name, ext == ".gltf" || ext == ".glb");
         mesh = flattener.flatten();
         for (const std::string& m : log.messages()) {
             diagnostics.warn(fmt::format("{}: {}", name, m));
