@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "rt/accel/exit_culling/exit_culling_table.h"
-#include "rt/accel/exit_culling/parallel_parts.h"
+#include "rt/accel/parallel_parts.h"
 
 #include <gtest/gtest.h>
 
@@ -89,9 +89,9 @@ TEST(ExitCullingBuild, PartsCoverTheRangeOnce) {
 }
 
 TEST(ExitCullingBuild, SmallScenesBuildOnTheCallingThread) {
-    EXPECT_EQ(culling_build_threads(0, 71), 1);
-    EXPECT_GE(culling_build_threads(0, 1000000), 1);
-    EXPECT_EQ(culling_build_threads(3, 71), 3);
+    EXPECT_EQ(build_threads_for(0, 71), 1);
+    EXPECT_GE(build_threads_for(0, 1000000), 1);
+    EXPECT_EQ(build_threads_for(3, 71), 3);
 }
 
 }  // namespace

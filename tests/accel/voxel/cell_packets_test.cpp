@@ -5,6 +5,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <set>
 #include <vector>
@@ -15,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/meshes/generated_meshes.h"
 #include "support/scene_builder.h"
 
 namespace rt {
@@ -177,6 +179,48 @@ TEST(CellPackets, PairTestAgreesWithTheFourWideTestLaneForLane) {
     EXPECT_GT(kept, 2000) << "too few lanes kept for the test to mean much";
 }
 #endif
+
+// The cells are filled in parts, one thread a part: the packets, their bounds and the scale must
+// not depend on the cut.
+TEST(CellPackets, SameForAnyNumberOfThreads) {
+    const Scene scene = test::make_triangle_soup(3000, 9);
+    // 500 cells of uneven sizes (some empty), polygons shared between cells, bounds in front.
+    std::vector<std::vector<std::uint32_t>> slots(500);
+    std::mt19937 random(4);
+    for (std::size_t c = 0; c < slots.size(); ++c) {
+        if (c % 7 == 3) {
+            continue;
+        }
+        for (int k = 0; k < 6; ++k) {
+            slots[c].push_back(std::bit_cast<std::uint32_t>(static_cast<float>(c + k)));
+        }
+        const std::size_t count = 1 + random() % 23;
+        for (std::size_t k = 0; k < count; ++k) {
+            slots[c].push_back(static_cast<std::uint32_t>(random() % scene.polygons.size()));
+        }
+    }
+    const auto ids_of = [&](std::size_t c) {
+        return slots[c].empty() ? std::span<const std::uint32_t>{}
+                                : std::span<const std::uint32_t>(slots[c]).subspan(6);
+    };
+    const CellPackets one(scene, slots.size(), kVoxelBoundsSlots, ids_of, 1);
+    for (const int threads : {2, 3, 7}) {
+        const CellPackets many(scene, slots.size(), kVoxelBoundsSlots, ids_of, threads);
+        EXPECT_EQ(many.scale(), one.scale()) << threads;
+        EXPECT_EQ(many.memory_bytes(), one.memory_bytes()) << threads;
+        for (std::size_t c = 0; c < slots.size(); ++c) {
+            const CellView a = one.cell(c);
+            const CellView b = many.cell(c);
+            ASSERT_EQ(a.packets.size(), b.packets.size()) << c;
+            ASSERT_EQ(a.bounds == nullptr, b.bounds == nullptr) << c;
+            if (a.bounds != nullptr) {
+                EXPECT_EQ(std::memcmp(a.bounds, b.bounds, 6 * sizeof(float)), 0) << c;
+            }
+            EXPECT_EQ(std::memcmp(a.packets.data(), b.packets.data(), a.packets.size_bytes()), 0)
+                << c << " on " << threads << " threads";
+        }
+    }
+}
 
 }  // namespace
 }  // namespace rt

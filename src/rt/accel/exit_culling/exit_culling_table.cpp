@@ -17,7 +17,7 @@
 #include <bit>
 #include <cmath>
 
-#include "rt/accel/exit_culling/parallel_parts.h"
+#include "rt/accel/parallel_parts.h"
 
 namespace rt {
 
@@ -38,9 +38,9 @@ ExitCullingTable::ExitCullingTable(const Scene& scene, int resolution, int bins_
 ExitCullingTable::ExitCullingTable(const CullingFrame& frame, const Scene& scene, int resolution,
                                    int bins_per_side, int threads)
     : cells_(frame, ReachSource{&scene, frame.rounding}, resolution,
-             culling_build_threads(threads, scene.polygons.size())),
+             build_threads_for(threads, scene.polygons.size())),
       bins_(bins_per_side) {
-    threads = culling_build_threads(threads, scene.polygons.size());
+    threads = build_threads_for(threads, scene.polygons.size());
     const int count = resolution * resolution * resolution;
     rows_.assign(static_cast<std::size_t>(count) * bins_.rows(), 0);
     // Each cell writes only its own rows.

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "rt/accel/exit_culling/parallel_parts.h"
+#include "rt/accel/parallel_parts.h"
 
 namespace rt {
 

@@ -40,10 +40,13 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
     if (!rules_.accept_near_hits) {
         add_leaf_bounds(scene, tree_);
     }
-    packets_ = CellPackets(scene, tree_.nodes.size(), tree_.bounds_slots, [&](std::size_t n) {
-        const OctreeNode& node = tree_.nodes[n];
-        return node.is_leaf() ? tree_.leaf_polygons(node) : std::span<const std::uint32_t>{};
-    });
+    packets_ = CellPackets(
+        scene, tree_.nodes.size(), tree_.bounds_slots,
+        [&](std::size_t n) {
+            const OctreeNode& node = tree_.nodes[n];
+            return node.is_leaf() ? tree_.leaf_polygons(node) : std::span<const std::uint32_t>{};
+        },
+        static_cast<int>(settings.build_threads));
 }
 
 // The walk's prefetch for the queries: the next leaf's packets.

@@ -27,8 +27,10 @@ Seads::Seads(const Scene& scene, const AccelSettings& settings)
       grid_(build_seads_grid(scene, settings.seads_resolution.value_or(0), settings.no_fudge)),
       rules_(WalkRules::from(settings)),
       boxes_(scene, voxel_fudge(grid_.world, false)),
-      packets_(scene, grid_.offsets.size() - 1, grid_.bounds_slots,
-               [&](std::size_t v) { return grid_.voxel(v); }) {}
+      packets_(
+          scene, grid_.offsets.size() - 1, grid_.bounds_slots,
+          [&](std::size_t v) { return grid_.voxel(v); }, static_cast<int>(settings.build_threads)) {
+}
 
 // -tv counts every fruitless voxel, so it needs the walk to visit each one.
 EmptySpace Seads::empty_space() const {

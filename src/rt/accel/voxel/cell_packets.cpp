@@ -3,88 +3,138 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
+#include "rt/accel/parallel_parts.h"
 #include "rt/accel/voxel/voxel_bounds.h"
+#include "rt/core/error.h"
+
+#include <fmt/format.h>
 
 namespace rt {
 
 namespace {
 
-// Appends one lane to a cell's packets, opening a packet when the last one is full.
+// A cell's fan triangles, four lanes to a packet: the lanes a polygon of n corners takes.
+std::uint64_t lanes_of(const Scene& scene, std::span<const std::uint32_t> ids) {
+    std::uint64_t lanes = 0;
+    for (const std::uint32_t id : ids) {
+        const std::uint32_t corners = scene.polygons[id].corner_count;
+        lanes += corners > 2 ? corners - 2 : 0;
+    }
+    return lanes;
+}
+
+// Writes one cell's packets at `out`, one lane at a time, each packet completed on the stack and
+// copied out whole; returns where the next cell's blocks go.
 class PacketWriter {
 public:
+    explicit PacketWriter(unsigned char* out) : out_(out) {}
+
     void add(const Vec3 (&corners)[3], std::uint32_t polygon, double& scale) {
         if (lane_ == 4) {
-            CellPacket empty{};
-            std::fill(empty.polygon, empty.polygon + 4, kUnusedLane);
-            std::fill(&empty.corner[0][0][0], &empty.corner[0][0][0] + 36,
+            flush();
+            std::fill(packet_.polygon, packet_.polygon + 4, kUnusedLane);
+            std::fill(&packet_.corner[0][0][0], &packet_.corner[0][0][0] + 36,
                       std::numeric_limits<float>::quiet_NaN());
-            packets_.push_back(empty);
             lane_ = 0;
         }
-        CellPacket& packet = packets_.back();
         double size = 0.0;
         for (int v = 0; v < 3; ++v) {
             for (int a = 0; a < 3; ++a) {
                 const auto f = static_cast<float>(corners[v][a]);
-                packet.corner[v][a][lane_] = f;
+                packet_.corner[v][a][lane_] = f;
                 size = std::max(size, std::fabs(static_cast<double>(f)));
             }
         }
         if (size < HUGE_VAL) {  // false for a NaN or an infinity
             scale = std::max(scale, size);
-            packet.polygon[lane_] = polygon;
+            packet_.polygon[lane_] = polygon;
         } else {
-            packet.polygon[lane_] = polygon | kAlwaysTestBit;
+            packet_.polygon[lane_] = polygon | kAlwaysTestBit;
         }
         ++lane_;
+        open_ = true;
     }
 
-    const std::vector<CellPacket>& packets() const { return packets_; }
-    void clear() {
-        packets_.clear();
-        lane_ = 4;
+    /// Copies out the packet being filled, if any.
+    void flush() {
+        if (open_) {
+            std::memcpy(out_, &packet_, sizeof(CellPacket));
+            out_ += sizeof(CellPacket);
+            open_ = false;
+        }
     }
 
 private:
-    std::vector<CellPacket> packets_;
+    unsigned char* out_;
+    CellPacket packet_{};
     int lane_ = 4;
+    bool open_ = false;
 };
 
 }  // namespace
 
 CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bounds_slots,
-                         const std::function<std::span<const std::uint32_t>(std::size_t)>& ids_of)
+                         const std::function<std::span<const std::uint32_t>(std::size_t)>& ids_of,
+                         int threads)
     : with_bounds_(bounds_slots != 0) {
-    first_.reserve(cells + 1);
-    PacketWriter writer;
+    // First each cell's size, so that the blocks are allocated once, at their size (growing them
+    // cell by cell copied a million-triangle mesh's packets many times over), checked before,
+    // and so that the cells can be filled on several threads, each into its own blocks.
+    first_.resize(cells + 1);
+    std::uint64_t blocks = 0;
     for (std::size_t c = 0; c < cells; ++c) {
-        first_.push_back(static_cast<std::uint32_t>(blocks_.size()));
+        first_[c] = static_cast<std::uint32_t>(blocks);
         const std::span<const std::uint32_t> ids = ids_of(c);
-        if (ids.empty()) {
-            continue;
+        if (!ids.empty()) {
+            blocks += (with_bounds_ ? kHeaderBlocks : 0) +
+                      kPacketBlocks * ((lanes_of(scene, ids) + 3) / 4);
         }
-        writer.clear();
-        for (const std::uint32_t id : ids) {
-            const Polygon& p = scene.polygons[id];
-            Vec3 fan[3];
-            fan[0] = scene.corner_position(p, 0);
-            for (std::uint32_t k = 1; k + 1 < p.corner_count; ++k) {
-                fan[1] = scene.corner_position(p, k);
-                fan[2] = scene.corner_position(p, k + 1);
-                writer.add(fan, id, scale_);
-            }
+        if (blocks > std::numeric_limits<std::uint32_t>::max()) {
+            throw Error(
+                fmt::format("the voxels' triangle packets would take more than 2^32 blocks "
+                            "of {} bytes: use fewer or larger voxels",
+                            sizeof(Block)));
         }
-        if (with_bounds_) {
-            const std::array<float, 6> box = bounds_before(ids);
-            blocks_.push_back({{box[0], box[1], box[2], box[3]}});
-            blocks_.push_back({{box[4], box[5], 0.0f, 0.0f}});
-        }
-        const auto* from = reinterpret_cast<const Block*>(writer.packets().data());
-        blocks_.insert(blocks_.end(), from, from + kPacketBlocks * writer.packets().size());
     }
-    first_.push_back(static_cast<std::uint32_t>(blocks_.size()));
+    first_[cells] = static_cast<std::uint32_t>(blocks);
+    blocks_.resize(blocks);
+
+    const int parts = build_threads_for(threads, scene.polygons.size());
+    std::vector<double> scales(static_cast<std::size_t>(parts), 0.0);
+    run_in_parts(cells, parts, [&](std::size_t begin, std::size_t end, int part) {
+        double& scale = scales[static_cast<std::size_t>(part)];
+        for (std::size_t c = begin; c < end; ++c) {
+            const std::span<const std::uint32_t> ids = ids_of(c);
+            if (ids.empty()) {
+                continue;
+            }
+            auto* out = reinterpret_cast<unsigned char*>(blocks_.data() + first_[c]);
+            if (with_bounds_) {
+                const std::array<float, 6> box = bounds_before(ids);
+                const Block header[kHeaderBlocks] = {{{box[0], box[1], box[2], box[3]}},
+                                                     {{box[4], box[5], 0.0f, 0.0f}}};
+                std::memcpy(out, header, sizeof(header));
+                out += sizeof(header);
+            }
+            PacketWriter writer(out);
+            for (const std::uint32_t id : ids) {
+                const Polygon& p = scene.polygons[id];
+                Vec3 fan[3];
+                fan[0] = scene.corner_position(p, 0);
+                for (std::uint32_t k = 1; k + 1 < p.corner_count; ++k) {
+                    fan[1] = scene.corner_position(p, k);
+                    fan[2] = scene.corner_position(p, k + 1);
+                    writer.add(fan, id, scale);
+                }
+            }
+            writer.flush();
+        }
+    });
+    // The largest over the parts: the same whatever the cut.
+    scale_ = *std::max_element(scales.begin(), scales.end());
 }
 
 }  // namespace rt

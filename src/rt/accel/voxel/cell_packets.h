@@ -67,9 +67,12 @@ public:
     CellPackets() = default;
     /// Packets for cells 0 .. cells - 1, whose polygon ids ids_of(cell) gives; with
     /// `bounds_slots` != 0, each non-empty cell's bounds (in front of its ids) are copied in
-    /// front of its packets, so the walk reads one run of memory per voxel.
+    /// front of its packets, so the walk reads one run of memory per voxel. `threads` fill the
+    /// cells (0: one a core for a large scene, parallel_parts.h); the packets are the same for
+    /// any number. Throws Error, before allocating them, if they would pass 2^32 blocks.
     CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bounds_slots,
-                const std::function<std::span<const std::uint32_t>(std::size_t)>& ids_of);
+                const std::function<std::span<const std::uint32_t>(std::size_t)>& ids_of,
+                int threads = 0);
 
     CellView cell(std::size_t c) const {
         const Block* begin = blocks_.data() + first_[c];

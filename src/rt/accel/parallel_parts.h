@@ -1,7 +1,7 @@
-// The exit-culling build's one way of using several cores: a range cut into contiguous parts, one
-// thread a part. Every pass that uses it writes either its own slots or its own copy that the
-// caller merges by an exact, order-free operation (box union, bitwise or), so the table is the
-// same bit for bit for any number of threads.
+// The builds' one way of using several cores (exit culling, the voxel methods' packets): a range
+// cut into contiguous parts, one thread a part. Every pass that uses it writes either its own
+// slots or its own copy that the caller merges by an exact, order-free operation (box union,
+// bitwise or, maximum), so what it builds is the same bit for bit for any number of threads.
 #pragma once
 
 #include <algorithm>
@@ -11,16 +11,16 @@
 
 namespace rt {
 
-/// Below this many polygons the build runs on the calling thread: starting threads would cost
-/// more than the whole table (twocubes builds in about 2 ms).
-inline constexpr std::size_t kPolygonsForThreadedCulling = 20000;
+/// Below this many polygons a build runs on the calling thread: starting threads would cost more
+/// than the whole build (twocubes' exit culling builds in about 2 ms).
+inline constexpr std::size_t kPolygonsForThreadedBuilds = 20000;
 
-/// The build's thread count: `asked` if positive, else one a core, and 1 for small scenes.
-inline int culling_build_threads(int asked, std::size_t polygon_count) {
+/// A build's thread count: `asked` if positive, else one a core, and 1 for small scenes.
+inline int build_threads_for(int asked, std::size_t polygon_count) {
     if (asked > 0) {
         return std::min(asked, 64);
     }
-    if (polygon_count < kPolygonsForThreadedCulling) {
+    if (polygon_count < kPolygonsForThreadedBuilds) {
         return 1;
     }
     return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
