@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <dlfcn.h>
+
 namespace rt {
 namespace {
 
@@ -44,6 +46,20 @@ TEST(SharedLibrary, AMissingSymbolIsNamedWithItsLibraryInTheError) {
     EXPECT_NE(message.find("cannot find rt_no_such_function in libm.so.6: "), std::string::npos)
         << message;
     EXPECT_NE(message.find("undefined symbol"), std::string::npos) << message;  // dlerror()'s
+}
+
+// A library opened with SymbolScope::Global lends its symbols to whatever is loaded after it (as
+// OpenMPI's components need of libmpi); one opened Local does not. libcrypt is in every Debian
+// and linked by none of rt's tests.
+TEST(SharedLibrary, OnlyAGlobalLibraryLendsItsSymbolsToOthers) {
+    if (dlsym(RTLD_DEFAULT, "crypt") != nullptr) {
+        GTEST_SKIP() << "libcrypt is loaded already";
+    }
+    const SharedLibrary local("libcrypt.so.1", SymbolScope::Local);
+    EXPECT_NE(local.symbol("crypt"), nullptr);
+    EXPECT_EQ(dlsym(RTLD_DEFAULT, "crypt"), nullptr);
+    const SharedLibrary global("libcrypt.so.1", SymbolScope::Global);
+    EXPECT_EQ(dlsym(RTLD_DEFAULT, "crypt"), global.symbol("crypt"));
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
-// SDL2 (the window), Embree (--accel embree) and Assimp (model files) are loaded only when a run
-// wants them (core/shared_library.h), so that they do not slow every start: no program names them
-// in its dynamic section, and when they cannot be loaded, rt and show say so as they do for a
-// missing display, a build without them or a model they cannot read. A file that is no library,
-// put first on LD_LIBRARY_PATH under the library's soname, stands for a missing library.
+// SDL2 (the window), Embree (--accel embree), Assimp (model files) and MPI (under mpirun) are
+// loaded only when a run wants them (core/shared_library.h), so that they do not slow every start:
+// no program names them in its dynamic section, and when they cannot be loaded, rt and show say so
+// as they do for a missing display, a build without them or a model they cannot read (and rt
+// under mpirun stops with one error). A file that is no library, put first on LD_LIBRARY_PATH
+// under the library's soname, stands for a missing library.
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -40,7 +41,7 @@ ProgramResult run_shell(const std::string& command, const fs::path& folder) {
     return result;
 }
 
-TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeOrAssimpInItsDynamicSection) {
+TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeAssimpOrMpiInItsDynamicSection) {
     const TempDir dir;
     if (run_shell("command -v readelf", dir.path()).exit_code != 0) {
         GTEST_SKIP() << "readelf is missing (binutils)";
@@ -56,6 +57,7 @@ TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeOrAssimpInItsDynamicSection) {
                 EXPECT_EQ(line.find("libSDL2"), std::string::npos) << line;
                 EXPECT_EQ(line.find("libembree3"), std::string::npos) << line;
                 EXPECT_EQ(line.find("libassimp"), std::string::npos) << line;
+                EXPECT_EQ(line.find("libmpi"), std::string::npos) << line;
             }
         }
     }
@@ -64,15 +66,16 @@ TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeOrAssimpInItsDynamicSection) {
 // The programs run with a display named and `soname` replaced by a file that is no library.
 class WithoutTheLibrary : public ::testing::Test {
 protected:
+    // `environment`: more NAME=VALUE words for env, before the program.
     ProgramResult run(const std::string& soname, const std::string& program,
-                      const std::vector<std::string>& args) {
+                      const std::vector<std::string>& args, const std::string& environment = "") {
         const fs::path libraries = dir_.path() / "libraries";
         fs::create_directory(libraries);
         dir_.write("libraries/" + soname, "not a shared library\n");
         // A display that is never reached: the library is loaded (and fails) before SDL looks.
         std::string command = fmt::format(
-            "env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER LD_LIBRARY_PATH={} DISPLAY=:rt-none {}",
-            quoted(libraries.string()), quoted((bin_dir() / program).string()));
+            "env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER LD_LIBRARY_PATH={} DISPLAY=:rt-none {} {}",
+            quoted(libraries.string()), environment, quoted((bin_dir() / program).string()));
         for (const std::string& a : args) {
             command += ' ';
             command += quoted(a);
@@ -141,6 +144,35 @@ TEST_F(WithoutTheLibrary, AssimpIsOneErrorForAModelAndNoneWithout) {
     EXPECT_EQ(p.exit_code, 0) << p.out;
     EXPECT_EQ(p.out.find("libassimp"), std::string::npos) << p.out;
     EXPECT_TRUE(fs::exists(dir_.path() / "b.ppm"));
+}
+
+// A run that no MPI launcher started never loads libmpi: were it loaded, the file in its place
+// would fail the run.
+TEST_F(WithoutTheLibrary, MpiIsNotLoadedOutsideMpirun) {
+    std::vector<std::string> args = render("a.ppm");
+    args.emplace_back("--no-window");
+    const ProgramResult r = run("libmpi.so.40", "rt", args);
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_EQ(r.out.find("libmpi"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir_.path() / "a.ppm"));
+}
+
+// Under a launcher (its variable set, as mpirun sets it for each process), libmpi is loaded
+// before anything else happens; when it cannot be, one line names it and the run fails (exit 5,
+// a cluster failure), writing nothing.
+TEST_F(WithoutTheLibrary, MpiUnderALauncherIsOneErrorAndExitFive) {
+#ifndef RT_WITH_MPI
+    GTEST_SKIP() << "this build of rt has no MPI";
+#endif
+    std::vector<std::string> args = render("a.ppm");
+    args.emplace_back("--no-window");
+    const ProgramResult r = run("libmpi.so.40", "rt", args, "OMPI_COMM_WORLD_SIZE=1");
+    EXPECT_EQ(r.exit_code, 5) << r.out;
+    const std::vector<std::string> lines = lines_of(r.out);
+    ASSERT_EQ(lines.size(), 1U) << r.out;
+    EXPECT_EQ(lines[0].rfind("rt: cannot load libmpi.so.40: ", 0), 0U) << r.out;
+    EXPECT_NE(lines[0].find("mpirun"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(dir_.path() / "a.ppm"));
 }
 
 }  // namespace

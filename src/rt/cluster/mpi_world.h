@@ -1,6 +1,7 @@
 // The thin layer over MPI that a cluster run needs: start and end MPI, send a message, poll for
 // one. Only the thread that made the MpiWorld calls it (MPI_THREAD_FUNNELED); the renderer's
-// worker threads never touch MPI. Every MPI error becomes a ClusterError.
+// worker threads never touch MPI. Every MPI error becomes a ClusterError. libmpi is not linked:
+// the first MpiWorld loads it (mpi_functions.h), so a run outside mpirun never does.
 #pragma once
 
 #include <cstddef>
@@ -10,12 +11,16 @@
 
 namespace rt::cluster {
 
+struct MpiFunctions;
+
 /// Whether an MPI launcher (mpirun, srun) started this process: only then does rt start MPI,
 /// so that a plain `rt SCENE` never pays for it.
 bool started_by_mpi_launcher();
 
 class MpiWorld {
 public:
+    /// Loads libmpi and starts MPI. Throws ClusterError when libmpi cannot be loaded (naming it)
+    /// or MPI cannot start.
     MpiWorld(int& argc, char**& argv);
     ~MpiWorld();
     MpiWorld(const MpiWorld&) = delete;
@@ -39,6 +44,10 @@ public:
     void abandon() { finalize_ = false; }
 
 private:
+    /// Throws a ClusterError naming `what` and MPI's words for `code` unless it is MPI_SUCCESS.
+    void check(int code, const char* what) const;
+
+    const MpiFunctions& mpi_;
     int rank_ = 0;
     int size_ = 1;
     bool finalize_ = true;

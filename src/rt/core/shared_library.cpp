@@ -18,8 +18,9 @@ std::string last_dl_error() {
 
 }  // namespace
 
-SharedLibrary::SharedLibrary(std::string soname) : soname_(std::move(soname)) {
-    handle_ = dlopen(soname_.c_str(), RTLD_NOW | RTLD_LOCAL);
+SharedLibrary::SharedLibrary(std::string soname, SymbolScope scope) : soname_(std::move(soname)) {
+    const int visibility = scope == SymbolScope::Global ? RTLD_GLOBAL : RTLD_LOCAL;
+    handle_ = dlopen(soname_.c_str(), RTLD_NOW | visibility);
     if (handle_ == nullptr) {
         throw Error("cannot load " + soname_ + ": " + last_dl_error());
     }
