@@ -1,5 +1,5 @@
-// SDL2 (the window), Embree (--accel embree), Assimp (model files) and MPI (under mpirun) are
-// loaded only when a run wants them (core/shared_library.h), so that they do not slow every start:
+// SDL2 (the window), Assimp (model files) and MPI (under mpirun) are loaded only when a run
+// wants them (core/shared_library.h), so that they do not slow every start:
 // no program names them in its dynamic section, and when they cannot be loaded, rt and show say so
 // as they do for a missing display, a build without them or a model they cannot read (and rt
 // under mpirun stops with one error). A file that is no library, put first on LD_LIBRARY_PATH
@@ -41,7 +41,7 @@ ProgramResult run_shell(const std::string& command, const fs::path& folder) {
     return result;
 }
 
-TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeAssimpOrMpiInItsDynamicSection) {
+TEST(OnDemandLibraries, NoProgramNamesSdlAssimpOrMpiInItsDynamicSection) {
     const TempDir dir;
     if (run_shell("command -v readelf", dir.path()).exit_code != 0) {
         GTEST_SKIP() << "readelf is missing (binutils)";
@@ -55,7 +55,6 @@ TEST(OnDemandLibraries, NoProgramNamesSdlEmbreeAssimpOrMpiInItsDynamicSection) {
         for (const std::string& line : lines_of(r.out)) {
             if (line.find("(NEEDED)") != std::string::npos) {
                 EXPECT_EQ(line.find("libSDL2"), std::string::npos) << line;
-                EXPECT_EQ(line.find("libembree3"), std::string::npos) << line;
                 EXPECT_EQ(line.find("libassimp"), std::string::npos) << line;
                 EXPECT_EQ(line.find("libmpi"), std::string::npos) << line;
             }
@@ -91,21 +90,6 @@ protected:
 
     TempDir dir_;
 };
-
-TEST_F(WithoutTheLibrary, EmbreeIsOneErrorAndExitTwo) {
-    std::vector<std::string> args = render("a.ppm");
-    args.insert(args.end(), {"--accel", "embree", "--no-window"});
-    const ProgramResult r = run("libembree3.so.3", "rt", args);
-    EXPECT_EQ(r.exit_code, 2) << r.out;
-    EXPECT_NE(r.out.find("rt: the embree intersection method needs Embree 3, which "),
-              std::string::npos)
-        << r.out;
-    // The build has Embree but cannot load it, or lacks it.
-    EXPECT_TRUE(r.out.find("cannot load libembree3.so.3: ") != std::string::npos ||
-                r.out.find("this build of rt lacks") != std::string::npos)
-        << r.out;
-    EXPECT_FALSE(fs::exists(dir_.path() / "a.ppm"));
-}
 
 TEST_F(WithoutTheLibrary, SdlRendersWithoutAWindowAndShowSummarises) {
     const ProgramResult r = run("libSDL2-2.0.so.0", "rt", render("a.ppm"));

@@ -14,8 +14,8 @@ namespace rt {
 AccelSettings method_for_scene(const Scene& scene, AccelSettings settings);
 
 /// Builds the method of method_for_scene(scene, asked). The scene must outlive the result.
-/// Throws NotImplementedError for a method not built in (an Embree backend without Embree) or
-/// whose library cannot be loaded (libembree3), and SettingError for settings it cannot honour.
+/// Throws NotImplementedError for a method not built in (an Embree backend without Embree) and
+/// SettingError for settings it cannot honour.
 std::unique_ptr<Accelerator> make_accelerator(const Scene& scene, const AccelSettings& asked);
 
 }  // namespace rt

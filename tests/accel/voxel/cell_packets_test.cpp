@@ -216,8 +216,11 @@ TEST(CellPackets, SameForAnyNumberOfThreads) {
             if (a.bounds != nullptr) {
                 EXPECT_EQ(std::memcmp(a.bounds, b.bounds, 6 * sizeof(float)), 0) << c;
             }
-            EXPECT_EQ(std::memcmp(a.packets.data(), b.packets.data(), a.packets.size_bytes()), 0)
-                << c << " on " << threads << " threads";
+            if (!a.packets.empty()) {  // an empty cell's span may hold null
+                EXPECT_EQ(std::memcmp(a.packets.data(), b.packets.data(), a.packets.size_bytes()),
+                          0)
+                    << c << " on " << threads << " threads";
+            }
         }
     }
 }

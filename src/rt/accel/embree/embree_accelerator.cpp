@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "rt/accel/embree/embree_functions.h"
 #include "rt/core/error.h"
+
+#include <embree3/rtcore.h>
 
 namespace rt {
 
@@ -32,7 +33,7 @@ bool embree_accepts(const RTCRay& r) {
 
 class EmbreeAccelerator : public Accelerator {
 public:
-    EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene, unsigned build_threads);
+    EmbreeAccelerator(const Scene& scene, unsigned build_threads);
     ~EmbreeAccelerator() override;
     EmbreeAccelerator(const EmbreeAccelerator&) = delete;
     EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
@@ -58,38 +59,35 @@ private:
     void add_triangles(const Scene& scene);
     void throw_if_failed(const char* what) const;
 
-    const EmbreeFunctions& embree_;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<std::uint32_t> triangle_polygon_;  ///< Embree's primID -> our polygon id
     std::atomic<long long> allocated_{0};
 };
 
-EmbreeAccelerator::EmbreeAccelerator(const EmbreeFunctions& embree, const Scene& scene,
-                                     unsigned build_threads)
-    : embree_(embree) {
+EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, unsigned build_threads) {
     // Embree's device configuration: "threads=N" caps the threads of its builds.
     const std::string config = build_threads > 0 ? "threads=" + std::to_string(build_threads) : "";
-    device_ = embree_.rtcNewDevice(config.c_str());
+    device_ = rtcNewDevice(config.c_str());
     if (device_ == nullptr) {
         throw Error("embree: cannot create a device");
     }
-    embree_.rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccelerator::track_memory, this);
-    scene_ = embree_.rtcNewScene(device_);
+    rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccelerator::track_memory, this);
+    scene_ = rtcNewScene(device_);
     add_triangles(scene);
-    embree_.rtcCommitScene(scene_);
+    rtcCommitScene(scene_);
     throw_if_failed("building the scene");
 }
 
 EmbreeAccelerator::~EmbreeAccelerator() {
     if (scene_ != nullptr) {
-        embree_.rtcReleaseScene(scene_);
+        rtcReleaseScene(scene_);
     }
-    embree_.rtcReleaseDevice(device_);
+    rtcReleaseDevice(device_);
 }
 
 void EmbreeAccelerator::throw_if_failed(const char* what) const {
-    const RTCError error = embree_.rtcGetDeviceError(device_);
+    const RTCError error = rtcGetDeviceError(device_);
     if (error != RTC_ERROR_NONE) {
         throw Error(std::string("embree: error ") + std::to_string(static_cast<int>(error)) + " " +
                     what);
@@ -110,22 +108,22 @@ void EmbreeAccelerator::add_triangles(const Scene& scene) {
     if (triangle_polygon_.empty()) {
         return;  // an empty scene: every ray misses
     }
-    RTCGeometry geometry = embree_.rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(
-        embree_.rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                        3 * sizeof(float), scene.positions.size()));
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), scene.positions.size()));
     for (std::size_t i = 0; i < scene.positions.size(); ++i) {
         for (int k = 0; k < 3; ++k) {
             vertices[3 * i + k] = static_cast<float>(scene.positions[i][k]);
         }
     }
     auto* triangles = static_cast<std::uint32_t*>(
-        embree_.rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                        3 * sizeof(std::uint32_t), triangle_polygon_.size()));
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), triangle_polygon_.size()));
     std::copy(indices.begin(), indices.end(), triangles);
-    embree_.rtcCommitGeometry(geometry);
-    embree_.rtcAttachGeometry(scene_, geometry);
-    embree_.rtcReleaseGeometry(geometry);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene_, geometry);
+    rtcReleaseGeometry(geometry);
     throw_if_failed("adding the triangles");
 }
 
@@ -154,7 +152,7 @@ std::optional<Hit> EmbreeAccelerator::closest_hit(const Ray& ray, Interval t,
     if (!embree_accepts(hit.ray)) {
         return std::nullopt;
     }
-    embree_.rtcIntersect1(scene_, &context, &hit);
+    rtcIntersect1(scene_, &context, &hit);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
         return std::nullopt;
     }
@@ -189,7 +187,7 @@ void EmbreeAccelerator::closest_hit_packet(const RayPacket& packet, PacketHits& 
         rays.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
         rays.hit.primID[lane] = RTC_INVALID_GEOMETRY_ID;
     }
-    embree_.rtcIntersect8(valid, scene_, &context, &rays);
+    rtcIntersect8(valid, scene_, &context, &rays);
     for (int lane = 0; lane < kPacketSize; ++lane) {
         if (valid[lane] != 0 && rays.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
             hits[lane] = Hit{static_cast<double>(rays.ray.tfar[lane]),
@@ -205,22 +203,14 @@ bool EmbreeAccelerator::occluded(const Ray& ray, Interval t, TraceCounters& /*co
     if (!embree_accepts(r)) {
         return false;
     }
-    embree_.rtcOccluded1(scene_, &context, &r);
+    rtcOccluded1(scene_, &context, &r);
     return r.tfar < 0.0f && std::isinf(r.tfar);
 }
 
 }  // namespace
 
 std::unique_ptr<Accelerator> make_embree_accelerator(const Scene& scene, unsigned build_threads) {
-    const EmbreeFunctions* embree = nullptr;
-    try {
-        embree = &embree_functions();  // loaded only now, when the method is wanted
-    } catch (const Error& e) {
-        throw NotImplementedError(
-            std::string("the embree intersection method needs Embree 3, which cannot be loaded: ") +
-            e.what());
-    }
-    return std::make_unique<EmbreeAccelerator>(*embree, scene, build_threads);
+    return std::make_unique<EmbreeAccelerator>(scene, build_threads);
 }
 
 }  // namespace rt
