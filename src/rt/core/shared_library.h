@@ -1,5 +1,5 @@
 // A shared library opened while the program runs (dlopen) rather than linked: the optional ones
-// (SDL2 for the window, Embree, Assimp for models, MPI under mpirun) cost every start of rt
+// (SDL2 for the window, Assimp for models, MPI under mpirun) cost every start of rt
 // milliseconds of loading and relocating, though most runs never call them.
 #pragma once
 
