@@ -17,21 +17,29 @@ PictureBoard::PictureBoard(int view_width, int view_height, DisplayMapping mappi
 
 void PictureBoard::show_film(const Film& film) {
     const PixelRect& w = film.window();
+    const int top = std::max(w.top, film.first_finished_row());
     const auto row_floats = static_cast<std::size_t>(w.width()) * 3;
-    for (int y = std::max(w.top, film.first_finished_row()); y <= w.bottom; ++y) {
+    // Under one lock, so that the window never draws a film half copied in (a wireframe whose
+    // lower half is still black).
+    const std::lock_guard lock(mutex_);
+    for (int y = top; y <= w.bottom; ++y) {
         const auto start = static_cast<std::size_t>(y - w.top) * row_floats;
-        show_row(w.left, y, std::span<const float>(film.data()).subspan(start, row_floats));
+        copy_row(w.left, y, std::span<const float>(film.data()).subspan(start, row_floats));
     }
 }
 
 void PictureBoard::show_row(int left, int y, std::span<const float> pixels) {
+    const std::lock_guard lock(mutex_);
+    copy_row(left, y, pixels);
+}
+
+void PictureBoard::copy_row(int left, int y, std::span<const float> pixels) {
     if (y < 0 || y >= height_ || left < 0 || left + static_cast<int>(pixels.size() / 3) > width_) {
         throw std::out_of_range("a row outside the window's picture");
     }
     const auto at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
                      static_cast<std::size_t>(left)) *
                     3;
-    const std::lock_guard lock(mutex_);
     std::copy(pixels.begin(), pixels.end(), linear_.begin() + static_cast<std::ptrdiff_t>(at));
     dirty_ = dirty_.top > dirty_.bottom ? Rows{y, y}
                                         : Rows{std::min(dirty_.top, y), std::max(dirty_.bottom, y)};

@@ -1,6 +1,6 @@
 // What a window shows: the picture's linear intensities over the whole view area, shared between
 // the threads that fill it (the renderer's rows, a picture read from a file) and the window's own
-// thread, which draws it at display rate. Writers hold the lock only to copy a row in.
+// thread, which draws it at display rate. Writers hold the lock only to copy rows in.
 #pragma once
 
 #include <cstdint>
@@ -42,6 +42,8 @@ public:
     Rows update(std::vector<std::uint8_t>& rgb);
 
 private:
+    void copy_row(int left, int y, std::span<const float> pixels);  // the lock is held
+
     int width_;
     int height_;
     mutable std::mutex mutex_;
