@@ -112,7 +112,7 @@ template <class CornerAt>
 void corner_depths(const RaySpace& space, std::uint32_t count, CornerAt corner_at, double& nearest,
                    double& farthest) {
     const Vec3& origin = space.ray().origin;
-    const Vec3& unit = space.unit_direction();
+    const Vec3 unit = space.unit_direction();
     const double length = space.direction_length();
     nearest = farthest = dot(corner_at(0) - origin, unit) / length;
     for (std::uint32_t k = 1; k < count; ++k) {
@@ -218,12 +218,16 @@ RaySpace::RaySpace(const Ray& ray) : ray_(ray) {
     shear_y_ = d[ky_] / d[kz_];
     // Scaled by the largest component first, so that the squares neither overflow (components
     // beyond ~1e154) nor underflow (below ~1e-154); unscaled, the grazing limit became infinite or
-    // zero and the corner depths 0 or infinite, losing every hit of such a ray.
-    const double largest = std::max({ax, ay, az});
-    const Vec3 scaled{d.x / largest, d.y / largest, d.z / largest};
-    const double scaled_length = length(scaled);
-    direction_length_ = largest * scaled_length;
-    unit_direction_ = scaled / scaled_length;
+    // zero and the corner depths 0 or infinite, losing every hit of such a ray. The largest
+    // component is |d[kz]|, so d / |d[kz]| is the shears and 1, times d[kz]'s sign: the same bits
+    // as three divisions (round to nearest is symmetric: x / -y == -(x / y)), for none.
+    const double largest = std::fabs(d[kz_]);
+    const double sign = d[kz_] < 0.0 ? -1.0 : 1.0;
+    scaled_direction_[kx_] = shear_x_ * sign;
+    scaled_direction_[ky_] = shear_y_ * sign;
+    scaled_direction_[kz_] = sign;
+    scaled_length_ = length(scaled_direction_);
+    direction_length_ = largest * scaled_length_;
     grazing_limit_ = kGrazing * direction_length_;
     valid_ = std::isfinite(direction_length_);  // a length beyond DBL_MAX measures no t
 }

@@ -32,7 +32,8 @@ public:
     /// The direction's length and the unit vector along it, computed without overflow or
     /// underflow for any finite nonzero direction (t is measured in units of that length).
     double direction_length() const { return direction_length_; }
-    const Vec3& unit_direction() const { return unit_direction_; }
+    /// Computed on each call: only a ray seen edge-on by some polygon needs it.
+    Vec3 unit_direction() const { return scaled_direction_ / scaled_length_; }
 
 private:
     Ray ray_;
@@ -43,7 +44,8 @@ private:
     double shear_y_ = 0.0;
     double grazing_limit_ = 0.0;
     double direction_length_ = 0.0;
-    Vec3 unit_direction_;
+    Vec3 scaled_direction_;  ///< the direction over its largest |component|
+    double scaled_length_ = 1.0;
     bool valid_ = false;
 };
 
