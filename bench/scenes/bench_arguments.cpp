@@ -12,6 +12,13 @@ void add_bench_options(CLI::App& app, BenchArguments& arguments) {
         ->type_name("N")
         ->transform(cli::whole_number_at_least(1));
     app.add_option("--csv", arguments.csv, "append one row of results to FILE")->type_name("FILE");
+    app.add_flag("--replay", arguments.replay,
+                 "also record one render's intersection queries (on one thread) and time them "
+                 "alone, as many times as --repeat, on the renders' threads");
+    app.add_option("--replay-accels", arguments.replay_accels,
+                   "replay them through these methods too (brute,octree,seads,bvh,embree), each "
+                   "in the stack rt's switches describe; implies --replay")
+        ->type_name("LIST");
 }
 
 }  // namespace rt::bench

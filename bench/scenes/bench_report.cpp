@@ -31,6 +31,25 @@ std::string describe(const BenchRun& run) {
                         c.polygon_tests, c.hits);
     text +=
         fmt::format("throughput   {:.3f} Mrays/s (at the median)\n", rays_per_second(run) / 1e6);
+    if (!run.replays.empty()) {
+        // The rays the render asked the method about (the rays above less those answered
+        // without it), per second of the whole render: the renderer's own work included.
+        const double asked = static_cast<double>(run.recorded_rays);
+        const double in_render = run.renders.median() > 0.0 ? asked / run.renders.median() : 0.0;
+        text += fmt::format(
+            "replay       {} rays asked of the method in one render: {:.3f} Mrays/s within it\n",
+            run.recorded_rays, in_render / 1e6);
+        for (const ReplayTimes& replay : run.replays) {
+            const double median = median_of(replay.seconds);
+            const double alone = median > 0.0 ? asked / median : 0.0;
+            text += fmt::format(
+                "  {:<10} {} replays on {} thread{}: median {:.4f} s, min {:.4f} s, {:.3f} "
+                "Mrays/s; the render keeps {:.0f} % of it ({} hits and blocked)\n",
+                replay.accelerator, replay.seconds.size(), replay.threads,
+                replay.threads == 1 ? "" : "s", median, minimum_of(replay.seconds), alone / 1e6,
+                alone > 0.0 ? 100.0 * in_render / alone : 0.0, replay.found);
+        }
+    }
     return text;
 }
 

@@ -3,8 +3,10 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "render_timing.h"
+#include "replay_timing.h"
 
 namespace rt::bench {
 
@@ -17,6 +19,9 @@ struct BenchRun {
     double load_seconds = 0.0;
     double build_seconds = 0.0;
     RenderTimes renders;
+    /// --replay: the rays of one recorded render, and each method's replays of them.
+    std::uint64_t recorded_rays = 0;
+    std::vector<ReplayTimes> replays;
 };
 
 /// A few human-readable lines: the setup, then median and minimum per render and rays per second.

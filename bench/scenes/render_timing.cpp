@@ -5,18 +5,26 @@
 
 namespace rt::bench {
 
-double RenderTimes::median() const {
+double median_of(std::vector<double> seconds) {
     if (seconds.empty()) {
         return 0.0;
     }
-    std::vector<double> sorted = seconds;
-    std::sort(sorted.begin(), sorted.end());
-    const std::size_t middle = sorted.size() / 2;
-    return sorted.size() % 2 == 1 ? sorted[middle] : 0.5 * (sorted[middle - 1] + sorted[middle]);
+    std::sort(seconds.begin(), seconds.end());
+    const std::size_t middle = seconds.size() / 2;
+    return seconds.size() % 2 == 1 ? seconds[middle]
+                                   : 0.5 * (seconds[middle - 1] + seconds[middle]);
+}
+
+double minimum_of(const std::vector<double>& seconds) {
+    return seconds.empty() ? 0.0 : *std::min_element(seconds.begin(), seconds.end());
+}
+
+double RenderTimes::median() const {
+    return median_of(seconds);
 }
 
 double RenderTimes::minimum() const {
-    return seconds.empty() ? 0.0 : *std::min_element(seconds.begin(), seconds.end());
+    return minimum_of(seconds);
 }
 
 RenderTimes time_renders(const Scene& scene, const Accelerator& accel,

@@ -19,6 +19,10 @@ struct RenderTimes {
     double minimum() const;
 };
 
+/// The median and the least of a run of timings; 0 for none.
+double median_of(std::vector<double> seconds);
+double minimum_of(const std::vector<double>& seconds);
+
 /// Renders `repeat` times with a silent observer; the films are dropped.
 RenderTimes time_renders(const Scene& scene, const Accelerator& accel,
                          const RenderSettings& settings, int repeat);

@@ -1,12 +1,17 @@
 // rt_scene_bench [--repeat N] [--csv FILE] SCENE [rt switches]: loads a scene, builds its
 // accelerator and renders it N times through the library, printing wall times and rays/s.
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
+#include "rt/accel/make_accelerator.h"
 #include "rt/app/run.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
@@ -17,11 +22,47 @@
 #include "bench_arguments.h"
 #include "bench_report.h"
 #include "command_line/command_line.h"
+#include "replay_timing.h"
 
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// --replay: one render's queries, recorded, then asked again of the rendered stack and of the
+// stacks of --replay-accels (rt's switches, with the method replaced), on the renders' threads.
+void replay(const rt::bench::BenchArguments& arguments, const rt::Options& options,
+            const rt::Scene& scene, const rt::RenderSettings& settings,
+            const rt::Accelerator& rendered, const rt::RunConsole& console,
+            rt::bench::BenchRun& run) {
+    std::vector<rt::AccelKind> kinds;
+    std::string_view names = arguments.replay_accels;
+    while (!names.empty()) {
+        const std::size_t comma = std::min(names.find(','), names.size());
+        const std::string name(names.substr(0, comma));
+        names.remove_prefix(std::min(comma + 1, names.size()));
+        const std::optional<rt::AccelKind> kind = rt::accel_kind_from_name(name);
+        if (!kind) {
+            throw rt::UsageError(
+                "--replay-accels: expected brute, octree, seads, bvh or "
+                "embree, found '" +
+                name + "'");
+        }
+        kinds.push_back(*kind);
+    }
+    const rt::RecordedQueries recorded = rt::bench::record_render(scene, rendered, settings);
+    run.recorded_rays = recorded.rays_asked;
+    const int threads = run.renders.threads;
+    run.replays.push_back(rt::bench::time_replays(recorded, rendered, threads, arguments.repeat));
+    for (const rt::AccelKind kind : kinds) {
+        rt::AcceleratorStackSettings stack_settings = rt::run_accelerator_stack(options);
+        stack_settings.method.kind = kind;
+        const rt::AcceleratorStack stack(scene, stack_settings,
+                                         {console.note, console.warning, console.trace});
+        run.replays.push_back(
+            rt::bench::time_replays(recorded, stack.top(), threads, arguments.repeat));
+    }
 }
 
 int bench(const rt::bench::BenchArguments& arguments, const std::string& help) {
@@ -61,6 +102,9 @@ int bench(const rt::bench::BenchArguments& arguments, const std::string& help) {
     run.width = settings.window.width();
     run.height = settings.window.height();
     run.renders = rt::bench::time_renders(scene, *accel, settings, arguments.repeat);
+    if (arguments.replay || !arguments.replay_accels.empty()) {
+        replay(arguments, options, scene, settings, *accel, console, run);
+    }
     std::cout << rt::bench::describe(run);
     if (arguments.csv) {
         rt::bench::append_csv_row(*arguments.csv, run);
