@@ -61,15 +61,19 @@ VoxelSearchParts Octree::search_parts() const {
 }
 
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
-    return voxel_closest_hit(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
-        walk_octree_inside(tree_, ray, inside, numbered(visit, tree_), prefetch_packets());
-    });
+    return voxel_closest_hit(search_parts(), ray, t, counters,
+                             [&](Interval inside, const Vec3& inverse, auto&& visit) {
+                                 walk_octree_inside(tree_, ray, inverse, inside,
+                                                    numbered(visit, tree_), prefetch_packets());
+                             });
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    return voxel_occluded(search_parts(), ray, t, counters, [&](Interval inside, auto&& visit) {
-        walk_octree_inside(tree_, ray, inside, numbered(visit, tree_), prefetch_packets());
-    });
+    return voxel_occluded(search_parts(), ray, t, counters,
+                          [&](Interval inside, const Vec3& inverse, auto&& visit) {
+                              walk_octree_inside(tree_, ray, inverse, inside,
+                                                 numbered(visit, tree_), prefetch_packets());
+                          });
 }
 
 std::string Octree::describe_walk(const Ray& ray, Interval t) const {

@@ -86,16 +86,16 @@ private:
 
 /// walk_octree for a ray already clipped to the world: `inside` is what clip_to_box gave for
 /// the interval (callers that clip first skip the rest of their setup for rays that miss).
-/// `prefetch(node)` is called with each next leaf as soon as it is found, before the current
-/// one is visited, to ask the cache for what its visit will read.
+/// `inverse[a]` is 1 / ray.direction[a] on each axis the ray moves along (what the caller's clip
+/// used). `prefetch(node)` is called with each next leaf as soon as it is found, before the
+/// current one is visited, to ask the cache for what its visit will read.
 template <class Visit, class Prefetch>
-void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit,
-                        Prefetch&& prefetch) {
+void walk_octree_inside(const OctreeTree& tree, const Ray& ray, const Vec3& inverse,
+                        Interval inside, Visit&& visit, Prefetch&& prefetch) {
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
     // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
     // far below the fudge, and a step costs less.
-    const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
     const Vec3& per_step = tree.per_step;
     auto lattice_cell = [&](int a, double at_t, std::int64_t low, std::int64_t high) {
         const double x = ray.origin[a] + at_t * ray.direction[a];
@@ -149,12 +149,13 @@ void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside,
     }
 }
 
-/// The same, asking the cache for each next leaf's polygon ids.
+/// The same, computing the reciprocals and asking the cache for each next leaf's polygon ids.
 template <class Visit>
 void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
-    walk_octree_inside(tree, ray, inside, std::forward<Visit>(visit), [&](const OctreeNode* node) {
-        __builtin_prefetch(tree.polygons.data() + node->first);
-    });
+    const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
+    walk_octree_inside(
+        tree, ray, inverse, inside, std::forward<Visit>(visit),
+        [&](const OctreeNode* node) { __builtin_prefetch(tree.polygons.data() + node->first); });
 }
 
 /// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest

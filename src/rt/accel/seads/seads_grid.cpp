@@ -181,6 +181,7 @@ SeadsGrid build_seads_grid(const Scene& scene, int side, bool no_fudge) {
     grid.side = side;
     grid.world = world_box(scene, false);
     grid.voxel_size = grid.world.extent() / static_cast<double>(side);
+    grid.per_voxel = {1.0 / grid.voxel_size.x, 1.0 / grid.voxel_size.y, 1.0 / grid.voxel_size.z};
     const double fudge = voxel_fudge(grid.world, no_fudge);
 
     // One pass collects (voxel, polygon) pairs in polygon order; a counting sort by voxel then

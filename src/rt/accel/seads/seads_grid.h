@@ -20,6 +20,7 @@ struct SeadsGrid {
     Box3 world;
     int side = 1;     ///< voxels along each axis
     Vec3 voxel_size;  ///< world extent / side, per axis
+    Vec3 per_voxel;   ///< 1 / voxel_size, for the walk (set with voxel_size)
     /// side^3 + 1: voxel v's entries are [offsets[v], offsets[v+1]), none for an empty voxel
     std::vector<std::uint32_t> offsets;
     /// Voxel after voxel, for each occupied one: its bounds (kVoxelBoundsSlots floats, as bits:

@@ -23,15 +23,16 @@ enum class EmptySpace { Leap, VisitEach };
 class SeadsCursor {
 public:
     /// `by_voxel`: the table indexed by voxel number whose entry prefetch_next asks for.
-    SeadsCursor(const SeadsGrid& grid, const Ray& ray, double t_start,
+    /// `inverse[a]`: 1 / ray.direction[a] on each axis the ray moves along.
+    SeadsCursor(const SeadsGrid& grid, const Ray& ray, const Vec3& inverse, double t_start,
                 const std::uint32_t* by_voxel)
         : grid_(grid),
           ray_(ray),
           side_(grid.side),
           offsets_(by_voxel),
           voxels_(grid.offsets.size() - 1),
-          inverse_{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z},
-          per_voxel_{1.0 / grid.voxel_size.x, 1.0 / grid.voxel_size.y, 1.0 / grid.voxel_size.z} {
+          inverse_(inverse),
+          per_voxel_(grid.per_voxel) {
         const std::ptrdiff_t side = grid.side;
         for (int a = 0; a < 3; ++a) {
             const double d = ray.direction[a];
@@ -153,12 +154,13 @@ inline constexpr std::size_t kNoSeadsVoxel = std::numeric_limits<std::size_t>::m
 
 /// The walk for a ray already clipped to the world (`inside` is what clip_to_box gave for the
 /// interval), calling visit(voxel, t_exit, cell): `voxel` the number of a voxel with polygons,
-/// kNoSeadsVoxel for an empty one or a leap. The walk itself reads only the clearance table;
-/// it asks the cache for `by_voxel`'s entry of each next voxel (the table the visit reads).
+/// kNoSeadsVoxel for an empty one or a leap. `inverse[a]` is 1 / ray.direction[a] on each axis
+/// the ray moves along. The walk itself reads only the clearance table; it asks the cache for
+/// `by_voxel`'s entry of each next voxel (the table the visit reads).
 template <class Visit>
-void walk_seads_voxels(const SeadsGrid& grid, const Ray& ray, Interval inside, Visit&& visit,
-                       EmptySpace empty, const std::uint32_t* by_voxel) {
-    SeadsCursor at(grid, ray, inside.min, by_voxel);
+void walk_seads_voxels(const SeadsGrid& grid, const Ray& ray, const Vec3& inverse, Interval inside,
+                       Visit&& visit, EmptySpace empty, const std::uint32_t* by_voxel) {
+    SeadsCursor at(grid, ray, inverse, inside.min, by_voxel);
     while (true) {
         const int clearance = grid.clearance[at.voxel()];
         if (clearance >= 2 && empty == EmptySpace::Leap) {
@@ -186,8 +188,9 @@ void walk_seads_voxels(const SeadsGrid& grid, const Ray& ray, Interval inside, V
 template <class Visit>
 void walk_seads_inside(const SeadsGrid& grid, const Ray& ray, Interval inside, Visit&& visit,
                        EmptySpace empty = EmptySpace::Leap) {
+    const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
     walk_seads_voxels(
-        grid, ray, inside,
+        grid, ray, inverse, inside,
         [&](std::size_t voxel, double t_exit, const int* cell) {
             return visit(
                 voxel == kNoSeadsVoxel ? std::span<const std::uint32_t>{} : grid.voxel(voxel),

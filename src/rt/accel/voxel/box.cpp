@@ -45,6 +45,17 @@ Box3 polygon_bounds(const Scene& scene, std::uint32_t polygon) {
 }
 
 bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& inside) {
+    // A product with the reciprocal rather than two divisions: an ulp or so apart, far below
+    // the world's margin. (A NaN from 0 * inf, for a denormal d, leaves the axis unclipped.)
+    Vec3 inverse;
+    for (int axis = 0; axis < 3; ++axis) {
+        inverse[axis] = ray.direction[axis] == 0.0 ? 0.0 : 1.0 / ray.direction[axis];
+    }
+    return clip_to_box(ray, inverse, box, within, inside);
+}
+
+bool clip_to_box(const Ray& ray, const Vec3& inverse, const Box3& box, Interval within,
+                 Interval& inside) {
     double near = within.min;
     double far = within.max;
     for (int axis = 0; axis < 3; ++axis) {
@@ -56,11 +67,8 @@ bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& ins
             }
             continue;
         }
-        // A product with the reciprocal rather than two divisions: an ulp or so apart, far below
-        // the world's margin. (A NaN from 0 * inf, for a denormal d, leaves the axis unclipped.)
-        const double inverse = 1.0 / d;
-        double t0 = (box.lo[axis] - o) * inverse;
-        double t1 = (box.hi[axis] - o) * inverse;
+        double t0 = (box.lo[axis] - o) * inverse[axis];
+        double t1 = (box.hi[axis] - o) * inverse[axis];
         if (t0 > t1) {
             std::swap(t0, t1);
         }

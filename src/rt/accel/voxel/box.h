@@ -27,5 +27,9 @@ Box3 polygon_bounds(const Scene& scene, std::uint32_t polygon);
 /// The part of the ray's t range inside the closed box, intersected with `within`; none if empty.
 /// A direction component of zero is handled exactly (no 0 * infinity).
 bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& inside);
+/// The same with the reciprocals already at hand: inverse[a] is 1 / ray.direction[a] wherever
+/// that is not zero (the walks and the line probe share them; the same values, the same answer).
+bool clip_to_box(const Ray& ray, const Vec3& inverse, const Box3& box, Interval within,
+                 Interval& inside);
 
 }  // namespace rt

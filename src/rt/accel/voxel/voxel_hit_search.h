@@ -63,11 +63,12 @@ inline bool voxel_may_hold_hit(const CellView& cell, const LineProbe& line) {
 class PolygonSieve {
 public:
     /// `scale`: at least the boxes' and the packets' scale (the float tests' error bounds).
+    /// `line`: the ray's line probe, which the caller keeps (it shares its reciprocals).
     PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, double scale, const RaySpace& space,
-                 TraceCounters& counters)
+                 const LineProbe& line, TraceCounters& counters)
         : scene_(scene),
           boxes_(boxes),
-          line_(space.ray()),
+          line_(line),
           triangle_(space.ray(), scale),
           space_(space),
           counters_(counters) {}
@@ -119,7 +120,7 @@ protected:
 
     const Scene& scene_;
     const PolygonBoxes& boxes_;
-    LineProbe line_;
+    const LineProbe& line_;
     TriangleProbe triangle_;
     const RaySpace& space_;
     TraceCounters& counters_;
@@ -151,8 +152,9 @@ private:
 class NearestHitSearch : public PolygonSieve {
 public:
     NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale,
-                     const RaySpace& space, Interval t, TraceCounters& counters)
-        : PolygonSieve(scene, boxes, scale, space, counters), nearest_(t) {}
+                     const RaySpace& space, const LineProbe& line, Interval t,
+                     TraceCounters& counters)
+        : PolygonSieve(scene, boxes, scale, space, line, counters), nearest_(t) {}
 
     void test(std::span<const CellPacket> packets);
     const std::optional<Hit>& nearest() const { return nearest_.best(); }
@@ -177,8 +179,8 @@ private:
 class AnyHitSearch : public PolygonSieve {
 public:
     AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const RaySpace& space,
-                 Interval t, TraceCounters& counters)
-        : PolygonSieve(scene, boxes, scale, space, counters), t_(t) {}
+                 const LineProbe& line, Interval t, TraceCounters& counters)
+        : PolygonSieve(scene, boxes, scale, space, line, counters), t_(t) {}
 
     /// True as soon as one of them is hit.
     bool test(std::span<const CellPacket> packets);

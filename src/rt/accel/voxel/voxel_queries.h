@@ -39,9 +39,11 @@ struct VoxelSearchParts {
     double float_scale() const { return std::max(boxes.scale(), packets.scale()); }
 };
 
-// `walk(inside, visit)` calls visit(cell, t_exit) for each voxel along the ray within `inside`
-// (the interval already clipped to the world), nearest first, until visit returns true: `cell`
-// the voxel's number in `packets`, or kNoCell for a voxel (or a run of them) known empty.
+// `walk(inside, inverse, visit)` calls visit(cell, t_exit) for each voxel along the ray within
+// `inside` (the interval already clipped to the world), nearest first, until visit returns true:
+// `cell` the voxel's number in `packets`, or kNoCell for a voxel (or a run of them) known empty.
+// `inverse` holds 1 / direction on each axis the ray moves along: the line probe's reciprocals,
+// computed once a ray for the clip, the walk and the probe's box tests.
 
 /// The nearest hit, as brute force finds it (docs/accelerators.md, "Near hits and the fudge").
 template <class Walk>
@@ -50,17 +52,19 @@ template <class Walk>
                                                                    TraceCounters& counters,
                                                                    Walk&& walk) {
     const double slack = rounding_slack(ray, parts.world, parts.rules);
+    const LineProbe line(ray);
     Interval inside;
-    if (!clip_to_box(ray, parts.world, walk_interval(t, slack), inside)) {
+    if (!clip_to_box(ray, line.inverse, parts.world, walk_interval(t, slack), inside)) {
         return std::nullopt;
     }
     const RaySpace space(ray);
     if (!space.valid()) {
         return std::nullopt;
     }
-    NearestHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, t, counters);
+    NearestHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, line, t,
+                            counters);
     NearHitRule rule(parts.rules, slack);
-    walk(inside, [&](std::size_t cell, double t_exit) {
+    walk(inside, line.inverse, [&](std::size_t cell, double t_exit) {
         if (cell != kNoCell) {
             if (const CellView view = parts.packets.cell(cell);
                 voxel_may_hold_hit(view, search.line())) {
@@ -77,8 +81,9 @@ template <class Walk>
 [[gnu::always_inline]] inline bool voxel_occluded(const VoxelSearchParts& parts, const Ray& ray,
                                                   Interval t, TraceCounters& counters,
                                                   Walk&& walk) {
+    const LineProbe line(ray);
     Interval inside;
-    if (!clip_to_box(ray, parts.world,
+    if (!clip_to_box(ray, line.inverse, parts.world,
                      walk_interval(t, rounding_slack(ray, parts.world, parts.rules)), inside)) {
         return false;
     }
@@ -86,9 +91,9 @@ template <class Walk>
     if (!space.valid()) {
         return false;
     }
-    AnyHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, t, counters);
+    AnyHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, line, t, counters);
     bool hit = false;
-    walk(inside, [&](std::size_t cell, double) {
+    walk(inside, line.inverse, [&](std::size_t cell, double) {
         ++counters.voxels_stepped;
         if (cell == kNoCell) {
             return false;
