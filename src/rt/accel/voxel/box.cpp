@@ -54,32 +54,4 @@ bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& ins
     return clip_to_box(ray, inverse, box, within, inside);
 }
 
-bool clip_to_box(const Ray& ray, const Vec3& inverse, const Box3& box, Interval within,
-                 Interval& inside) {
-    double near = within.min;
-    double far = within.max;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double o = ray.origin[axis];
-        const double d = ray.direction[axis];
-        if (d == 0.0) {
-            if (o < box.lo[axis] || o > box.hi[axis]) {
-                return false;
-            }
-            continue;
-        }
-        double t0 = (box.lo[axis] - o) * inverse[axis];
-        double t1 = (box.hi[axis] - o) * inverse[axis];
-        if (t0 > t1) {
-            std::swap(t0, t1);
-        }
-        near = std::max(near, t0);
-        far = std::min(far, t1);
-    }
-    if (!(near <= far)) {
-        return false;
-    }
-    inside = {near, far};
-    return true;
-}
-
 }  // namespace rt

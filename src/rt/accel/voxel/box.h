@@ -2,6 +2,9 @@
 // and where a ray enters and leaves one.
 #pragma once
 
+#include <algorithm>
+#include <utility>
+
 #include "rt/core/bounds.h"
 #include "rt/core/ray.h"
 #include "rt/core/vec3.h"
@@ -29,7 +32,34 @@ Box3 polygon_bounds(const Scene& scene, std::uint32_t polygon);
 bool clip_to_box(const Ray& ray, const Box3& box, Interval within, Interval& inside);
 /// The same with the reciprocals already at hand: inverse[a] is 1 / ray.direction[a] wherever
 /// that is not zero (the walks and the line probe share them; the same values, the same answer).
-bool clip_to_box(const Ray& ray, const Vec3& inverse, const Box3& box, Interval within,
-                 Interval& inside);
+/// Inline: called out of line, GCC passed the interval through the stack in a way that stalled
+/// on its own store (half of the call's samples).
+inline bool clip_to_box(const Ray& ray, const Vec3& inverse, const Box3& box, Interval within,
+                        Interval& inside) {
+    double near = within.min;
+    double far = within.max;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis];
+        const double d = ray.direction[axis];
+        if (d == 0.0) {
+            if (o < box.lo[axis] || o > box.hi[axis]) {
+                return false;
+            }
+            continue;
+        }
+        double t0 = (box.lo[axis] - o) * inverse[axis];
+        double t1 = (box.hi[axis] - o) * inverse[axis];
+        if (t0 > t1) {
+            std::swap(t0, t1);
+        }
+        near = std::max(near, t0);
+        far = std::min(far, t1);
+    }
+    if (!(near <= far)) {
+        return false;
+    }
+    inside = {near, far};
+    return true;
+}
 
 }  // namespace rt
