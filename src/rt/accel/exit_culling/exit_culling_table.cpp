@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "rt/accel/parallel_parts.h"
+#include "rt/accel/voxel/box.h"
 
 namespace rt {
 
@@ -154,32 +155,14 @@ void ExitCullingTable::fill_region(int cell) {
     }
 }
 
-// clip_to_box() from t = 0, with the reciprocals nothing_ahead() shares with bin_of(): the same
-// arithmetic, so the same entry point.
+// The world clip from t = 0, with the reciprocals nothing_ahead() shares with bin_of().
 int ExitCullingTable::entry_cell(const Ray& ray, const Vec3& inverse) const {
     const Box3& world = cells_.world();
-    double near = 0.0;
-    double far = Box3::kInfinity;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double o = ray.origin[axis];
-        if (ray.direction[axis] == 0.0) {
-            if (o < world.lo[axis] || o > world.hi[axis]) {
-                return -1;
-            }
-            continue;
-        }
-        double t0 = (world.lo[axis] - o) * inverse[axis];
-        double t1 = (world.hi[axis] - o) * inverse[axis];
-        if (t0 > t1) {
-            std::swap(t0, t1);
-        }
-        near = std::max(near, t0);
-        far = std::min(far, t1);
-    }
-    if (!(near <= far)) {
+    Interval inside;
+    if (!clip_to_box(ray, inverse, world, {0.0, Box3::kInfinity}, inside)) {
         return -1;
     }
-    Vec3 q = ray.at(near);
+    Vec3 q = ray.at(inside.min);
     q = max_components(world.lo, min_components(world.hi, q));
     return cells_.cell_of(q);
 }
