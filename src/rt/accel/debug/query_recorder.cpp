@@ -74,6 +74,62 @@ RayPacket packet_of(const RecordedQueries& recorded, const RecordedQuery& query)
     return packet;
 }
 
+// A single ray's query asked again; 1 if it found a hit or was blocked.
+std::uint64_t replay_single(const RecordedQueries& recorded, std::size_t q,
+                            const Accelerator& accel, TraceCounters& counters,
+                            const ReplayAnswerSink& answer) {
+    const RecordedQuery& query = recorded.queries[q];
+    const Ray& ray = recorded.rays[query.first];
+    const Interval t = recorded.t[query.first];
+    if (query.kind == QueryKind::Occluded) {
+        const bool blocked = accel.occluded(ray, t, counters);
+        if (answer) {
+            answer(q, 0, std::nullopt, blocked);
+        }
+        return blocked ? 1 : 0;
+    }
+    const std::optional<Hit> hit = query.kind == QueryKind::Closest
+                                       ? accel.closest_hit(ray, t, counters)
+                                       : accel.eye_ray_closest_hit(ray, t, counters);
+    if (answer) {
+        answer(q, 0, hit, false);
+    }
+    return hit ? 1 : 0;
+}
+
+// A packet's query asked again; its lanes that found a hit or were blocked.
+std::uint64_t replay_packet(const RecordedQueries& recorded, std::size_t q,
+                            const Accelerator& accel, TraceCounters& counters,
+                            const ReplayAnswerSink& answer) {
+    const RecordedQuery& query = recorded.queries[q];
+    const RayPacket packet = packet_of(recorded, query);
+    std::uint64_t found = 0;
+    if (query.kind == QueryKind::OccludedPacket) {
+        const std::uint32_t blocked = accel.occluded_packet(packet, counters);
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            if (answer && ((packet.active >> lane) & 1u) != 0) {
+                answer(q, lane, std::nullopt, ((blocked >> lane) & 1u) != 0);
+            }
+        }
+        return static_cast<std::uint64_t>(std::popcount(blocked));
+    }
+    PacketHits hits;
+    if (query.kind == QueryKind::ClosestPacket) {
+        accel.closest_hit_packet(packet, hits, counters);
+    } else {
+        accel.eye_ray_closest_hit_packet(packet, hits, counters);
+    }
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+        if (((packet.active >> lane) & 1u) != 0) {
+            found += hits[lane] ? 1 : 0;
+            if (answer) {
+                answer(q, lane, hits[lane], false);
+            }
+        }
+    }
+    return found;
+}
+
 }  // namespace
 
 std::uint64_t replay_queries(const RecordedQueries& recorded, std::size_t begin, std::size_t end,
@@ -81,62 +137,12 @@ std::uint64_t replay_queries(const RecordedQueries& recorded, std::size_t begin,
                              const ReplayAnswerSink& answer) {
     std::uint64_t found = 0;
     for (std::size_t q = begin; q < end; ++q) {
-        const RecordedQuery& query = recorded.queries[q];
-        const Ray& ray = recorded.rays[query.first];
-        const Interval t = recorded.t[query.first];
-        switch (query.kind) {
-            case QueryKind::Closest:
-            case QueryKind::EyeClosest: {
-                const std::optional<Hit> hit = query.kind == QueryKind::Closest
-                                                   ? accel.closest_hit(ray, t, counters)
-                                                   : accel.eye_ray_closest_hit(ray, t, counters);
-                found += hit ? 1 : 0;
-                if (answer) {
-                    answer(q, 0, hit, false);
-                }
-                break;
-            }
-            case QueryKind::Occluded: {
-                const bool blocked = accel.occluded(ray, t, counters);
-                found += blocked ? 1 : 0;
-                if (answer) {
-                    answer(q, 0, std::nullopt, blocked);
-                }
-                break;
-            }
-            case QueryKind::ClosestPacket:
-            case QueryKind::EyeClosestPacket: {
-                const RayPacket packet = packet_of(recorded, query);
-                PacketHits hits;
-                if (query.kind == QueryKind::ClosestPacket) {
-                    accel.closest_hit_packet(packet, hits, counters);
-                } else {
-                    accel.eye_ray_closest_hit_packet(packet, hits, counters);
-                }
-                for (int lane = 0; lane < kPacketSize; ++lane) {
-                    if ((packet.active >> lane) & 1u) {
-                        found += hits[lane] ? 1 : 0;
-                        if (answer) {
-                            answer(q, lane, hits[lane], false);
-                        }
-                    }
-                }
-                break;
-            }
-            case QueryKind::OccludedPacket: {
-                const RayPacket packet = packet_of(recorded, query);
-                const std::uint32_t blocked = accel.occluded_packet(packet, counters);
-                found += static_cast<std::uint64_t>(std::popcount(blocked));
-                if (answer) {
-                    for (int lane = 0; lane < kPacketSize; ++lane) {
-                        if ((packet.active >> lane) & 1u) {
-                            answer(q, lane, std::nullopt, ((blocked >> lane) & 1u) != 0);
-                        }
-                    }
-                }
-                break;
-            }
-        }
+        const QueryKind kind = recorded.queries[q].kind;
+        const bool packet = kind == QueryKind::ClosestPacket ||
+                            kind == QueryKind::EyeClosestPacket ||
+                            kind == QueryKind::OccludedPacket;
+        found += packet ? replay_packet(recorded, q, accel, counters, answer)
+                        : replay_single(recorded, q, accel, counters, answer);
     }
     return found;
 }

@@ -33,6 +33,8 @@ struct OctreeLeafAt {
 /// costs a level or two instead of a walk from the root.
 class OctreeCursor {
 public:
+    // path_ is left uninitialised on purpose (see its comment).
+    // NOLINTNEXTLINE(cppcoreguidelines-pro-type-member-init)
     OctreeCursor(const OctreeTree& tree, const std::int64_t at[3]) : tree_(tree) {
         path_[0] = tree.nodes.data();
         for (int a = 0; a < 3; ++a) {

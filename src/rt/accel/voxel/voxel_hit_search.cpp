@@ -9,13 +9,13 @@ bool cpu_has_avx2_for_cells() {
 }
 
 namespace {
-const bool kAvx2 = cpu_has_avx2_for_cells();
+const bool avx2_for_cells = cpu_has_avx2_for_cells();
 }  // namespace
 #endif
 
 void NearestHitSearch::test(std::span<const CellPacket> packets) {
 #ifdef RT_VOXEL_AVX2
-    if (kAvx2) {
+    if (avx2_for_cells) {
         test_packets_avx2(packets, offer_to_nearest());
         return;
     }
@@ -25,7 +25,7 @@ void NearestHitSearch::test(std::span<const CellPacket> packets) {
 
 bool AnyHitSearch::test(std::span<const CellPacket> packets) {
 #ifdef RT_VOXEL_AVX2
-    if (kAvx2) {
+    if (avx2_for_cells) {
         return test_packets_avx2(packets, hit_within());
     }
 #endif
