@@ -18,7 +18,10 @@ void add_bench_options(CLI::App& app, BenchArguments& arguments) {
     app.add_option("--replay-accels", arguments.replay_accels,
                    "replay them through these methods too (brute,octree,seads,bvh,embree), each "
                    "in the stack rt's switches describe; implies --replay")
-        ->type_name("LIST");
+        ->type_name("LIST")
+        ->delimiter(',')
+        ->allow_extra_args(false)  // the scene and rt's switches follow
+        ->check(CLI::IsMember({"brute", "octree", "seads", "bvh", "embree"}).description(""));
 }
 
 }  // namespace rt::bench

@@ -10,10 +10,10 @@
 namespace rt::bench {
 
 struct BenchArguments {
-    int repeat = 5;                    ///< --repeat N: renders to time
-    std::optional<std::string> csv;    ///< --csv FILE: append one row of results
-    bool replay = false;               ///< --replay: record one render, time its queries alone
-    std::string replay_accels;         ///< --replay-accels LIST: also through these, by commas
+    int repeat = 5;                  ///< --repeat N: renders to time
+    std::optional<std::string> csv;  ///< --csv FILE: append one row of results
+    bool replay = false;             ///< --replay: record one render, time its queries alone
+    std::vector<std::string> replay_accels;  ///< --replay-accels LIST: also through these
     std::vector<std::string> rt_args;  ///< SCENE and rt's switches (--threads, --accel, -Ds...)
 };
 

@@ -1,17 +1,14 @@
 // rt_scene_bench [--repeat N] [--csv FILE] SCENE [rt switches]: loads a scene, builds its
 // accelerator and renders it N times through the library, printing wall times and rays/s.
-#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <iostream>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
-#include "rt/accel/make_accelerator.h"
 #include "rt/app/run.h"
 #include "rt/app/run_settings.h"
 #include "rt/app/switch_parser.h"
@@ -36,28 +33,13 @@ void replay(const rt::bench::BenchArguments& arguments, const rt::Options& optio
             const rt::Scene& scene, const rt::RenderSettings& settings,
             const rt::Accelerator& rendered, const rt::RunConsole& console,
             rt::bench::BenchRun& run) {
-    std::vector<rt::AccelKind> kinds;
-    std::string_view names = arguments.replay_accels;
-    while (!names.empty()) {
-        const std::size_t comma = std::min(names.find(','), names.size());
-        const std::string name(names.substr(0, comma));
-        names.remove_prefix(std::min(comma + 1, names.size()));
-        const std::optional<rt::AccelKind> kind = rt::accel_kind_from_name(name);
-        if (!kind) {
-            throw rt::UsageError(
-                "--replay-accels: expected brute, octree, seads, bvh or "
-                "embree, found '" +
-                name + "'");
-        }
-        kinds.push_back(*kind);
-    }
     const rt::RecordedQueries recorded = rt::bench::record_render(scene, rendered, settings);
     run.recorded_rays = recorded.rays_asked;
     const int threads = run.renders.threads;
     run.replays.push_back(rt::bench::time_replays(recorded, rendered, threads, arguments.repeat));
-    for (const rt::AccelKind kind : kinds) {
+    for (const std::string& name : arguments.replay_accels) {
         rt::AcceleratorStackSettings stack_settings = rt::run_accelerator_stack(options);
-        stack_settings.method.kind = kind;
+        stack_settings.method.kind = rt::accel_kind_from_name(name);  // checked by the parser
         const rt::AcceleratorStack stack(scene, stack_settings,
                                          {console.note, console.warning, console.trace});
         run.replays.push_back(
