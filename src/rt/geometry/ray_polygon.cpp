@@ -55,6 +55,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "rt/geometry/exact_edge_sign.h"
 
@@ -102,6 +103,8 @@ bool inside(double t, Interval interval) {
 
 // Below this |cos| between the normal and the ray the plane's t is ill-conditioned.
 constexpr double kGrazing = 1e-6;
+
+constexpr double kMiss = std::numeric_limits<double>::quiet_NaN();
 // A grazing hit's corner box is grown by this times the largest |coordinate| of corners and
 // origin: far above the 2^-49 of the projection's rounding, far below the BVH's 2^-20 margins.
 constexpr double kGrazingBoxMargin = 0x1p-40;
@@ -158,13 +161,14 @@ bool span_in_corner_box(const Ray& ray, std::uint32_t count, CornerAt corner_at,
     return lo <= hi;  // false for a NaN too
 }
 
-// The one hit test behind every public form: the decision is the winding number alone; the depth
-// is the plane's, or for a polygon seen (nearly) edge-on the clamped depth argued above.
+// The one hit test behind every public form (NaN for a miss): the decision is the winding number
+// alone; the depth is the plane's, or for a polygon seen (nearly) edge-on the clamped depth argued
+// above.
 template <class CornerAt>
-std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uint32_t count,
-                             CornerAt corner_at, Interval t) {
+double hit_of(const RaySpace& space, const Vec3& normal, std::uint32_t count, CornerAt corner_at,
+              Interval t) {
     if (!space.valid() || count < 3) {
-        return std::nullopt;
+        return kMiss;
     }
     const Ray& ray = space.ray();
     const double denominator = dot(normal, ray.direction);
@@ -172,12 +176,12 @@ std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uin
     if (std::fabs(denominator) > space.grazing_limit() && std::isfinite(along)) {
         // The plane first: one dot product rejects most polygons before any corner is projected.
         if (!inside(along, t) || winding_of(space, count, corner_at) == 0) {
-            return std::nullopt;
+            return kMiss;
         }
         return along;
     }
     if (winding_of(space, count, corner_at) == 0) {
-        return std::nullopt;
+        return kMiss;
     }
     double nearest = 0.0;
     double farthest = 0.0;
@@ -194,7 +198,7 @@ std::optional<double> hit_of(const RaySpace& space, const Vec3& normal, std::uin
     }
     depth = std::clamp(depth, nearest, farthest);
     if (!inside(depth, t)) {
-        return std::nullopt;
+        return kMiss;
     }
     return depth;
 }
@@ -287,22 +291,17 @@ std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& n
     return t;
 }
 
-std::optional<double> intersect_polygon(const Ray& ray, std::span<const Vec3> corners,
-                                        const Vec3& normal, Interval t) {
+double polygon_hit_or_nan(const Ray& ray, std::span<const Vec3> corners, const Vec3& normal,
+                          Interval t) {
     return hit_of(
         RaySpace(ray), normal, static_cast<std::uint32_t>(corners.size()),
         [&](std::uint32_t k) -> const Vec3& { return corners[k]; }, t);
 }
 
-std::optional<double> intersect_polygon(const RaySpace& space, const PolygonView& polygon,
-                                        Interval t) {
+double polygon_hit_or_nan(const RaySpace& space, const PolygonView& polygon, Interval t) {
     return hit_of(
         space, polygon.normal, polygon.corner_count(),
         [&](std::uint32_t k) -> const Vec3& { return polygon.corner(k); }, t);
-}
-
-std::optional<double> intersect_polygon(const Ray& ray, const PolygonView& polygon, Interval t) {
-    return intersect_polygon(RaySpace(ray), polygon, t);
 }
 
 }  // namespace rt
