@@ -207,7 +207,7 @@ double hit_of(const RaySpace& space, const Vec3& normal, std::uint32_t count, Co
 
 RaySpace::RaySpace(const Ray& ray) : ray_(ray) {
     const Vec3& d = ray.direction;
-    valid_ = is_finite(d) && is_finite(ray.origin) && (d.x != 0.0 || d.y != 0.0 || d.z != 0.0);
+    valid_ = may_hit_anything(ray);
     if (!valid_) {
         return;
     }

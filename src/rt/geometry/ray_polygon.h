@@ -15,6 +15,13 @@
 
 namespace rt {
 
+/// False for a ray every exact test misses: a non-finite origin or direction, or a zero
+/// direction. (So is a finite direction whose length overflows, which this lets through.)
+inline bool may_hit_anything(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    return is_finite(d) && is_finite(ray.origin) && (d.x != 0.0 || d.y != 0.0 || d.z != 0.0);
+}
+
 /// A ray prepared once for many polygon tests: the shear that takes it to the z axis of its own
 /// 2D space (Woop, Benthin and Wald, "Watertight ray/triangle intersection", JCGT 2013).
 class RaySpace {

@@ -64,14 +64,14 @@ class PolygonSieve {
 public:
     /// `scale`: at least the boxes' and the packets' scale (the float tests' error bounds).
     /// `line`: the ray's line probe, which the caller keeps (it shares its reciprocals).
-    PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, double scale, const RaySpace& space,
+    PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, double scale, const Ray& ray,
                  const LineProbe& line, TraceCounters& counters)
         : scene_(scene),
           boxes_(boxes),
           line_(line),
-          triangle_(space.ray(), scale),
-          space_(space),
-          counters_(counters) {}
+          triangle_(ray, scale),
+          counters_(counters),
+          ray_(ray) {}
 
     const LineProbe& line() const { return line_; }
 
@@ -122,11 +122,23 @@ protected:
     const PolygonBoxes& boxes_;
     const LineProbe& line_;
     TriangleProbe triangle_;
-    const RaySpace& space_;
     TraceCounters& counters_;
     TestedPolygons tested_;
 
+    /// The ray's exact form, prepared on its first exact test: most rays (nearly all of those
+    /// that miss everything) never reach one, and its two divisions and square root were a tenth
+    /// of the octree's time on such rays.
+    const RaySpace& space() {
+        if (!space_) {
+            space_.emplace(ray_);
+        }
+        return *space_;
+    }
+
 private:
+    const Ray& ray_;
+    std::optional<RaySpace> space_;
+
     // The polygons of the packet's `lanes` (those the float test kept, or every used one).
     template <class Test>
     [[gnu::always_inline]] bool test_lanes(const CellPacket& packet, unsigned lanes, Test& test) {
@@ -151,10 +163,9 @@ private:
 /// (hit.h): the same rule as brute force, so the same answer.
 class NearestHitSearch : public PolygonSieve {
 public:
-    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale,
-                     const RaySpace& space, const LineProbe& line, Interval t,
-                     TraceCounters& counters)
-        : PolygonSieve(scene, boxes, scale, space, line, counters), nearest_(t) {}
+    NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const Ray& ray,
+                     const LineProbe& line, Interval t, TraceCounters& counters)
+        : PolygonSieve(scene, boxes, scale, ray, line, counters), nearest_(t) {}
 
     void test(std::span<const CellPacket> packets);
     const std::optional<Hit>& nearest() const { return nearest_.best(); }
@@ -164,7 +175,7 @@ private:
     // order: the tie rule picks among equal t.
     auto offer_to_nearest() {
         return [this](std::uint32_t id) {
-            if (const std::optional<double> t = intersect_polygon(space_, scene_.polygon_view(id),
+            if (const std::optional<double> t = intersect_polygon(space(), scene_.polygon_view(id),
                                                                   nearest_.search_interval())) {
                 nearest_.offer(*t, id);
             }
@@ -178,9 +189,9 @@ private:
 /// Whether any polygon tested is hit inside the interval (shadow feelers: any hit will do).
 class AnyHitSearch : public PolygonSieve {
 public:
-    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const RaySpace& space,
+    AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const Ray& ray,
                  const LineProbe& line, Interval t, TraceCounters& counters)
-        : PolygonSieve(scene, boxes, scale, space, line, counters), t_(t) {}
+        : PolygonSieve(scene, boxes, scale, ray, line, counters), t_(t) {}
 
     /// True as soon as one of them is hit.
     bool test(std::span<const CellPacket> packets);
@@ -188,7 +199,7 @@ public:
 private:
     auto hit_within() {
         return [this](std::uint32_t id) {
-            return intersect_polygon(space_, scene_.polygon_view(id), t_).has_value();
+            return intersect_polygon(space(), scene_.polygon_view(id), t_).has_value();
         };
     }
 

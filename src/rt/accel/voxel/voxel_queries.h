@@ -7,8 +7,8 @@
 // inline into one loop as they did when each method wrote the queries out.
 //
 // Both queries clip the ray to the world before anything else: a ray that misses it (about half
-// of random rays starting outside) then costs no ray-space or search setup. Invalid rays answer
-// "no hit" either way.
+// of random rays starting outside) then costs no search setup, and the exact RaySpace waits for
+// the first exact test. Invalid rays answer "no hit" either way.
 #pragma once
 
 #include <algorithm>
@@ -57,12 +57,10 @@ template <class Walk>
     if (!clip_to_box(ray, line.inverse, parts.world, walk_interval(t, slack), inside)) {
         return std::nullopt;
     }
-    const RaySpace space(ray);
-    if (!space.valid()) {
+    if (!may_hit_anything(ray)) {
         return std::nullopt;
     }
-    NearestHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, line, t,
-                            counters);
+    NearestHitSearch search(parts.scene, parts.boxes, parts.float_scale(), ray, line, t, counters);
     NearHitRule rule(parts.rules, slack);
     walk(inside, line.inverse, [&](std::size_t cell, double t_exit) {
         if (cell != kNoCell) {
@@ -87,11 +85,10 @@ template <class Walk>
                      walk_interval(t, rounding_slack(ray, parts.world, parts.rules)), inside)) {
         return false;
     }
-    const RaySpace space(ray);
-    if (!space.valid()) {
+    if (!may_hit_anything(ray)) {
         return false;
     }
-    AnyHitSearch search(parts.scene, parts.boxes, parts.float_scale(), space, line, t, counters);
+    AnyHitSearch search(parts.scene, parts.boxes, parts.float_scale(), ray, line, t, counters);
     bool hit = false;
     walk(inside, line.inverse, [&](std::size_t cell, double) {
         ++counters.voxels_stepped;
