@@ -17,13 +17,15 @@ OctreeBuildSettings fill_settings(const AccelSettings& settings) {
     return fill;
 }
 
-// The queries' visit, told each leaf's node number (its packets).
-template <class Visit>
-auto numbered(Visit& visit, const OctreeTree& tree) {
-    return
-        [&visit, &tree](std::span<const std::uint32_t>, double t_exit, const OctreeLeafAt& leaf) {
-            return visit(static_cast<std::size_t>(leaf.node - tree.nodes.data()), t_exit);
-        };
+// The nodes of the queries' walk (Octree::walk_nodes_).
+std::vector<OctreeNode> walk_nodes_of(const OctreeTree& tree, const CellPackets& packets) {
+    std::vector<OctreeNode> nodes = tree.nodes;
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        if (nodes[n].is_leaf()) {
+            nodes[n] = {packets.first_block(n), packets.block_count(n)};
+        }
+    }
+    return nodes;
 }
 
 }  // namespace
@@ -47,13 +49,19 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
             return node.is_leaf() ? tree_.leaf_polygons(node) : std::span<const std::uint32_t>{};
         },
         static_cast<int>(settings.build_threads));
+    walk_nodes_ = walk_nodes_of(tree_, packets_);
 }
 
-// The walk's prefetch for the queries: the next leaf's packets.
-auto Octree::prefetch_packets() const {
-    return [this](const OctreeNode* node) {
-        packets_.prefetch(static_cast<std::size_t>(node - tree_.nodes.data()));
-    };
+// The queries' walk: visit(cell, t_exit) with each leaf's packets, and each next leaf's asked of
+// the cache as soon as the walk knows it.
+template <class Visit>
+void Octree::walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const {
+    walk_octree_leaves(
+        tree_, walk_nodes_.data(), ray, inverse, inside,
+        [&](double t_exit, const OctreeLeafAt& leaf) {
+            return visit(packets_.blocks(leaf.node->first, leaf.node->count), t_exit);
+        },
+        [&](const OctreeNode* node) { packets_.prefetch_blocks(node->first); });
 }
 
 VoxelSearchParts Octree::search_parts() const {
@@ -63,16 +71,14 @@ VoxelSearchParts Octree::search_parts() const {
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_closest_hit(search_parts(), ray, t, counters,
                              [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                                 walk_octree_inside(tree_, ray, inverse, inside,
-                                                    numbered(visit, tree_), prefetch_packets());
+                                 walk(ray, inverse, inside, visit);
                              });
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_occluded(search_parts(), ray, t, counters,
                           [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                              walk_octree_inside(tree_, ray, inverse, inside,
-                                                 numbered(visit, tree_), prefetch_packets());
+                              walk(ray, inverse, inside, visit);
                           });
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator.h"
@@ -26,7 +27,8 @@ public:
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
     std::size_t memory_bytes() const override {
-        return tree_.memory_bytes() + boxes_.memory_bytes() + packets_.memory_bytes();
+        return tree_.memory_bytes() + walk_nodes_.capacity() * sizeof(OctreeNode) +
+               boxes_.memory_bytes() + packets_.memory_bytes();
     }
 
     std::string describe_walk(const Ray& ray, Interval t) const override;
@@ -39,9 +41,15 @@ private:
     WalkRules rules_;
     PolygonBoxes boxes_;
     CellPackets packets_;  ///< by node number (none for interior nodes)
+    /// The tree's nodes, each leaf holding where its packets lie instead of its ids (first
+    /// block, block count), for the queries' walk: it then reaches a leaf's packets straight
+    /// from the node it has just read, not through packets_' table indexed by node, whose
+    /// entries are scattered reads of their own on a big tree.
+    std::vector<OctreeNode> walk_nodes_;
 
     VoxelSearchParts search_parts() const;
-    auto prefetch_packets() const;
+    template <class Visit>
+    void walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const;
 };
 
 std::unique_ptr<Accelerator> make_octree(const Scene& scene, const AccelSettings& settings);

@@ -33,10 +33,15 @@ struct OctreeLeafAt {
 /// costs a level or two instead of a walk from the root.
 class OctreeCursor {
 public:
+    OctreeCursor(const OctreeTree& tree, const std::int64_t at[3])
+        : OctreeCursor(tree.nodes.data(), tree.depth, at) {}
+
+    /// The same over `nodes`: the tree's own, or an array of the same shape (octree.h).
     // path_ is left uninitialised on purpose (see its comment).
     // NOLINTNEXTLINE(cppcoreguidelines-pro-type-member-init)
-    OctreeCursor(const OctreeTree& tree, const std::int64_t at[3]) : tree_(tree) {
-        path_[0] = tree.nodes.data();
+    OctreeCursor(const OctreeNode* nodes, int depth, const std::int64_t at[3])
+        : nodes_(nodes), depth_(depth) {
+        path_[0] = nodes;
         for (int a = 0; a < 3; ++a) {
             at_[a] = at[a];
         }
@@ -49,7 +54,7 @@ public:
             differ |= static_cast<std::uint64_t>(next[a] ^ at_[a]);
             at_[a] = next[a];
         }
-        level_ = std::min(level_, tree_.depth - static_cast<int>(std::bit_width(differ)));
+        level_ = std::min(level_, depth_ - static_cast<int>(std::bit_width(differ)));
         descend();
     }
 
@@ -59,7 +64,7 @@ public:
     OctreeLeafAt leaf() const {
         OctreeLeafAt leaf;
         leaf.node = path_[level_];
-        leaf.size = std::int64_t{1} << (tree_.depth - level_);
+        leaf.size = std::int64_t{1} << (depth_ - level_);
         for (int a = 0; a < 3; ++a) {
             leaf.origin[a] = at_[a] & ~(leaf.size - 1);
         }
@@ -69,16 +74,17 @@ public:
 private:
     void descend() {
         while (!path_[level_]->is_leaf()) {
-            const int shift = tree_.depth - 1 - level_;
+            const int shift = depth_ - 1 - level_;
             const auto child = static_cast<std::uint32_t>(((at_[0] >> shift) & 1) |
                                                           (((at_[1] >> shift) & 1) << 1) |
                                                           (((at_[2] >> shift) & 1) << 2));
-            path_[level_ + 1] = tree_.nodes.data() + path_[level_]->first + child;
+            path_[level_ + 1] = nodes_ + path_[level_]->first + child;
             ++level_;
         }
     }
 
-    const OctreeTree& tree_;
+    const OctreeNode* nodes_;
+    int depth_;
     // Only levels 0 .. level_ are ever read; left uninitialised, as zeroing them all cost a
     // visible share of a short walk.
     const OctreeNode* path_[kMaxOctreeDepth + 1];
@@ -86,14 +92,17 @@ private:
     std::int64_t at_[3] = {0, 0, 0};
 };
 
-/// walk_octree for a ray already clipped to the world: `inside` is what clip_to_box gave for
-/// the interval (callers that clip first skip the rest of their setup for rays that miss).
+/// The walk itself, for a ray already clipped to the world: `inside` is what clip_to_box gave
+/// for the interval (callers that clip first skip the rest of their setup for rays that miss).
+/// `nodes` is the tree's node array or one of the same shape whose leaves say where their own
+/// data lies; visit(t_exit, leaf) is called for each leaf, leaf.node pointing into `nodes`.
 /// `inverse[a]` is 1 / ray.direction[a] on each axis the ray moves along (what the caller's clip
 /// used). `prefetch(node)` is called with each next leaf as soon as it is found, before the
 /// current one is visited, to ask the cache for what its visit will read.
 template <class Visit, class Prefetch>
-void walk_octree_inside(const OctreeTree& tree, const Ray& ray, const Vec3& inverse,
-                        Interval inside, Visit&& visit, Prefetch&& prefetch) {
+void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const Ray& ray,
+                        const Vec3& inverse, Interval inside, Visit&& visit,
+                        Prefetch&& prefetch) {
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
     // Products with reciprocals rather than divisions: the rounding differs by an ulp or so,
@@ -112,7 +121,7 @@ void walk_octree_inside(const OctreeTree& tree, const Ray& ray, const Vec3& inve
         step[a] = ray.direction[a] > 0.0 ? 1 : (ray.direction[a] < 0.0 ? -1 : 0);
     }
     constexpr double kNever = std::numeric_limits<double>::infinity();
-    OctreeCursor cursor(tree, at);
+    OctreeCursor cursor(nodes, tree.depth, at);
     while (true) {
         const OctreeLeafAt leaf = cursor.leaf();
         double t_face[3];
@@ -145,18 +154,22 @@ void walk_octree_inside(const OctreeTree& tree, const Ray& ray, const Vec3& inve
             cursor.move_to(at);
             prefetch(cursor.leaf_node());
         }
-        if (visit(tree.leaf_polygons(*leaf.node), t_exit, leaf) || !more) {
+        if (visit(t_exit, leaf) || !more) {
             return;
         }
     }
 }
 
-/// The same, computing the reciprocals and asking the cache for each next leaf's polygon ids.
+/// walk_octree for a ray already clipped to the world (see walk_octree_leaves), computing the
+/// reciprocals and asking the cache for each next leaf's polygon ids.
 template <class Visit>
 void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
     const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
-    walk_octree_inside(
-        tree, ray, inverse, inside, std::forward<Visit>(visit),
+    walk_octree_leaves(
+        tree, tree.nodes.data(), ray, inverse, inside,
+        [&](double t_exit, const OctreeLeafAt& leaf) {
+            return visit(tree.leaf_polygons(*leaf.node), t_exit, leaf);
+        },
         [&](const OctreeNode* node) { __builtin_prefetch(tree.polygons.data() + node->first); });
 }
 

@@ -12,11 +12,11 @@ namespace rt {
 
 namespace {
 
-// The queries' visit, told each voxel's number (its packets), or kNoCell.
+// The queries' visit, told each voxel's packets (none for a run of empty voxels).
 template <class Visit>
-auto numbered(Visit& visit) {
-    return [&visit](std::size_t voxel, double t_exit, const int*) {
-        return visit(voxel == kNoSeadsVoxel ? kNoCell : voxel, t_exit);
+auto with_packets(Visit& visit, const CellPackets& packets) {
+    return [&visit, &packets](std::size_t voxel, double t_exit, const int*) {
+        return visit(voxel == kNoSeadsVoxel ? CellView{} : packets.cell(voxel), t_exit);
     };
 }
 
@@ -46,7 +46,7 @@ VoxelSearchParts Seads::search_parts() const {
 std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_closest_hit(search_parts(), ray, t, counters,
                              [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                                 walk_seads_voxels(grid_, ray, inverse, inside, numbered(visit),
+                                 walk_seads_voxels(grid_, ray, inverse, inside, with_packets(visit, packets_),
                                                    empty_space(), packets_.cell_table());
                              });
 }
@@ -54,7 +54,7 @@ std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters&
 bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_occluded(search_parts(), ray, t, counters,
                           [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                              walk_seads_voxels(grid_, ray, inverse, inside, numbered(visit),
+                              walk_seads_voxels(grid_, ray, inverse, inside, with_packets(visit, packets_),
                                                 empty_space(), packets_.cell_table());
                           });
 }

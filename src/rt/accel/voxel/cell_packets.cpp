@@ -92,9 +92,11 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
             blocks += (with_bounds_ ? kHeaderBlocks : 0) +
                       kPacketBlocks * ((lanes_of(scene, ids) + 3) / 4);
         }
-        if (blocks > std::numeric_limits<std::uint32_t>::max()) {
+        // Below 2^32 - 1, so that no count of blocks is all ones, which an octree node reads
+        // as "interior" (octree.h).
+        if (blocks >= std::numeric_limits<std::uint32_t>::max()) {
             throw Error(
-                fmt::format("the voxels' triangle packets would take more than 2^32 blocks "
+                fmt::format("the voxels' triangle packets would take 2^32 - 1 blocks or more "
                             "of {} bytes: use fewer or larger voxels",
                             sizeof(Block)));
         }

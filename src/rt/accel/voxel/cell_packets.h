@@ -28,9 +28,6 @@ namespace rt {
 inline constexpr std::uint32_t kAlwaysTestBit = 0x80000000u;
 /// CellPacket::polygon of an unused lane (the always bit clear).
 inline constexpr std::uint32_t kUnusedLane = 0x7fffffffu;
-/// A cell number standing for a voxel known to be empty.
-inline constexpr std::size_t kNoCell = static_cast<std::size_t>(-1);
-
 /// 160 bytes on a 16-byte boundary: four fan triangles of a voxel's polygons.
 struct alignas(16) CellPacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest; NaN in unused lanes
@@ -69,17 +66,24 @@ public:
     /// `bounds_slots` != 0, each non-empty cell's bounds (in front of its ids) are copied in
     /// front of its packets, so the walk reads one run of memory per voxel. `threads` fill the
     /// cells (0: one a core for a large scene, parallel_parts.h); the packets are the same for
-    /// any number. Throws Error, before allocating them, if they would pass 2^32 blocks.
+    /// any number. Throws Error, before allocating them, if they would take 2^32 - 1
+    /// blocks or more.
     CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bounds_slots,
                 const std::function<std::span<const std::uint32_t>(std::size_t)>& ids_of,
                 int threads = 0);
 
-    CellView cell(std::size_t c) const {
-        const Block* begin = blocks_.data() + first_[c];
-        const Block* end = blocks_.data() + first_[c + 1];
-        if (begin == end) {
+    CellView cell(std::size_t c) const { return blocks(first_block(c), block_count(c)); }
+    /// Where cell c's header and packets start, and how many blocks they take (0: no packets):
+    /// a structure that keeps these in its own nodes reads a cell without the table.
+    std::uint32_t first_block(std::size_t c) const { return first_[c]; }
+    std::uint32_t block_count(std::size_t c) const { return first_[c + 1] - first_[c]; }
+    /// The cell whose header and packets are the `count` blocks from `first`.
+    CellView blocks(std::uint32_t first, std::uint32_t count) const {
+        if (count == 0) {
             return {};
         }
+        const Block* begin = blocks_.data() + first;
+        const Block* end = begin + count;
         const float* bounds = nullptr;
         if (with_bounds_) {
             bounds = begin->f;
@@ -90,7 +94,8 @@ public:
             {reinterpret_cast<const CellPacket*>(begin), reinterpret_cast<const CellPacket*>(end)}};
     }
     /// Asks the cache for the start of cell c's header and packets.
-    void prefetch(std::size_t c) const { __builtin_prefetch(blocks_.data() + first_[c]); }
+    void prefetch(std::size_t c) const { prefetch_blocks(first_[c]); }
+    void prefetch_blocks(std::uint32_t first) const { __builtin_prefetch(blocks_.data() + first); }
     /// The table indexed by cell number the walk may prefetch from.
     const std::uint32_t* cell_table() const { return first_.data(); }
     /// The largest |coordinate| of any finite lane corner: the FloatRay's scene scale covers it.

@@ -41,7 +41,7 @@ struct VoxelSearchParts {
 
 // `walk(inside, inverse, visit)` calls visit(cell, t_exit) for each voxel along the ray within
 // `inside` (the interval already clipped to the world), nearest first, until visit returns true:
-// `cell` the voxel's number in `packets`, or kNoCell for a voxel (or a run of them) known empty.
+// `cell` the voxel's view in `packets`, empty for a voxel (or a run of them) known empty.
 // `inverse` holds 1 / direction on each axis the ray moves along: the line probe's reciprocals,
 // computed once a ray for the clip, the walk and the probe's box tests.
 
@@ -62,12 +62,9 @@ template <class Walk>
     }
     NearestHitSearch search(parts.scene, parts.boxes, parts.float_scale(), ray, line, t, counters);
     NearHitRule rule(parts.rules, slack);
-    walk(inside, line.inverse, [&](std::size_t cell, double t_exit) {
-        if (cell != kNoCell) {
-            if (const CellView view = parts.packets.cell(cell);
-                voxel_may_hold_hit(view, search.line())) {
-                search.test(view.packets);
-            }
+    walk(inside, line.inverse, [&](const CellView& cell, double t_exit) {
+        if (voxel_may_hold_hit(cell, search.line())) {
+            search.test(cell.packets);
         }
         return rule.ends_walk(search.nearest(), t_exit, counters);
     });
@@ -90,13 +87,9 @@ template <class Walk>
     }
     AnyHitSearch search(parts.scene, parts.boxes, parts.float_scale(), ray, line, t, counters);
     bool hit = false;
-    walk(inside, line.inverse, [&](std::size_t cell, double) {
+    walk(inside, line.inverse, [&](const CellView& cell, double) {
         ++counters.voxels_stepped;
-        if (cell == kNoCell) {
-            return false;
-        }
-        const CellView view = parts.packets.cell(cell);
-        hit = voxel_may_hold_hit(view, search.line()) && search.test(view.packets);
+        hit = voxel_may_hold_hit(cell, search.line()) && search.test(cell.packets);
         return hit;
     });
     return hit;
