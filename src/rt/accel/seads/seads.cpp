@@ -44,19 +44,19 @@ VoxelSearchParts Seads::search_parts() const {
 }
 
 std::optional<Hit> Seads::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
-    return voxel_closest_hit(search_parts(), ray, t, counters,
-                             [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                                 walk_seads_voxels(grid_, ray, inverse, inside, with_packets(visit, packets_),
-                                                   empty_space(), packets_.cell_table());
-                             });
+    return voxel_closest_hit(
+        search_parts(), ray, t, counters, [&](Interval inside, const Vec3& inverse, auto&& visit) {
+            walk_seads_voxels(grid_, ray, inverse, inside, with_packets(visit, packets_),
+                              empty_space(), packets_.cell_table());
+        });
 }
 
 bool Seads::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    return voxel_occluded(search_parts(), ray, t, counters,
-                          [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                              walk_seads_voxels(grid_, ray, inverse, inside, with_packets(visit, packets_),
-                                                empty_space(), packets_.cell_table());
-                          });
+    return voxel_occluded(
+        search_parts(), ray, t, counters, [&](Interval inside, const Vec3& inverse, auto&& visit) {
+            walk_seads_voxels(grid_, ray, inverse, inside, with_packets(visit, packets_),
+                              empty_space(), packets_.cell_table());
+        });
 }
 
 std::string Seads::describe_walk(const Ray& ray, Interval t) const {
