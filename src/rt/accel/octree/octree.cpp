@@ -50,6 +50,7 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
         },
         static_cast<int>(settings.build_threads));
     walk_nodes_ = walk_nodes_of(tree_, packets_);
+    top_ = make_top_table(tree_);
 }
 
 // The queries' walk: visit(cell, t_exit) with each leaf's packets, and each next leaf's asked of
@@ -57,7 +58,7 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
 template <class Visit>
 void Octree::walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const {
     walk_octree_leaves(
-        tree_, walk_nodes_.data(), ray, inverse, inside,
+        tree_, walk_nodes_.data(), &top_, ray, inverse, inside,
         [&](double t_exit, const OctreeLeafAt& leaf) {
             return visit(packets_.blocks(leaf.node->first, leaf.node->count), t_exit);
         },

@@ -7,6 +7,7 @@
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator.h"
 #include "rt/accel/debug/describe_walk.h"
+#include "rt/accel/octree/octree_top_table.h"
 #include "rt/accel/octree/octree_tree.h"
 #include "rt/accel/voxel/cell_packets.h"
 #include "rt/accel/voxel/near_hit_rule.h"
@@ -28,7 +29,8 @@ public:
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
     std::size_t memory_bytes() const override {
         return tree_.memory_bytes() + walk_nodes_.capacity() * sizeof(OctreeNode) +
-               boxes_.memory_bytes() + packets_.memory_bytes();
+               top_.entry.capacity() * sizeof(OctreeTopTable::Entry) + boxes_.memory_bytes() +
+               packets_.memory_bytes();
     }
 
     std::string describe_walk(const Ray& ray, Interval t) const override;
@@ -46,6 +48,8 @@ private:
     /// from the node it has just read, not through packets_' table indexed by node, whose
     /// entries are scattered reads of their own on a big tree.
     std::vector<OctreeNode> walk_nodes_;
+    /// Where the walk's descents near the top of the tree start (octree_top_table.h).
+    OctreeTopTable top_;
 
     VoxelSearchParts search_parts() const;
     template <class Visit>

@@ -16,6 +16,7 @@
 #include <span>
 #include <utility>
 
+#include "rt/accel/octree/octree_top_table.h"
 #include "rt/accel/octree/octree_tree.h"
 
 namespace rt {
@@ -36,14 +37,20 @@ public:
     OctreeCursor(const OctreeTree& tree, const std::int64_t at[3])
         : OctreeCursor(tree.nodes.data(), tree.depth, at) {}
 
-    /// The same over `nodes`: the tree's own, or an array of the same shape (octree.h).
+    /// The same over `nodes`: the tree's own, or an array of the same shape (octree.h); with
+    /// `top` (made for the same tree; null: none), descents that would start above its level
+    /// start from it.
     // path_ is left uninitialised on purpose (see its comment).
     // NOLINTNEXTLINE(cppcoreguidelines-pro-type-member-init)
-    OctreeCursor(const OctreeNode* nodes, int depth, const std::int64_t at[3])
-        : nodes_(nodes), depth_(depth) {
+    OctreeCursor(const OctreeNode* nodes, int depth, const std::int64_t at[3],
+                 const OctreeTopTable* top = nullptr)
+        : nodes_(nodes), depth_(depth), top_(top != nullptr && top->level > 0 ? top : nullptr) {
         path_[0] = nodes;
         for (int a = 0; a < 3; ++a) {
             at_[a] = at[a];
+        }
+        if (top_ != nullptr) {
+            from_table();
         }
         descend();
     }
@@ -54,7 +61,12 @@ public:
             differ |= static_cast<std::uint64_t>(next[a] ^ at_[a]);
             at_[a] = next[a];
         }
-        level_ = std::min(level_, depth_ - static_cast<int>(std::bit_width(differ)));
+        const int common = depth_ - static_cast<int>(std::bit_width(differ));
+        if (top_ != nullptr && common < top_->level) {
+            from_table();
+        } else {
+            level_ = std::min(level_, common);
+        }
         descend();
     }
 
@@ -72,6 +84,14 @@ public:
     }
 
 private:
+    // Starts the path at the table's entry for the current point: the levels above it are never
+    // read, as any step that would climb above the table's level comes back here.
+    void from_table() {
+        const OctreeTopTable::Entry e = top_->at(at_, depth_);
+        level_ = static_cast<int>(e.level);
+        path_[level_] = nodes_ + e.node;
+    }
+
     void descend() {
         while (!path_[level_]->is_leaf()) {
             const int shift = depth_ - 1 - level_;
@@ -85,6 +105,7 @@ private:
 
     const OctreeNode* nodes_;
     int depth_;
+    const OctreeTopTable* top_;
     // Only levels 0 .. level_ are ever read; left uninitialised, as zeroing them all cost a
     // visible share of a short walk.
     const OctreeNode* path_[kMaxOctreeDepth + 1];
@@ -100,8 +121,8 @@ private:
 /// used). `prefetch(node)` is called with each next leaf as soon as it is found, before the
 /// current one is visited, to ask the cache for what its visit will read.
 template <class Visit, class Prefetch>
-void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const Ray& ray,
-                        const Vec3& inverse, Interval inside, Visit&& visit,
+void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const OctreeTopTable* top,
+                        const Ray& ray, const Vec3& inverse, Interval inside, Visit&& visit,
                         Prefetch&& prefetch) {
     const std::int64_t last = (std::int64_t{1} << tree.depth) - 1;
     // The lattice cell holding the point at t, clamped to [low, high] on each axis.
@@ -121,7 +142,7 @@ void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const R
         step[a] = ray.direction[a] > 0.0 ? 1 : (ray.direction[a] < 0.0 ? -1 : 0);
     }
     constexpr double kNever = std::numeric_limits<double>::infinity();
-    OctreeCursor cursor(nodes, tree.depth, at);
+    OctreeCursor cursor(nodes, tree.depth, at, top);
     while (true) {
         const OctreeLeafAt leaf = cursor.leaf();
         double t_face[3];
@@ -166,7 +187,7 @@ template <class Visit>
 void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside, Visit&& visit) {
     const Vec3 inverse{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
     walk_octree_leaves(
-        tree, tree.nodes.data(), ray, inverse, inside,
+        tree, tree.nodes.data(), nullptr, ray, inverse, inside,
         [&](double t_exit, const OctreeLeafAt& leaf) {
             return visit(tree.leaf_polygons(*leaf.node), t_exit, leaf);
         },
