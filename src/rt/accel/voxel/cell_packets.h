@@ -93,8 +93,7 @@ public:
             bounds,
             {reinterpret_cast<const CellPacket*>(begin), reinterpret_cast<const CellPacket*>(end)}};
     }
-    /// Asks the cache for the start of cell c's header and packets.
-    void prefetch(std::size_t c) const { prefetch_blocks(first_[c]); }
+    /// Asks the cache for the start of the header and packets from block `first`.
     void prefetch_blocks(std::uint32_t first) const { __builtin_prefetch(blocks_.data() + first); }
     /// The table indexed by cell number the walk may prefetch from.
     const std::uint32_t* cell_table() const { return first_.data(); }
