@@ -4,6 +4,8 @@
 #include <cmath>
 #include <thread>
 
+#include "rt/accel/float_prefilter/float_ray.h"
+
 namespace rt::bvh {
 
 namespace {
@@ -13,28 +15,19 @@ namespace {
 // factor of two.
 constexpr double kPlaneDeviationGain = 0x1p21;
 
-float round_down(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -HUGE_VALF) : f;
-}
-
-float round_up(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, HUGE_VALF) : f;
-}
-
 // The polygon's double box, widened for non-planarity; false if anything is not finite.
-bool polygon_box(const Scene& scene, const Polygon& p, Vec3& lo, Vec3& hi) {
-    const Vec3 first = scene.corner_position(p, 0);
+bool polygon_box(const Vec3* positions, const std::uint32_t* corners, const Polygon& p, Vec3& lo,
+                 Vec3& hi) {
+    const Vec3 first = positions[corners[0]];
     lo = hi = first;
     double deviation = 0.0;
-    double size = 0.0;
-    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-        const Vec3 c = scene.corner_position(p, k);
+    double size = std::max(std::max(std::fabs(first.x), std::fabs(first.y)), std::fabs(first.z));
+    for (std::uint32_t k = 1; k < p.corner_count; ++k) {
+        const Vec3 c = positions[corners[k]];
         lo = min_components(lo, c);
         hi = max_components(hi, c);
         deviation = std::max(deviation, std::fabs(dot(p.normal, c - first)));
-        size = std::max({size, std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
+        size = std::max(size, std::max(std::max(std::fabs(c.x), std::fabs(c.y)), std::fabs(c.z)));
     }
     if (!is_finite(lo) || !is_finite(hi) || !is_finite(p.normal) || !std::isfinite(deviation)) {
         return false;
@@ -50,6 +43,8 @@ bool polygon_box(const Scene& scene, const Polygon& p, Vec3& lo, Vec3& hi) {
 PolygonReferences references_of(const Scene& scene, std::uint32_t first, std::uint32_t last) {
     PolygonReferences refs;
     refs.bounded.reserve(last - first);
+    const Vec3* positions = scene.positions.data();
+    const std::uint32_t* corners = scene.corners.data();
     for (std::uint32_t id = first; id < last; ++id) {
         const Polygon& p = scene.polygons[id];
         if (p.corner_count < 3) {
@@ -57,17 +52,17 @@ PolygonReferences references_of(const Scene& scene, std::uint32_t first, std::ui
         }
         Vec3 lo;
         Vec3 hi;
-        if (!polygon_box(scene, p, lo, hi)) {
+        if (!polygon_box(positions, corners + p.first_corner, p, lo, hi)) {
             refs.unbounded.push_back(id);
             continue;
         }
         PolygonReference r;
         double size = 0.0;
         for (int k = 0; k < 3; ++k) {
-            r.box.lo[k] = round_down(lo[k]);
-            r.box.hi[k] = round_up(hi[k]);
-            size = std::max({size, std::fabs(static_cast<double>(r.box.lo[k])),
-                             std::fabs(static_cast<double>(r.box.hi[k]))});
+            r.box.lo[k] = float_below(lo[k]);
+            r.box.hi[k] = float_above(hi[k]);
+            size = std::max(size, std::max(std::fabs(static_cast<double>(r.box.lo[k])),
+                                           std::fabs(static_cast<double>(r.box.hi[k]))));
         }
         if (!std::isfinite(size)) {  // beyond float's range: keep the answer right, if slow
             refs.unbounded.push_back(id);

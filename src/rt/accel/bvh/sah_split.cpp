@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -9,7 +11,7 @@
 #include <vector>
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace rt::bvh {
@@ -26,19 +28,66 @@ double packets(std::uint32_t triangles) {
     return static_cast<double>(whole);
 }
 
-// A bin holds what the two sides of a split need, so that neither side is read again to learn
-// its boxes, its centres' box (the next split's bins) or its triangle count.
-struct Bin {
-    Box box;
-    Box centroids;
-    std::uint32_t triangles = 0;
-    std::uint32_t count = 0;
+// A box as eight floats {lo.x, lo.y, lo.z, lo.z, -hi.x, -hi.y, -hi.z, -hi.z}: growing it is one
+// minimum over the eight lanes (min(-a, -b) is -max(a, b) exactly), so a bin is one 32-byte
+// register to load, grow and store. Empty: every lane +inf (hi = -inf).
+struct alignas(32) FlatBox {
+    float v[8] = {HUGE_VALF, HUGE_VALF, HUGE_VALF, HUGE_VALF,
+                  HUGE_VALF, HUGE_VALF, HUGE_VALF, HUGE_VALF};
 
-    void grow(const Bin& b) {
-        box.grow(b.box);
-        centroids.grow(b.centroids);
-        triangles += b.triangles;
-        count += b.count;
+    void grow(const FlatBox& b) {
+#if defined(__AVX__)
+        _mm256_store_ps(v, _mm256_min_ps(_mm256_load_ps(b.v), _mm256_load_ps(v)));
+#else
+        for (int k = 0; k < 8; ++k) {
+            v[k] = b.v[k] < v[k] ? b.v[k] : v[k];
+        }
+#endif
+    }
+    Box box() const {
+        Box out;
+        for (int k = 0; k < 3; ++k) {
+            out.lo[k] = v[k];
+            out.hi[k] = -v[4 + k];
+        }
+        return out;
+    }
+};
+
+// A bin's reference count (low word) and fan triangle count (high word), so that one addition
+// counts both. Neither word carries into the other: a range has fewer than 2^32 references and
+// triangles.
+using PackedCount = std::uint64_t;
+
+PackedCount one_reference(std::uint32_t triangles) {
+    return (PackedCount{triangles} << 32) | 1u;
+}
+std::uint32_t references_in(PackedCount c) {
+    return static_cast<std::uint32_t>(c);
+}
+std::uint32_t triangles_in(PackedCount c) {
+    return static_cast<std::uint32_t>(c >> 32);
+}
+
+// The bins of the three axes: what the two sides of a split need to know their boxes and counts
+// without reading their references again. Their centres' boxes come from the partition.
+struct AxisBins {
+    std::array<std::array<FlatBox, kBins>, 3> box;
+    std::array<std::array<PackedCount, kBins>, 3> count;
+
+    void clear(int bins) {
+        for (int axis = 0; axis < 3; ++axis) {
+            std::fill_n(box[axis].begin(), bins, FlatBox{});
+            std::fill_n(count[axis].begin(), bins, PackedCount{0});
+        }
+    }
+    void add(const AxisBins& other, int bins) {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int b = 0; b < bins; ++b) {
+                box[axis][b].grow(other.box[axis][b]);
+                count[axis][b] += other.count[axis][b];
+            }
+        }
     }
 };
 
@@ -72,85 +121,89 @@ Binner binner_for(const Box& cb, int axis, int bins) {
             bins - 1};
 }
 
-using AxisBins = std::array<std::array<Bin, kBins>, 3>;
+// Ranges at least this big are binned into two sets of bins in turn (bin_references).
+constexpr std::uint32_t kTwoBinSets = 256;
 
 #if defined(__SSE2__)
 // One pass over the references, each binned on all three axes: the three centroids and bin
 // numbers in one register (the same float operations as Binner and PolygonReference::centroid,
 // lane by lane, so the partition that follows puts each reference on the side its bin was counted
-// on), the boxes grown as registers. Lane 3 of each register holds whatever follows the three
-// floats loaded: unused.
+// on; lo - (-hi) is lo + hi exactly), each bin grown by one eight-lane minimum.
 void bin_references(std::span<const PolygonReference> refs, const ReferenceRange& r,
                     const std::array<Binner, 3>& binners, int count, AxisBins& bins) {
-    struct Wide {
-        __m128 lo = _mm_set1_ps(HUGE_VALF);
-        __m128 hi = _mm_set1_ps(-HUGE_VALF);
-        __m128 centroid_lo = _mm_set1_ps(HUGE_VALF);
-        __m128 centroid_hi = _mm_set1_ps(-HUGE_VALF);
-    };
-    // Kept between calls so that only the bins in use are cleared.
-    static thread_local std::array<std::array<Wide, kBins>, 3> boxes;
-    for (auto& axis_boxes : boxes) {
-        std::fill_n(axis_boxes.begin(), count, Wide{});
-    }
-    const __m128 origin = _mm_setr_ps(binners[0].lo, binners[1].lo, binners[2].lo, 0.0f);
-    const __m128 scale = _mm_setr_ps(binners[0].scale, binners[1].scale, binners[2].scale, 0.0f);
+    const __m128 origin =
+        _mm_setr_ps(binners[0].lo, binners[1].lo, binners[2].lo, binners[2].lo);
+    const __m128 scale =
+        _mm_setr_ps(binners[0].scale, binners[1].scale, binners[2].scale, binners[2].scale);
     const __m128 half = _mm_set1_ps(0.5f);
-    for (std::uint32_t i = r.begin; i < r.end; ++i) {
-        const PolygonReference& ref = refs[i];
-        static_assert(offsetof(PolygonReference, box) == 0 && offsetof(Box, hi) == 12 &&
-                          sizeof(PolygonReference) >= 28,
-                      "four floats from lo and from hi stay inside the reference");
-        const __m128 lo = _mm_loadu_ps(ref.box.lo);
-        const __m128 hi = _mm_loadu_ps(ref.box.hi);
-        const __m128 centroid = _mm_mul_ps(half, _mm_add_ps(lo, hi));
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const auto bin_one = [&](const PolygonReference& ref, AxisBins& into_bins) {
+        static_assert(offsetof(PolygonReference, box) == 0 && offsetof(Box, hi) == 12,
+                      "lo and hi are the reference's first six floats");
+        // {lo0, lo1, lo2, hi0} and {lo2, hi0, hi1, hi2}, each to three lanes and a copy.
+        const __m128 low_part = _mm_loadu_ps(ref.box.lo);
+        const __m128 high_part = _mm_loadu_ps(ref.box.lo + 2);
+        const __m128 lo = _mm_shuffle_ps(low_part, low_part, _MM_SHUFFLE(2, 2, 1, 0));
+        const __m128 neg_hi =
+            _mm_xor_ps(_mm_shuffle_ps(high_part, high_part, _MM_SHUFFLE(3, 3, 2, 1)), sign);
+        const __m128 centroid = _mm_mul_ps(half, _mm_sub_ps(lo, neg_hi));
         alignas(16) std::int32_t bin[4];
         _mm_store_si128(reinterpret_cast<__m128i*>(bin),
                         _mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(centroid, origin), scale)));
+        const PackedCount counted = one_reference(ref.triangles);
+#if defined(__AVX__)
+        const __m256 flat = _mm256_set_m128(neg_hi, lo);
+        const auto grow = [&](int axis, int b) {
+            float* into = into_bins.box[axis][b].v;
+            _mm256_store_ps(into, _mm256_min_ps(flat, _mm256_load_ps(into)));
+            into_bins.count[axis][b] += counted;
+        };
+#else
+        const auto grow = [&](int axis, int b) {
+            float* into = into_bins.box[axis][b].v;
+            _mm_store_ps(into, _mm_min_ps(lo, _mm_load_ps(into)));
+            _mm_store_ps(into + 4, _mm_min_ps(neg_hi, _mm_load_ps(into + 4)));
+            into_bins.count[axis][b] += counted;
+        };
+#endif
         for (int axis = 0; axis < 3; ++axis) {
-            const int b = std::clamp(bin[axis], 0, count - 1);
-            Wide& box = boxes[axis][b];
-            box.lo = _mm_min_ps(lo, box.lo);
-            box.hi = _mm_max_ps(hi, box.hi);
-            box.centroid_lo = _mm_min_ps(centroid, box.centroid_lo);
-            box.centroid_hi = _mm_max_ps(centroid, box.centroid_hi);
-            bins[axis][b].triangles += ref.triangles;
-            ++bins[axis][b].count;
-        }
-    }
-    const auto store = [](__m128 lo_in, __m128 hi_in, Box& out) {
-        alignas(16) float lo[4];
-        alignas(16) float hi[4];
-        _mm_store_ps(lo, lo_in);
-        _mm_store_ps(hi, hi_in);
-        for (int k = 0; k < 3; ++k) {
-            out.lo[k] = lo[k];
-            out.hi[k] = hi[k];
+            grow(axis, std::clamp(bin[axis], 0, count - 1));
         }
     };
-    for (int axis = 0; axis < 3; ++axis) {
-        for (int b = 0; b < count; ++b) {
-            const Wide& w = boxes[axis][b];
-            store(w.lo, w.hi, bins[axis][b].box);
-            store(w.centroid_lo, w.centroid_hi, bins[axis][b].centroids);
+    // Neighbouring references often share bins: alternating two sets of bins lets one
+    // reference's minimum start before the previous one's store has landed.
+    if (r.size() < kTwoBinSets) {
+        for (std::uint32_t i = r.begin; i < r.end; ++i) {
+            bin_one(refs[i], bins);
         }
+        return;
     }
+    static thread_local AxisBins odd;
+    odd.clear(count);
+    std::uint32_t i = r.begin;
+    for (; i + 1 < r.end; i += 2) {
+        bin_one(refs[i], bins);
+        bin_one(refs[i + 1], odd);
+    }
+    if (i < r.end) {
+        bin_one(refs[i], bins);
+    }
+    bins.add(odd, count);
 }
 #else
 void bin_references(std::span<const PolygonReference> refs, const ReferenceRange& r,
-                    const std::array<Binner, 3>& binners, int count, AxisBins& bins) {
+                    const std::array<Binner, 3>& binners, int /*count*/, AxisBins& bins) {
     for (std::uint32_t i = r.begin; i < r.end; ++i) {
         const PolygonReference& ref = refs[i];
-        Box centre;
+        FlatBox flat;
         for (int k = 0; k < 3; ++k) {
-            centre.lo[k] = centre.hi[k] = ref.centroid(k);
+            flat.v[k] = ref.box.lo[k];
+            flat.v[4 + k] = -ref.box.hi[k];
         }
         for (int axis = 0; axis < 3; ++axis) {
-            Bin& bin = bins[axis][binners[axis](ref.centroid(axis))];
-            bin.box.grow(ref.box);
-            bin.centroids.grow(centre);
-            bin.triangles += ref.triangles;
-            ++bin.count;
+            const int b = binners[axis](ref.centroid(axis));
+            bins.box[axis][b].grow(flat);
+            bins.count[axis][b] += one_reference(ref.triangles);
         }
     }
 }
@@ -175,6 +228,7 @@ void bin_in_parallel(std::span<const PolygonReference> refs, const ReferenceRang
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < threads; ++t) {
         parts.push_back(std::make_unique<AxisBins>());
+        parts.back()->clear(count);
         pool.emplace_back([&, t, part = parts.back().get()] {
             ReferenceRange run;
             run.begin = at(t);
@@ -190,11 +244,7 @@ void bin_in_parallel(std::span<const PolygonReference> refs, const ReferenceRang
         t.join();
     }
     for (const auto& part : parts) {
-        for (int axis = 0; axis < 3; ++axis) {
-            for (int b = 0; b < count; ++b) {
-                bins[axis][b].grow((*part)[axis][b]);
-            }
-        }
+        bins.add(*part, count);
     }
 }
 
@@ -209,26 +259,28 @@ void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange&
         if (!(cb.hi[axis] > cb.lo[axis])) {
             continue;
         }
-        const std::array<Bin, kBins>& axis_bins = bins[axis];
-        std::array<double, kBins> right_cost{};
-        Box right;
+        const std::array<FlatBox, kBins>& boxes = bins.box[axis];
+        const std::array<PackedCount, kBins>& counts = bins.count[axis];
+        // Only [1, count) is written and read.
+        std::array<double, kBins> right_cost;  // NOLINT(cppcoreguidelines-pro-type-member-init)
+        FlatBox right;
         std::uint32_t right_triangles = 0;
         for (int b = count - 1; b > 0; --b) {
-            right.grow(axis_bins[b].box);
-            right_triangles += axis_bins[b].triangles;
-            right_cost[b] = right.half_area() * packets(right_triangles);
+            right.grow(boxes[b]);
+            right_triangles += triangles_in(counts[b]);
+            right_cost[b] = right.box().half_area() * packets(right_triangles);
         }
-        Box left;
-        std::uint32_t left_triangles = 0;
-        std::uint32_t left_count = 0;
+        FlatBox left;
+        PackedCount left_count = 0;
         for (int b = 1; b < count; ++b) {
-            left.grow(axis_bins[b - 1].box);
-            left_triangles += axis_bins[b - 1].triangles;
-            left_count += axis_bins[b - 1].count;
-            if (left_count == 0 || left_count == r.size()) {
+            left.grow(boxes[b - 1]);
+            left_count += counts[b - 1];
+            const std::uint32_t references = references_in(left_count);
+            if (references == 0 || references == r.size()) {
                 continue;
             }
-            const double cost = left.half_area() * packets(left_triangles) + right_cost[b];
+            const double cost =
+                left.box().half_area() * packets(triangles_in(left_count)) + right_cost[b];
             if (cost < best.cost) {
                 best = {cost, axis, b};
             }
@@ -236,20 +288,66 @@ void evaluate_axes(std::span<const PolygonReference> refs, const ReferenceRange&
     }
 }
 
-// The side made of bins [first, last) of one axis, starting at `begin` in the references.
-ReferenceRange side_of(const std::array<Bin, kBins>& bins, int first, int last,
-                       std::uint32_t begin) {
-    Bin sum;
+// The side made of bins [first, last) of one axis, starting at `begin` in the references; its
+// centres' box is the partition's to fill.
+ReferenceRange side_of(const AxisBins& bins, int axis, int first, int last, std::uint32_t begin) {
+    FlatBox box;
+    PackedCount count = 0;
     for (int b = first; b < last; ++b) {
-        sum.grow(bins[b]);
+        box.grow(bins.box[axis][b]);
+        count += bins.count[axis][b];
     }
     ReferenceRange side;
     side.begin = begin;
-    side.end = begin + sum.count;
-    side.box = sum.box;
-    side.centroids = sum.centroids;
-    side.triangles = sum.triangles;
+    side.end = begin + references_in(count);
+    side.box = box.box();
+    side.triangles = triangles_in(count);
     return side;
+}
+
+void grow_by_centroid(Box& box, const PolygonReference& ref) {
+    for (int k = 0; k < 3; ++k) {
+        const float c = ref.centroid(k);
+        box.lo[k] = std::min(box.lo[k], c);
+        box.hi[k] = std::max(box.hi[k], c);
+    }
+}
+
+// Moves the references whose bin on `axis` is below `split` before the others, with the swaps
+// std::partition makes (so the order, and the tree, do not depend on the library), and grows
+// each side's box of centres: every reference is judged exactly once. Returns where the right
+// side begins.
+std::uint32_t partition_by_bin(std::span<PolygonReference> refs, const ReferenceRange& r,
+                               const Binner& binner, int axis, int split, Box& left_centroids,
+                               Box& right_centroids) {
+    PolygonReference* first = refs.data() + r.begin;
+    PolygonReference* last = refs.data() + r.end;
+    const auto goes_left = [&](const PolygonReference& ref) {
+        const bool left = binner(ref.centroid(axis)) < split;
+        grow_by_centroid(left ? left_centroids : right_centroids, ref);
+        return left;
+    };
+    for (;;) {
+        for (;; ++first) {
+            if (first == last) {
+                return static_cast<std::uint32_t>(first - refs.data());
+            }
+            if (!goes_left(*first)) {
+                break;
+            }
+        }
+        --last;
+        for (;; --last) {
+            if (first == last) {
+                return static_cast<std::uint32_t>(first - refs.data());
+            }
+            if (goes_left(*last)) {
+                break;
+            }
+        }
+        std::swap(*first, *last);
+        ++first;
+    }
 }
 
 SplitDecision split_at(std::span<PolygonReference> refs, const ReferenceRange& r,
@@ -307,9 +405,7 @@ SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange
     }
     // Kept between calls so that only the bins in use are cleared.
     static thread_local AxisBins bins;
-    for (auto& axis_bins : bins) {
-        std::fill_n(axis_bins.begin(), count, Bin{});
-    }
+    bins.clear(count);
     BestSplit best;
     evaluate_axes(refs, range, binners, count, threads, bins, best);
     const double area = range.box.half_area();
@@ -320,15 +416,14 @@ SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange
     if (best.axis < 0) {  // every centroid the same: any halving is as good
         return median_split(refs, range);
     }
-    const Binner& binner = binners[best.axis];
-    std::partition(
-        refs.begin() + range.begin, refs.begin() + range.end,
-        [&](const PolygonReference& r) { return binner(r.centroid(best.axis)) < best.bin; });
-    const std::array<Bin, kBins>& axis_bins = bins[best.axis];
     SplitDecision split;
     split.leaf = false;
-    split.left = side_of(axis_bins, 0, best.bin, range.begin);
-    split.right = side_of(axis_bins, best.bin, count, split.left.end);
+    split.left = side_of(bins, best.axis, 0, best.bin, range.begin);
+    split.right = side_of(bins, best.axis, best.bin, count, split.left.end);
+    [[maybe_unused]] const std::uint32_t middle =
+        partition_by_bin(refs, range, binners[best.axis], best.axis, best.bin,
+                         split.left.centroids, split.right.centroids);
+    assert(middle == split.left.end);
     return split;
 }
 
