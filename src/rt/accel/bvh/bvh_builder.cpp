@@ -8,6 +8,7 @@
 
 #include "rt/accel/bvh/leaf_filling.h"
 #include "rt/accel/bvh/sah_split.h"
+#include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
 
@@ -176,7 +177,7 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
     result.nodes = std::move(tree.nodes);
     fill_leaves(scene, all, tree.leaves, result, threads);
     result.nodes.shrink_to_fit();
-    result.packets.shrink_to_fit();
+    shrink_to_fit_huge(result.packets);
     return result;
 }
 

@@ -1,6 +1,7 @@
 // Each wide node takes a 4-wide node's children and, while they fit in eight slots, replaces the
 // inner child of largest box surface by that child's own children (as Embree's collapse does).
 #include "rt/accel/bvh/collapse.h"
+#include "rt/core/huge_pages.h"
 
 #include <cmath>
 
@@ -90,9 +91,9 @@ std::uint32_t collapse(const Hierarchy& tree, std::uint32_t node_index,
 
 void collapse_to_wide(Hierarchy& tree) {
     if (tree.root != kNoChild && !is_leaf(tree.root)) {
-        tree.wide.reserve(tree.nodes.size() / 2 + 1);
+        reserve_huge(tree.wide, tree.nodes.size() / 2 + 1);
         tree.root = collapse(tree, tree.root, tree.wide);
-        tree.wide.shrink_to_fit();
+        shrink_to_fit_huge(tree.wide);
     }
     tree.nodes.clear();
     tree.nodes.shrink_to_fit();

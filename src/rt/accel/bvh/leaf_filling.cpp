@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "rt/accel/bvh/leaf_packets.h"
+#include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
 
@@ -42,7 +43,7 @@ std::size_t expected_packets(std::span<const PolygonReference> refs,
 
 void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
               std::span<const PendingLeaf> leaves, std::size_t reserve, Run& run) {
-    run.packets.reserve(reserve);
+    reserve_huge(run.packets, reserve);
     run.first.reserve(leaves.size());
     const auto ahead = [&](std::size_t i, auto&& ask) {
         if (i < leaves.size()) {
@@ -108,7 +109,7 @@ void fill_leaves(const Scene& scene, std::span<const PolygonReference> refs,
         total += run.packets.size();
     }
     tree.packets = std::move(runs[0].packets);
-    tree.packets.reserve(total);
+    reserve_huge(tree.packets, total);
     for (std::size_t r = 0; r < count; ++r) {
         const auto offset = static_cast<std::uint32_t>(r == 0 ? 0 : tree.packets.size());
         if (r > 0) {

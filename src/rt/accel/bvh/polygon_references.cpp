@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
 
@@ -42,7 +43,7 @@ bool polygon_box(const Vec3* positions, const std::uint32_t* corners, const Poly
 // The references of polygons [first, last), in order.
 PolygonReferences references_of(const Scene& scene, std::uint32_t first, std::uint32_t last) {
     PolygonReferences refs;
-    refs.bounded.reserve(last - first);
+    reserve_huge(refs.bounded, last - first);
     const Vec3* positions = scene.positions.data();
     const std::uint32_t* corners = scene.corners.data();
     for (std::uint32_t id = first; id < last; ++id) {
@@ -101,7 +102,7 @@ PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) 
     }
     PolygonReferences refs = std::move(parts[0]);
     if (runs > 1) {
-        refs.bounded.reserve(polygons);
+        reserve_huge(refs.bounded, polygons);
     }
     for (std::uint32_t r = 1; r < runs; ++r) {
         refs.bounded.insert(refs.bounded.end(), parts[r].bounded.begin(), parts[r].bounded.end());

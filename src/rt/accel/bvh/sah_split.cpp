@@ -73,7 +73,7 @@ std::uint32_t triangles_in(PackedCount c) {
 // without reading their references again. Their centres' boxes come from the partition.
 struct AxisBins {
     std::array<std::array<FlatBox, kBins>, 3> box;
-    std::array<std::array<PackedCount, kBins>, 3> count;
+    std::array<std::array<PackedCount, kBins>, 3> count{};
 
     void clear(int bins) {
         for (int axis = 0; axis < 3; ++axis) {

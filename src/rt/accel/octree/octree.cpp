@@ -2,6 +2,7 @@
 
 #include "rt/accel/octree/octree_ddda.h"
 #include "rt/accel/voxel/voxel_queries.h"
+#include "rt/core/huge_pages.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -19,7 +20,9 @@ OctreeBuildSettings fill_settings(const AccelSettings& settings) {
 
 // The nodes of the queries' walk (Octree::walk_nodes_).
 std::vector<OctreeNode> walk_nodes_of(const OctreeTree& tree, const CellPackets& packets) {
-    std::vector<OctreeNode> nodes = tree.nodes;
+    std::vector<OctreeNode> nodes;
+    reserve_huge(nodes, tree.nodes.size());
+    nodes.assign(tree.nodes.begin(), tree.nodes.end());
     for (std::size_t n = 0; n < nodes.size(); ++n) {
         if (nodes[n].is_leaf()) {
             nodes[n] = {packets.first_block(n), packets.block_count(n)};

@@ -10,6 +10,7 @@
 #include "rt/accel/voxel/polygon_box_overlap.h"
 #include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/core/error.h"
+#include "rt/core/huge_pages.h"
 
 namespace rt {
 
@@ -107,6 +108,7 @@ int clearance_from_earlier_neighbours(const SeadsGrid& grid, int x, int y, int z
 void fill_clearance(SeadsGrid& grid) {
     const int n = grid.side;
     const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
+    reserve_huge(grid.clearance, voxels);
     grid.clearance.assign(voxels, 255);
     for (std::size_t v = 0; v < voxels; ++v) {
         if (grid.offsets[v] != grid.offsets[v + 1]) {

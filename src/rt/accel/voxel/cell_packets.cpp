@@ -9,6 +9,7 @@
 #include "rt/accel/parallel_parts.h"
 #include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/core/error.h"
+#include "rt/core/huge_pages.h"
 
 #include <fmt/format.h>
 
@@ -83,6 +84,7 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
     // First each cell's size, so that the blocks are allocated once, at their size (growing them
     // cell by cell copied a million-triangle mesh's packets many times over), checked before,
     // and so that the cells can be filled on several threads, each into its own blocks.
+    reserve_huge(first_, cells + 1);
     first_.resize(cells + 1);
     std::uint64_t blocks = 0;
     for (std::size_t c = 0; c < cells; ++c) {
@@ -102,6 +104,7 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
         }
     }
     first_[cells] = static_cast<std::uint32_t>(blocks);
+    reserve_huge(blocks_, blocks);
     blocks_.resize(blocks);
 
     const int parts = build_threads_for(threads, scene.polygons.size());

@@ -1,0 +1,31 @@
+#include "rt/core/huge_pages.h"
+
+#include <cstdint>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace rt {
+
+void advise_huge_pages(const void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (data == nullptr || bytes < kHugePageWorthwhile) {
+        return;
+    }
+    constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+    const auto begin = reinterpret_cast<std::uintptr_t>(data);
+    const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
+    const std::uintptr_t last = (begin + bytes) & ~(kHugePage - 1);
+    if (first < last) {
+        // A refusal (no transparent huge pages, an old kernel) leaves the memory as it was.
+        // NOLINTNEXTLINE(performance-no-int-to-ptr): madvise takes the page-aligned address
+        static_cast<void>(madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE));
+    }
+#else
+    static_cast<void>(data);
+    static_cast<void>(bytes);
+#endif
+}
+
+}  // namespace rt

@@ -1,0 +1,52 @@
+#include "rt/core/huge_pages.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace rt {
+namespace {
+
+TEST(HugePages, ReserveHugeMakesRoomAndKeepsTheElements) {
+    std::vector<std::uint32_t> values{1, 2, 3};
+    const std::size_t big = (kHugePageWorthwhile / sizeof(std::uint32_t)) * 3;
+    reserve_huge(values, big);
+    EXPECT_GE(values.capacity(), big);
+    EXPECT_EQ(values, (std::vector<std::uint32_t>{1, 2, 3}));
+    values.resize(big);
+    std::iota(values.begin(), values.end(), 0u);
+    EXPECT_EQ(values[big - 1], big - 1);
+}
+
+TEST(HugePages, ReserveHugeNeverShrinks) {
+    std::vector<double> values(100, 1.5);
+    values.reserve(1000);
+    reserve_huge(values, 10);
+    EXPECT_EQ(values.capacity(), 1000u);
+    EXPECT_EQ(values.size(), 100u);
+}
+
+TEST(HugePages, ShrinkToFitHugeKeepsTheElementsExactly) {
+    std::vector<std::uint64_t> values;
+    reserve_huge(values, kHugePageWorthwhile);  // far more than is kept
+    for (std::uint64_t i = 0; i < 300000; ++i) {
+        values.push_back(i * 2654435761u);
+    }
+    const std::vector<std::uint64_t> before = values;
+    shrink_to_fit_huge(values);
+    EXPECT_EQ(values.capacity(), values.size());
+    EXPECT_EQ(values, before);
+}
+
+TEST(HugePages, AdviceOnSmallOrNullMemoryIsHarmless) {
+    advise_huge_pages(nullptr, 0);
+    advise_huge_pages(nullptr, kHugePageWorthwhile * 2);
+    int small = 7;
+    advise_huge_pages(&small, sizeof(small));
+    EXPECT_EQ(small, 7);
+}
+
+}  // namespace
+}  // namespace rt
