@@ -17,6 +17,10 @@
 #include <optional>
 #include <span>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "rt/accel/accelerator.h"
 #include "rt/accel/voxel/box.h"
 #include "rt/accel/voxel/cell_packets.h"
@@ -45,14 +49,45 @@ struct VoxelSearchParts {
 // `inverse` holds 1 / direction on each axis the ray moves along: the line probe's reciprocals,
 // computed once a ray for the clip, the walk and the probe's box tests.
 
+/// The query's interval, held in one 16-byte register across the calls that prepare the ray. It
+/// arrives in two registers; kept as it is, GCC spilled it as two 8-byte stores and read it back
+/// as one 16-byte load, which the store buffer cannot forward: a stall at the start of every ray,
+/// 13 % of the octree's own samples on twocubes.
+class HeldInterval {
+public:
+#if defined(__SSE2__)
+    explicit HeldInterval(Interval t) {
+        double min = t.min;
+        double max = t.max;
+        // Each end stays in a register of its own here, so the pair is made by a shuffle.
+        asm("" : "+x"(min), "+x"(max));
+        held_ = _mm_unpacklo_pd(_mm_set_sd(min), _mm_set_sd(max));
+    }
+    Interval get() const {
+        return {_mm_cvtsd_f64(held_), _mm_cvtsd_f64(_mm_unpackhi_pd(held_, held_))};
+    }
+
+private:
+    __m128d held_;
+#else
+    explicit HeldInterval(Interval t) : held_(t) {}
+    Interval get() const { return held_; }
+
+private:
+    Interval held_;
+#endif
+};
+
 /// The nearest hit, as brute force finds it (docs/accelerators.md, "Near hits and the fudge").
 template <class Walk>
 [[gnu::always_inline]] inline std::optional<Hit> voxel_closest_hit(const VoxelSearchParts& parts,
-                                                                   const Ray& ray, Interval t,
+                                                                   const Ray& ray, Interval query,
                                                                    TraceCounters& counters,
                                                                    Walk&& walk) {
+    const HeldInterval held(query);
     const double slack = rounding_slack(ray, parts.world, parts.rules);
     const LineProbe line(ray);
+    const Interval t = held.get();
     Interval inside;
     if (!clip_to_box(ray, line.inverse, parts.world, walk_interval(t, slack), inside)) {
         return std::nullopt;
@@ -74,9 +109,11 @@ template <class Walk>
 /// Whether any polygon is hit inside the interval; not subject to -tv.
 template <class Walk>
 [[gnu::always_inline]] inline bool voxel_occluded(const VoxelSearchParts& parts, const Ray& ray,
-                                                  Interval t, TraceCounters& counters,
+                                                  Interval query, TraceCounters& counters,
                                                   Walk&& walk) {
+    const HeldInterval held(query);
     const LineProbe line(ray);
+    const Interval t = held.get();
     Interval inside;
     if (!clip_to_box(ray, line.inverse, parts.world,
                      walk_interval(t, rounding_slack(ray, parts.world, parts.rules)), inside)) {
