@@ -40,10 +40,10 @@ bool polygon_box(const Vec3* positions, const std::uint32_t* corners, const Poly
     return is_finite(lo) && is_finite(hi);
 }
 
-// The references of polygons [first, last), in order.
-PolygonReferences references_of(const Scene& scene, std::uint32_t first, std::uint32_t last) {
-    PolygonReferences refs;
-    reserve_huge(refs.bounded, last - first);
+// Appends the references of polygons [first, last) to `refs`, in order.
+void append_references(const Scene& scene, std::uint32_t first, std::uint32_t last,
+                       PolygonReferences& refs) {
+    reserve_huge(refs.bounded, refs.bounded.size() + (last - first));
     const Vec3* positions = scene.positions.data();
     const std::uint32_t* corners = scene.corners.data();
     for (std::uint32_t id = first; id < last; ++id) {
@@ -74,7 +74,6 @@ PolygonReferences references_of(const Scene& scene, std::uint32_t first, std::ui
         r.triangles = p.corner_count - 2;
         refs.bounded.push_back(r);
     }
-    return refs;
 }
 
 }  // namespace
@@ -91,18 +90,18 @@ PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) 
     const auto bound = [&](std::uint32_t r) {
         return static_cast<std::uint32_t>(std::uint64_t{polygons} * r / runs);
     };
+    // The first run is written straight into the result, which has room for all: only the
+    // others' references are copied.
+    PolygonReferences refs;
+    reserve_huge(refs.bounded, polygons);
     std::vector<PolygonReferences> parts(runs);
     std::vector<std::thread> pool;
     for (std::uint32_t r = 1; r < runs; ++r) {
-        pool.emplace_back([&, r] { parts[r] = references_of(scene, bound(r), bound(r + 1)); });
+        pool.emplace_back([&, r] { append_references(scene, bound(r), bound(r + 1), parts[r]); });
     }
-    parts[0] = references_of(scene, 0, bound(1));
+    append_references(scene, 0, bound(1), refs);
     for (std::thread& t : pool) {
         t.join();
-    }
-    PolygonReferences refs = std::move(parts[0]);
-    if (runs > 1) {
-        reserve_huge(refs.bounded, polygons);
     }
     for (std::uint32_t r = 1; r < runs; ++r) {
         refs.bounded.insert(refs.bounded.end(), parts[r].bounded.begin(), parts[r].bounded.end());
