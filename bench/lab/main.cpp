@@ -8,6 +8,7 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/scene/read/load_scene.h"
+#include "rt/scene/scene.h"
 
 #include "command_line/command_line.h"
 #include "lab_measure.h"
@@ -50,8 +51,9 @@ int run(const LabOptions& options) {
             continue;
         }
         for (const std::uint32_t size : options.sizes) {
-            const rt::Scene scene = mesh == "sphere" ? rt::test::make_tessellated_sphere(size)
-                                                     : rt::test::make_triangle_soup(size);
+            rt::Scene scene = mesh == "sphere" ? rt::test::make_tessellated_sphere(size)
+                                               : rt::test::make_triangle_soup(size);
+            rt::move_to_huge_pages(scene);  // as load_scene does
             run_scene(scene, mesh, options, results);
         }
     }

@@ -40,6 +40,22 @@ TEST(HugePages, ShrinkToFitHugeKeepsTheElementsExactly) {
     EXPECT_EQ(values, before);
 }
 
+TEST(HugePages, MoveToHugePagesKeepsTheElementsAndFitsThem) {
+    std::vector<std::uint32_t> big(kHugePageWorthwhile / sizeof(std::uint32_t) + 5);
+    std::iota(big.begin(), big.end(), 7u);
+    big.reserve(big.size() * 2);
+    const std::vector<std::uint32_t> before = big;
+    move_to_huge_pages(big);
+    EXPECT_EQ(big, before);
+    EXPECT_EQ(big.capacity(), big.size());
+
+    std::vector<std::uint32_t> small{3, 1, 2};
+    small.reserve(100);
+    move_to_huge_pages(small);  // too small to be worth moving: left as it is
+    EXPECT_EQ(small, (std::vector<std::uint32_t>{3, 1, 2}));
+    EXPECT_EQ(small.capacity(), 100u);
+}
+
 TEST(HugePages, AdviceOnSmallOrNullMemoryIsHarmless) {
     advise_huge_pages(nullptr, 0);
     advise_huge_pages(nullptr, kHugePageWorthwhile * 2);

@@ -41,4 +41,17 @@ void shrink_to_fit_huge(std::vector<T>& v) {
     v.swap(fitted);
 }
 
+/// Moves v's elements into advised memory of exactly their size, when they take enough room to
+/// be worth it: for arrays filled before anyone knew their size (a scene's, as it is read).
+template <class T>
+void move_to_huge_pages(std::vector<T>& v) {
+    if (v.size() * sizeof(T) < kHugePageWorthwhile) {
+        return;
+    }
+    std::vector<T> moved;
+    reserve_huge(moved, v.size());
+    moved.assign(v.begin(), v.end());
+    v.swap(moved);
+}
+
 }  // namespace rt

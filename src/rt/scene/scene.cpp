@@ -1,5 +1,7 @@
 #include "rt/scene/scene.h"
 
+#include "rt/core/huge_pages.h"
+
 namespace rt {
 
 SourceLocation Scene::origin_of(std::uint32_t polygon) const {
@@ -27,6 +29,12 @@ Box3 Scene::bounds() const {
         box.add(p);
     }
     return box;
+}
+
+void move_to_huge_pages(Scene& scene) {
+    move_to_huge_pages(scene.positions);
+    move_to_huge_pages(scene.corners);
+    move_to_huge_pages(scene.polygons);
 }
 
 }  // namespace rt

@@ -134,4 +134,9 @@ struct Scene {
     Box3 bounds() const;
 };
 
+/// Moves the arrays the intersection methods read per ray (positions, corners, polygons) into
+/// memory backed by 2 MiB pages where the system allows (core/huge_pages.h), once the scene is
+/// complete: the exact test then misses the TLB less on big meshes.
+void move_to_huge_pages(Scene& scene);
+
 }  // namespace rt

@@ -135,6 +135,7 @@ Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dia
         scene.shapes = read_shape_file(text, diagnostics);
     }
     add_surfaces(scene, scn, folder, dialect, diagnostics);
+    move_to_huge_pages(scene);
     return scene;
 }
 
