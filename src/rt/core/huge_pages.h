@@ -28,30 +28,31 @@ void reserve_huge(std::vector<T>& v, std::size_t n) {
     advise_huge_pages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(T));
 }
 
+/// Copies v's elements into advised memory of exactly their size.
+template <class T>
+void copy_into_huge_pages(std::vector<T>& v) {
+    std::vector<T> copied;
+    reserve_huge(copied, v.size());
+    copied.assign(v.begin(), v.end());
+    v.swap(copied);
+}
+
 /// v.shrink_to_fit(), into advised memory: a plain shrink_to_fit copies into memory that gets
 /// small pages.
 template <class T>
 void shrink_to_fit_huge(std::vector<T>& v) {
-    if (v.capacity() == v.size()) {
-        return;
+    if (v.capacity() != v.size()) {
+        copy_into_huge_pages(v);
     }
-    std::vector<T> fitted;
-    reserve_huge(fitted, v.size());
-    fitted.assign(v.begin(), v.end());
-    v.swap(fitted);
 }
 
 /// Moves v's elements into advised memory of exactly their size, when they take enough room to
 /// be worth it: for arrays filled before anyone knew their size (a scene's, as it is read).
 template <class T>
 void move_to_huge_pages(std::vector<T>& v) {
-    if (v.size() * sizeof(T) < kHugePageWorthwhile) {
-        return;
+    if (v.size() * sizeof(T) >= kHugePageWorthwhile) {
+        copy_into_huge_pages(v);
     }
-    std::vector<T> moved;
-    reserve_huge(moved, v.size());
-    moved.assign(v.begin(), v.end());
-    v.swap(moved);
 }
 
 }  // namespace rt

@@ -380,11 +380,7 @@ ReferenceRange make_range(std::span<const PolygonReference> refs, std::uint32_t 
     r.end = end;
     for (std::uint32_t i = begin; i < end; ++i) {
         r.box.grow(refs[i].box);
-        for (int k = 0; k < 3; ++k) {
-            const float c = refs[i].centroid(k);
-            r.centroids.lo[k] = std::min(r.centroids.lo[k], c);
-            r.centroids.hi[k] = std::max(r.centroids.hi[k], c);
-        }
+        grow_by_centroid(r.centroids, refs[i]);
         r.triangles += refs[i].triangles;
     }
     return r;
