@@ -1,10 +1,10 @@
 #include "rt/core/huge_pages.h"
 
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <numeric>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace rt {
 namespace {

@@ -1,7 +1,8 @@
 // Moving a scene's per-ray arrays to huge pages changes nothing a reader of the scene sees.
+#include "rt/scene/scene.h"
+
 #include <gtest/gtest.h>
 
-#include "rt/scene/scene.h"
 #include "support/meshes/generated_meshes.h"
 
 namespace rt {

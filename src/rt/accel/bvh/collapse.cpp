@@ -1,9 +1,10 @@
 // Each wide node takes a 4-wide node's children and, while they fit in eight slots, replaces the
 // inner child of largest box surface by that child's own children (as Embree's collapse does).
 #include "rt/accel/bvh/collapse.h"
-#include "rt/core/huge_pages.h"
 
 #include <cmath>
+
+#include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
 

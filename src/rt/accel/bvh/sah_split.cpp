@@ -131,8 +131,7 @@ constexpr std::uint32_t kTwoBinSets = 256;
 // on; lo - (-hi) is lo + hi exactly), each bin grown by one eight-lane minimum.
 void bin_references(std::span<const PolygonReference> refs, const ReferenceRange& r,
                     const std::array<Binner, 3>& binners, int count, AxisBins& bins) {
-    const __m128 origin =
-        _mm_setr_ps(binners[0].lo, binners[1].lo, binners[2].lo, binners[2].lo);
+    const __m128 origin = _mm_setr_ps(binners[0].lo, binners[1].lo, binners[2].lo, binners[2].lo);
     const __m128 scale =
         _mm_setr_ps(binners[0].scale, binners[1].scale, binners[2].scale, binners[2].scale);
     const __m128 half = _mm_set1_ps(0.5f);
@@ -417,8 +416,8 @@ SplitDecision split_range(std::span<PolygonReference> refs, const ReferenceRange
     split.left = side_of(bins, best.axis, 0, best.bin, range.begin);
     split.right = side_of(bins, best.axis, best.bin, count, split.left.end);
     [[maybe_unused]] const std::uint32_t middle =
-        partition_by_bin(refs, range, binners[best.axis], best.axis, best.bin,
-                         split.left.centroids, split.right.centroids);
+        partition_by_bin(refs, range, binners[best.axis], best.axis, best.bin, split.left.centroids,
+                         split.right.centroids);
     assert(middle == split.left.end);
     return split;
 }

@@ -71,7 +71,9 @@ private:
     __m128d held_;
 #else
     explicit HeldInterval(Interval t) : held_(t) {}
-    Interval get() const { return held_; }
+    Interval get() const {
+        return held_;
+    }
 
 private:
     Interval held_;
