@@ -57,7 +57,7 @@ public:
     /// The numbers of the voxel across `axis` and of the one after it on the same axis, for
     /// prefetching what their visits will read; kNoVoxelAhead where a number falls outside the
     /// grid's table. The second is a guess: the walk may step on another axis first. The true
-    /// voxel after (the least of the three plane crossings) measured 5-7 % slower on meshes that
+    /// voxel after (the least of the three plane crossings) measured 5-8 % slower on meshes that
     /// fit in the cache, and no faster on the large ones. Across a face of the grid a number
     /// names some other voxel, which is harmless.
     static constexpr std::size_t kNoVoxelAhead = std::numeric_limits<std::size_t>::max();
