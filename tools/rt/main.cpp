@@ -87,13 +87,15 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
     console.answers = &std::cout;
     console.prompt = ::isatty(STDIN_FILENO) != 0 ? "octree> " : "";
     if (!options.no_window) {
-        console.open_window = [note = console.note](const rt::WindowRequest& request) {
+        console.open_window = [warn = console.warning](const rt::WindowRequest& request) {
             std::string why_not;
             rt::WindowRequest stopping = request;
             stopping.on_close = rt::request_interrupt;  // closing it stops the render at once
             std::unique_ptr<rt::PictureWindow> window = rt::open_picture_window(stopping, why_not);
             if (!window && std::getenv("DISPLAY") != nullptr) {  // NOLINT(concurrency-mt-unsafe)
-                note(why_not);  // a display was named but cannot be reached
+                // A display was named but cannot be reached: the user expected a window, so this
+                // is said even under --quiet.
+                warn(why_not);
             }
             return window;
         };

@@ -19,6 +19,7 @@ SdlFunctions find_functions(const SharedLibrary& library) {
     RT_FIND(SDL_GetWindowSurface);
     RT_FIND(SDL_HideWindow);
     RT_FIND(SDL_Init);
+    RT_FIND(SDL_PollEvent);
     RT_FIND(SDL_Quit);
     RT_FIND(SDL_SetHint);
     RT_FIND(SDL_SetWindowTitle);

@@ -18,6 +18,7 @@ struct SdlFunctions {
     decltype(&::SDL_GetWindowSurface) SDL_GetWindowSurface = nullptr;
     decltype(&::SDL_HideWindow) SDL_HideWindow = nullptr;
     decltype(&::SDL_Init) SDL_Init = nullptr;
+    decltype(&::SDL_PollEvent) SDL_PollEvent = nullptr;
     decltype(&::SDL_Quit) SDL_Quit = nullptr;
     decltype(&::SDL_SetHint) SDL_SetHint = nullptr;
     decltype(&::SDL_SetWindowTitle) SDL_SetWindowTitle = nullptr;

@@ -2,6 +2,7 @@
 // SDL's video functions want; the others only touch the PictureBoard and the atomic flags. SDL's
 // functions come from sdl_functions(), which loads libSDL2 only when a window is wanted.
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <future>
 #include <numbers>
@@ -46,6 +47,7 @@ const char* driver_named() {
 }
 
 constexpr std::uint32_t kFrameMilliseconds = 16;  // about 60 redraws a second, at most
+constexpr int kEventsPerFrame = 256;              // handled before each frame, at most
 // The whole picture is drawn again this often, changed or not: a draw made before the X server
 // mapped the window is lost without an expose event on some servers (Xvfb without a window
 // manager, under load), and only this brings the unchanged rows (the wireframe) back. A blit of
@@ -109,6 +111,7 @@ private:
         sdl_.SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
         if (sdl_.SDL_Init(SDL_INIT_VIDEO) != 0) {
             opened.set_value(fmt::format("no window: {}", sdl_.SDL_GetError()));
+            sdl_.SDL_Quit();  // what SDL_Init set up before it failed, so that a retry starts clean
             return;
         }
         window_ = sdl_.SDL_CreateWindow(request_.title.c_str(), 0, 0, request_.width,
@@ -128,14 +131,26 @@ private:
         std::vector<std::uint8_t> rgb;
         bool redraw = true;
         std::uint32_t last_whole = sdl_.SDL_GetTicks();
+        std::uint32_t last_frame = last_whole;
         while (!stopping_) {
             SDL_Event event;
-            if (sdl_.SDL_WaitEventTimeout(&event, static_cast<int>(kFrameMilliseconds)) != 0) {
+            const std::uint32_t since_frame = sdl_.SDL_GetTicks() - last_frame;
+            if (since_frame < kFrameMilliseconds &&
+                sdl_.SDL_WaitEventTimeout(
+                    &event, static_cast<int>(kFrameMilliseconds - since_frame)) != 0) {
                 redraw = handle(event) || redraw;
-                continue;  // drain the queue before drawing
+                continue;  // until the frame is due, events come first
+            }
+            // The frame is due. A steady stream of events (a pointer moving over the window, an
+            // X server replaying a backlog) must not hold it back: only those queued now are
+            // taken, and at most kEventsPerFrame of them.
+            for (int taken = 0; taken < kEventsPerFrame && sdl_.SDL_PollEvent(&event) != 0;
+                 ++taken) {
+                redraw = handle(event) || redraw;
             }
             PictureBoard::Rows rows = board_.update(rgb);
             const std::uint32_t now = sdl_.SDL_GetTicks();
+            last_frame = now;
             if (redraw || now - last_whole >= kWholeRedrawMilliseconds) {
                 rows = {0, board_.height() - 1};
                 last_whole = now;
@@ -261,12 +276,23 @@ std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
         why_not = fmt::format("no window: {}", e.what());  // as when SDL_Init fails
         return nullptr;
     }
-    auto window = std::make_unique<SdlPictureWindow>(*sdl, request);
-    why_not = window->start();
-    if (!why_not.empty()) {
-        return nullptr;
+    // A display that is there can still refuse a connection for a moment: the window tests saw
+    // rt find no window on an Xvfb that had served other clients for seconds, twice in a few
+    // dozen runs on a loaded machine. A window asked for is worth two more tries; a display that
+    // is not there costs 300 ms more before rt renders headless.
+    constexpr int kAttempts = 3;
+    constexpr auto kPause = std::chrono::milliseconds(150);
+    for (int attempt = 1;; ++attempt) {
+        auto window = std::make_unique<SdlPictureWindow>(*sdl, request);
+        why_not = window->start();
+        if (why_not.empty()) {
+            return window;
+        }
+        if (attempt == kAttempts) {
+            return nullptr;
+        }
+        std::this_thread::sleep_for(kPause);
     }
-    return window;
 }
 
 }  // namespace rt
