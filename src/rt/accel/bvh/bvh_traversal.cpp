@@ -14,6 +14,7 @@
 #include "rt/accel/bvh/leaf_exact_hit.h"
 #include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/accel/bvh/single_ray_walk.h"
 #include "rt/geometry/ray_polygon.h"
 
 namespace rt {
@@ -230,13 +231,35 @@ template <bool kAvx2>
                               simd::Float4::broadcast(t_max), out);
 }
 
-// Front to back through the tree from the root, offering each candidate to `nearest`. Compiled
-// twice: as is, and inlined into an AVX2 function, where the box and packet tests inline into
-// the loop (a call into an AVX2 function from plain code cannot be inlined).
-template <bool kAvx2>
+// The nearest hit so far of a ray whose exact form and nearest hit are kept by its caller (a
+// packet's lane going on alone: single_ray_walk.h).
+class NearestHitElsewhere {
+public:
+    NearestHitElsewhere(const RaySpace& space, ClosestHitSoFar& best) : space_(space), best_(best) {}
+    void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
+               TraceCounters& counters) {
+        ++counters.polygon_tests;
+        if (const std::optional<double> hit =
+                exact_hit(space_, scene, *packet, lane, id, best_.search_interval())) {
+            best_.offer(*hit, id);
+        }
+    }
+    double reach() const { return best_.reach(); }
+
+private:
+    const RaySpace& space_;
+    ClosestHitSoFar& best_;
+};
+
+// Front to back through the tree from `start` (the root, or a node or leaf below it), offering
+// each candidate to `nearest`. Compiled twice: as is, and inlined into an AVX2 function, where
+// the box and packet tests inline into the loop (a call into an AVX2 function from plain code
+// cannot be inlined).
+template <bool kAvx2, class Nearest>
 [[gnu::always_inline]] inline void nearest_in_tree(const bvh::Hierarchy& tree, const Scene& scene,
                                                    const FloatRay& fray, Interval t,
-                                                   NearestHit& nearest, TraceCounters& counters) {
+                                                   std::uint32_t start, Nearest& nearest,
+                                                   TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
     const float t_min = fray.scaled_down(t.min);
     float t_max = fray.scaled_up(nearest.reach());
@@ -244,7 +267,7 @@ template <bool kAvx2>
     // Left uninitialised: zeroing 4 kB per ray costs more than some rays' whole traversal.
     std::array<StackEntry, kStackSize> stack;  // NOLINT(cppcoreguidelines-pro-type-member-init)
     int size = 0;
-    std::uint32_t child = tree.root;
+    std::uint32_t child = start;
     for (;;) {
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             ++counters.nodes_visited;
@@ -281,7 +304,13 @@ __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hi
                                                                    const FloatRay& fray, Interval t,
                                                                    NearestHit& nearest,
                                                                    TraceCounters& counters) {
-    nearest_in_tree<true>(tree, scene, fray, t, nearest, counters);
+    nearest_in_tree<true>(tree, scene, fray, t, tree.root, nearest, counters);
+}
+
+__attribute__((target("avx2"), flatten)) void nearest_below_avx2(
+    const bvh::Hierarchy& tree, const Scene& scene, const FloatRay& fray, Interval t,
+    std::uint32_t start, NearestHitElsewhere& nearest, TraceCounters& counters) {
+    nearest_in_tree<true>(tree, scene, fray, t, start, nearest, counters);
 }
 #endif
 
@@ -352,8 +381,26 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         return nearest.best();
     }
 #endif
-    nearest_in_tree<false>(tree_, scene_, fray, t, nearest, counters);
+    nearest_in_tree<false>(tree_, scene_, fray, t, tree_.root, nearest, counters);
     return nearest.best();
+}
+
+bool bvh::nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t start,
+                        const Ray& ray, Interval t, const RaySpace& space, ClosestHitSoFar& best,
+                        TraceCounters& counters) {
+    const FloatRay fray(ray, tree.scale);
+    if (!fray.usable) {
+        return false;
+    }
+    NearestHitElsewhere nearest(space, best);
+#ifdef RT_BVH_AVX2
+    if (cpu_has_avx2) {
+        nearest_below_avx2(tree, scene, fray, t, start, nearest, counters);
+        return true;
+    }
+#endif
+    nearest_in_tree<false>(tree, scene, fray, t, start, nearest, counters);
+    return true;
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {

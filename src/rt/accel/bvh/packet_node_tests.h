@@ -135,7 +135,8 @@ __attribute__((target("avx2"))) inline std::uint32_t children_packet_may_meet(
     return ~static_cast<std::uint32_t>(_mm256_movemask_ps(rejected)) & 0xffu;
 }
 
-struct alignas(32) ChildHits {
+// entry is left uninitialised: test_children writes it for every child it returns.
+struct alignas(32) ChildHits {  // NOLINT(cppcoreguidelines-pro-type-member-init)
     std::uint32_t child = 0;
     std::uint32_t rays = 0;  ///< lanes whose line meets the box within their interval
     float key = 0.0f;        ///< the nearest of those lanes' entries: the visiting order

@@ -1,0 +1,24 @@
+// The single ray's walk from a node below the root, for a packet's lane that goes on alone
+// (bvh_packet_traversal.cpp): in a subtree entered by one or two rays of a packet, the packet's
+// eight-lane tests cost several times the single ray's, for the same candidates.
+#pragma once
+
+#include <cstdint>
+
+#include "rt/accel/bvh/bvh_layout.h"
+#include "rt/accel/hit.h"
+#include "rt/accel/accelerator.h"
+#include "rt/geometry/ray_polygon.h"
+#include "rt/scene/scene.h"
+
+namespace rt::bvh {
+
+/// Offers `best` (the ray's nearest hit so far, over t) every polygon of the subtree at `start`
+/// that the single ray's walk from the root would offer there, each decided by the exact test
+/// with `space` (the ray's). False, with nothing done, when the ray has no usable float form:
+/// the caller then goes on as before.
+bool nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t start, const Ray& ray,
+                   Interval t, const RaySpace& space, ClosestHitSoFar& best,
+                   TraceCounters& counters);
+
+}  // namespace rt::bvh
