@@ -117,6 +117,34 @@ Image8 screenshot_until(const XDisplay& x, const std::string& title, seconds lim
     return shoot_until([&] { return screenshot(x.name(), title); }, limit, good);
 }
 
+// A program started in `program` and shot until `good` holds for a shot (returned; empty when
+// none does within the limit). One that found no window (`found_no_window`, asked after a
+// fruitless search) is started once more, for that case alone: a loaded X server was seen to
+// refuse a client for a moment. The first start's words go to `earlier_errors`, for the report.
+struct ProgramStart {
+    std::string name;
+    std::vector<std::string> args;
+    std::filesystem::path folder;
+    SpawnSettings settings;
+};
+template <typename Shoot, typename Good, typename FoundNoWindow>
+Image8 start_and_shoot(std::optional<SpawnedProgram>& program, const ProgramStart& start,
+                       Shoot shoot, seconds limit, Good good, FoundNoWindow found_no_window,
+                       std::string& earlier_errors) {
+    Image8 shot;
+    for (int attempt = 0; attempt < 2 && shot.width == 0; ++attempt) {
+        if (program) {
+            earlier_errors += program->errors();
+        }
+        program.emplace(start.name, start.args, start.folder, start.settings);
+        shot = shoot_until(shoot, limit, good);
+        if (shot.width == 0 && !found_no_window(*program)) {
+            break;  // it has a window that shows something else: no second start
+        }
+    }
+    return shot;
+}
+
 TEST(Window, ShowsTheFinishedPictureAndWaitsForEnter) {
     SKIP_WITHOUT_DISPLAY_TOOLS();
     const XDisplay x;
@@ -165,32 +193,24 @@ TEST(Window, EarlyInARenderShowsBottomLinesDoneAndTheWireframeAbove) {
         }
         return last_top_is_wireframe && last_rows_changed > 0;
     };
-    // rt asks the display three times for its window. Should it still have none (it warns
-    // "no window: ..." and renders headless), a second start is allowed for that case alone, and
-    // the first one's words are kept in the report, as for show below.
+    // rt asks the display three times for its window; should it still have none, it warns
+    // "no window: ..." and renders headless. One thread, so that rows finish strictly from the
+    // bottom up and slowly enough to be seen.
     std::optional<SpawnedProgram> rt;
     std::string earlier_errors;
-    Image8 early;
-    for (int start = 0; start < 2 && early.width == 0; ++start) {
-        if (rt) {
-            earlier_errors += rt->errors();
-        }
-        // One thread, so that rows finish strictly from the bottom up and slowly enough to be
-        // seen.
-        rt.emplace("rt",
-                   std::vector<std::string>{scene, "-n", "--output", "part.ppm", "--output",
-                                            "part.gro", "--threads", "1", "--quiet"},
-                   dir.path(), SpawnSettings{x.name(), false});
-        early = shoot_until(
-            [&] {
-                ++shots;
-                return screenshot(x.name(), "rt: " + scene);
-            },
-            seconds(30), replaced_some);
-        if (early.width == 0 && rt->errors().find("no window") == std::string::npos) {
-            break;  // it has a window that shows something else: no second start
-        }
-    }
+    const Image8 early = start_and_shoot(
+        rt,
+        {"rt",
+         {scene, "-n", "--output", "part.ppm", "--output", "part.gro", "--threads", "1", "--quiet"},
+         dir.path(),
+         {x.name(), false}},
+        [&] {
+            ++shots;
+            return screenshot(x.name(), "rt: " + scene);
+        },
+        seconds(30), replaced_some,
+        [](const SpawnedProgram& p) { return p.errors().find("no window") != std::string::npos; },
+        earlier_errors);
     // Ctrl-C stops the render; the finished lines are written, the rest black.
     rt->signal(SIGINT);
     ASSERT_EQ(rt->wait_for_exit(seconds(30)), 130) << rt->errors();
@@ -305,23 +325,14 @@ TEST(Window, ShowDisplaysThePictureAndChangesItsExposureWithKeys) {
     };
     const Image8 plain = read_ppm(dir.path() / "plain.ppm");
     // show exits at once (status 0, "no window: ..." on its standard error) when it cannot reach
-    // the display. That happened once on a loaded CI machine, with nothing to tell why: a second
-    // start is allowed for that case alone, and the first one's words are kept in the report.
+    // the display.
     std::optional<SpawnedProgram> show;
     std::string earlier_errors;
-    Image8 drawn;
-    for (int start = 0; start < 2 && drawn.width == 0; ++start) {
-        if (show) {
-            earlier_errors += show->errors();
-        }
-        show.emplace("show", std::vector<std::string>{"pic.gro"}, dir.path(),
-                     SpawnSettings{x.name(), false});
-        drawn = shoot_until(shoot, seconds(10),
-                            [&](const Image8& s) { return pictures_match(s, plain); });
-        if (drawn.width == 0 && !show->wait_for_exit(milliseconds(0)).has_value()) {
-            break;  // it is running and shows something else: no second start
-        }
-    }
+    const Image8 drawn = start_and_shoot(
+        show, {"show", {"pic.gro"}, dir.path(), {x.name(), false}}, shoot, seconds(10),
+        [&](const Image8& s) { return pictures_match(s, plain); },
+        [](SpawnedProgram& p) { return p.wait_for_exit(milliseconds(0)).has_value(); },
+        earlier_errors);
     EXPECT_EQ(drawn.width, 512) << "show never drew the picture; its errors: " << earlier_errors
                                 << show->errors();
     // The pointer over the picture and + pressed (keys go to the window under the pointer).
