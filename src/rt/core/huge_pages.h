@@ -19,8 +19,8 @@ inline constexpr std::size_t kHugePageWorthwhile = std::size_t{4} << 20;
 void advise_huge_pages(const void* data, std::size_t bytes);
 
 /// v.reserve(n), with the new room advised as above (when v had to grow to hold n).
-template <class T>
-void reserve_huge(std::vector<T>& v, std::size_t n) {
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& v, std::size_t n) {
     if (n <= v.capacity()) {
         return;
     }
@@ -29,9 +29,9 @@ void reserve_huge(std::vector<T>& v, std::size_t n) {
 }
 
 /// Copies v's elements into advised memory of exactly their size.
-template <class T>
-void copy_into_huge_pages(std::vector<T>& v) {
-    std::vector<T> copied;
+template <class T, class A>
+void copy_into_huge_pages(std::vector<T, A>& v) {
+    std::vector<T, A> copied;
     reserve_huge(copied, v.size());
     copied.assign(v.begin(), v.end());
     v.swap(copied);
@@ -39,8 +39,8 @@ void copy_into_huge_pages(std::vector<T>& v) {
 
 /// v.shrink_to_fit(), into advised memory: a plain shrink_to_fit copies into memory that gets
 /// small pages.
-template <class T>
-void shrink_to_fit_huge(std::vector<T>& v) {
+template <class T, class A>
+void shrink_to_fit_huge(std::vector<T, A>& v) {
     if (v.capacity() != v.size()) {
         copy_into_huge_pages(v);
     }
@@ -48,8 +48,8 @@ void shrink_to_fit_huge(std::vector<T>& v) {
 
 /// Moves v's elements into advised memory of exactly their size, when they take enough room to
 /// be worth it: for arrays filled before anyone knew their size (a scene's, as it is read).
-template <class T>
-void move_to_huge_pages(std::vector<T>& v) {
+template <class T, class A>
+void move_to_huge_pages(std::vector<T, A>& v) {
     if (v.size() * sizeof(T) >= kHugePageWorthwhile) {
         copy_into_huge_pages(v);
     }

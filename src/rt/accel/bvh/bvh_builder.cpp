@@ -17,9 +17,31 @@ namespace {
 // Past this many 4-wide levels every split is an object median (which halves): the depth, and
 // so the traversal stack, stays below kMaxDepth + 16 for any 2^32 references.
 constexpr int kMedianDepth = 40;
-// Subtrees at most this deep and at least this big are built on their own thread.
-constexpr int kParallelDepth = 2;
+// Subtrees at least this big, and shallow enough (spawn_depth), are built on their own thread.
 constexpr std::uint32_t kParallelSize = 4096;
+
+// Subtrees above this depth get their own threads: enough of them (four a level) for two a
+// thread, and no more. Each spawned subtree's nodes are copied into its parent's, a copy a level,
+// and a small subtree's arrays are too small for huge pages, so each extra level costs fresh
+// memory, page fault by page fault (docs/lab/bvh-first-build-2026-12-03.md).
+int spawn_depth(unsigned threads) {
+    int depth = 1;
+    while (depth < 3 && (1u << (2 * depth)) < 2 * threads) {
+        ++depth;
+    }
+    return depth;
+}
+
+// Generous guesses of a subtree's nodes and leaves (the 1M sphere and soup have one node per 12
+// references and one leaf per 4), reserved before the build so that the arrays never move while
+// they grow: on a first build each move copied into fresh memory, page fault by page fault. A
+// wrong guess costs a copy, not an error; room reserved and never written costs no memory.
+std::size_t expected_nodes(std::uint32_t references) {
+    return references / 6 + 16;
+}
+std::size_t expected_leaves(std::uint32_t references) {
+    return references / 2 + 16;
+}
 
 struct Pending {
     ReferenceRange range;
@@ -35,8 +57,13 @@ struct Subtree {
 // Builds one subtree into its own arrays; a parent builder appends them to its own.
 class SubtreeBuilder {
 public:
-    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, unsigned threads)
-        : scene_(scene), refs_(refs), threads_(threads) {}
+    /// `references`: how many the subtree holds, to reserve room for its nodes and leaves.
+    SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, unsigned threads,
+                   std::uint32_t references)
+        : scene_(scene), refs_(refs), threads_(threads), spawn_depth_(spawn_depth(threads)) {
+        reserve_huge(nodes_, expected_nodes(references));
+        reserve_huge(leaves_, expected_leaves(references));
+    }
 
     /// The child word for `p` (an inner node's index is local to this builder).
     std::uint32_t build(Pending p, int depth);
@@ -59,6 +86,7 @@ private:
     const Scene& scene_;
     std::span<PolygonReference> refs_;
     unsigned threads_;  ///< more than one: spawn subtrees, bin big ranges in parallel
+    int spawn_depth_;
     std::vector<Node> nodes_;
     std::vector<PendingLeaf> leaves_;
 };
@@ -118,9 +146,10 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
         const Pending& child = children[c];
         if (child.split.leaf) {
             nodes_[index].child[c] = leaf(child.range, index, c);
-        } else if (threads_ > 1 && depth < kParallelDepth && child.range.size() >= kParallelSize) {
+        } else if (threads_ > 1 && depth < spawn_depth_ && child.range.size() >= kParallelSize) {
             spawned.emplace_back(c, std::async(std::launch::async, [this, child, depth] {
-                                     SubtreeBuilder sub(scene_, refs_, threads_);
+                                     SubtreeBuilder sub(scene_, refs_, threads_,
+                                                        child.range.size());
                                      sub.build(child, depth + 1);
                                      return sub.take();
                                  }));
@@ -170,13 +199,14 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
         return result;
     }
     const std::span<PolygonReference> all(refs.bounded);
-    SubtreeBuilder builder(scene, all, threads);
+    SubtreeBuilder builder(scene, all, threads, static_cast<std::uint32_t>(all.size()));
     const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
     result.root = builder.build({whole, split_range(all, whole, false, threads)}, 0);
     Subtree tree = builder.take();
     result.nodes = std::move(tree.nodes);
     fill_leaves(scene, all, tree.leaves, result, threads);
-    result.nodes.shrink_to_fit();
+    // The nodes keep their reserved room: collapse_to_wide frees them soon after, and shrinking
+    // them copied them into fresh memory (25 ms of the 1M sphere's first build).
     shrink_to_fit_huge(result.packets);
     return result;
 }

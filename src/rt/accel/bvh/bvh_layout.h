@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "rt/core/default_init_allocator.h"
+
 namespace rt::bvh {
 
 /// A child word: an inner node's index, or kLeafBit plus the index of the leaf's first packet.
@@ -54,10 +56,14 @@ struct alignas(16) TrianglePacket {
     std::uint32_t position[3][4];
 };
 
+/// The leaves' packets: sized first, then written by every build thread (leaf_filling.cpp), so
+/// sizing them writes nothing.
+using PacketArray = std::vector<TrianglePacket, DefaultInitAllocator<TrianglePacket>>;
+
 /// The whole structure as the builder leaves it and traversal reads it.
 struct Hierarchy {
     std::vector<Node> nodes;
-    std::vector<TrianglePacket> packets;
+    PacketArray packets;
     /// `nodes` collapsed to 8-wide (collapse.cpp); traversal reads these, `nodes` is then empty.
     std::vector<WideNode> wide;
     std::uint32_t root = kNoChild;  ///< a child word; kNoChild for an empty scene

@@ -148,7 +148,7 @@ void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) 
 // visit clears in `rays` are asked no further.
 template <class Visit>
 [[gnu::always_inline]] inline void for_each_leaf_candidate(
-    const std::vector<bvh::TrianglePacket>& packets, const Scene& scene, std::uint32_t leaf,
+    const bvh::PacketArray& packets, const Scene& scene, std::uint32_t leaf,
     const PacketValues& v, std::array<Lane, kPacketSize>& lanes, std::uint32_t& rays, Visit visit) {
     for (int lane = 0; lane < kPacketSize; ++lane) {
         lanes[lane].previous = ~0u;

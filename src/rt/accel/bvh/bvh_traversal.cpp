@@ -83,7 +83,7 @@ __attribute__((target("avx2"))) inline int pair_candidates_avx2(const bvh::Trian
 // returns true. With AVX2, two packets at a time.
 template <bool kAvx2, class Visit>
 [[gnu::always_inline]] inline bool for_each_candidate(
-    const std::vector<bvh::TrianglePacket>& packets, std::uint32_t leaf, const FloatRay& ray,
+    const bvh::PacketArray& packets, std::uint32_t leaf, const FloatRay& ray,
     Visit visit) {
     std::uint32_t previous = ~0u;
     for (std::uint32_t index = leaf & ~kLeafBit;;) {

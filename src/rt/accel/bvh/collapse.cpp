@@ -94,7 +94,11 @@ void collapse_to_wide(Hierarchy& tree) {
     if (tree.root != kNoChild && !is_leaf(tree.root)) {
         reserve_huge(tree.wide, tree.nodes.size() / 2 + 1);
         tree.root = collapse(tree, tree.root, tree.wide);
-        shrink_to_fit_huge(tree.wide);
+        // The guess is usually close (98 % used on the 1M sphere): a copy into fresh memory
+        // would cost more than the few unused nodes.
+        if (tree.wide.capacity() - tree.wide.size() > tree.wide.size() / 8) {
+            shrink_to_fit_huge(tree.wide);
+        }
     }
     tree.nodes.clear();
     tree.nodes.shrink_to_fit();

@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "rt/accel/bvh/leaf_packets.h"
+#include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
@@ -16,35 +17,21 @@ constexpr std::size_t kRecordsAhead = 12;
 constexpr std::size_t kCornersAhead = 6;
 constexpr std::size_t kPositionsAhead = 2;
 
-struct Run {
-    std::vector<TrianglePacket> packets;
-    std::vector<std::uint32_t> first;  ///< each leaf's first packet, within `packets`
-};
-
 std::span<const PolygonReference> refs_of(std::span<const PolygonReference> refs,
                                           const PendingLeaf& leaf) {
     return refs.subspan(leaf.begin, leaf.end - leaf.begin);
 }
 
-// Four fan triangles a packet, each leaf's own: what append_leaf_packets makes today, used only
-// to reserve memory (a wrong guess costs a copy, not an error).
-std::size_t expected_packets(std::span<const PolygonReference> refs,
-                             std::span<const PendingLeaf> leaves) {
-    std::size_t packets = 0;
-    for (const PendingLeaf& leaf : leaves) {
-        std::size_t triangles = 0;
-        for (const PolygonReference& ref : refs_of(refs, leaf)) {
-            triangles += ref.triangles;
-        }
-        packets += (triangles + 3) / 4;
-    }
-    return packets;
+void point_at(Hierarchy& tree, const PendingLeaf& leaf, std::uint32_t packet) {
+    std::uint32_t& word =
+        leaf.node == kNoChild ? tree.root : tree.nodes[leaf.node].child[leaf.slot];
+    word = kLeafBit | packet;
 }
 
+// Writes the leaves' packets from tree.packets[first] on, and points each leaf at its own. Runs on
+// several threads at once: each writes its own packets and its own leaves' child words.
 void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
-              std::span<const PendingLeaf> leaves, std::size_t reserve, Run& run) {
-    reserve_huge(run.packets, reserve);
-    run.first.reserve(leaves.size());
+              std::span<const PendingLeaf> leaves, std::uint32_t first, Hierarchy& tree) {
     const auto ahead = [&](std::size_t i, auto&& ask) {
         if (i < leaves.size()) {
             for (const PolygonReference& ref : refs_of(refs, leaves[i])) {
@@ -52,6 +39,7 @@ void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
             }
         }
     };
+    std::uint32_t packet = first;
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         ahead(i + kRecordsAhead, [](const Polygon& p) { __builtin_prefetch(&p); });
         ahead(i + kCornersAhead,
@@ -61,14 +49,11 @@ void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
                 __builtin_prefetch(&scene.positions[scene.corners[p.first_corner + k]]);
             }
         });
-        run.first.push_back(append_leaf_packets(scene, refs_of(refs, leaves[i]), run.packets));
+        const std::span<const PolygonReference> leaf_refs = refs_of(refs, leaves[i]);
+        write_leaf_packets(scene, leaf_refs, tree.packets.data() + packet);
+        point_at(tree, leaves[i], packet);
+        packet += leaf_packet_count(leaf_refs);
     }
-}
-
-void point_at(Hierarchy& tree, const PendingLeaf& leaf, std::uint32_t packet) {
-    std::uint32_t& word =
-        leaf.node == kNoChild ? tree.root : tree.nodes[leaf.node].child[leaf.slot];
-    word = kLeafBit | packet;
 }
 
 }  // namespace
@@ -92,33 +77,28 @@ void fill_leaves(const Scene& scene, std::span<const PolygonReference> refs,
     const auto run_leaves = [&](std::size_t r) {
         return leaves.subspan(bounds[r], bounds[r + 1] - bounds[r]);
     };
-    std::vector<Run> runs(count);
+    // Each run's packets go straight to their place in the tree's one array, sized first (which
+    // writes nothing: PacketArray): before, all but the first run's were copied there after.
+    std::vector<std::uint32_t> first(count + 1, 0);
+    for (std::size_t r = 0; r < count; ++r) {
+        std::uint64_t packets = first[r];
+        for (const PendingLeaf& leaf : run_leaves(r)) {
+            packets += leaf_packet_count(refs_of(refs, leaf));
+        }
+        if (packets >= kLeafBit) {
+            throw Error("the BVH cannot hold more than 2^31 triangle packets (8.6e9 triangles)");
+        }
+        first[r + 1] = static_cast<std::uint32_t>(packets);
+    }
+    reserve_huge(tree.packets, first[count]);
+    tree.packets.resize(first[count]);
     std::vector<std::thread> pool;
     for (std::size_t r = 1; r < count; ++r) {
-        pool.emplace_back([&, r] {
-            fill_run(scene, refs, run_leaves(r), expected_packets(refs, run_leaves(r)), runs[r]);
-        });
+        pool.emplace_back([&, r] { fill_run(scene, refs, run_leaves(r), first[r], tree); });
     }
-    // The first run's packets become the tree's: room for every run's.
-    fill_run(scene, refs, run_leaves(0), expected_packets(refs, leaves), runs[0]);
+    fill_run(scene, refs, run_leaves(0), first[0], tree);
     for (std::thread& t : pool) {
         t.join();
-    }
-    std::size_t total = 0;
-    for (const Run& run : runs) {
-        total += run.packets.size();
-    }
-    tree.packets = std::move(runs[0].packets);
-    reserve_huge(tree.packets, total);
-    for (std::size_t r = 0; r < count; ++r) {
-        const auto offset = static_cast<std::uint32_t>(r == 0 ? 0 : tree.packets.size());
-        if (r > 0) {
-            tree.packets.insert(tree.packets.end(), runs[r].packets.begin(), runs[r].packets.end());
-            runs[r].packets = {};
-        }
-        for (std::size_t i = bounds[r]; i < bounds[r + 1]; ++i) {
-            point_at(tree, leaves[i], offset + runs[r].first[i - bounds[r]]);
-        }
     }
 }
 

@@ -46,30 +46,37 @@ void prefetch_leaf(const Scene& scene, std::span<const PolygonReference> refs) {
 
 }  // namespace
 
-std::uint32_t append_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
-                                  std::vector<TrianglePacket>& packets) {
+std::uint32_t leaf_packet_count(std::span<const PolygonReference> refs) {
+    std::uint32_t triangles = 0;
+    for (const PolygonReference& ref : refs) {
+        triangles += ref.triangles;
+    }
+    return (triangles + 3) / 4;
+}
+
+void write_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
+                        TrianglePacket* out) {
     prefetch_leaf(scene, refs);
-    const auto first = static_cast<std::uint32_t>(packets.size());
+    TrianglePacket* packet = out - 1;
     int lane = 4;  // the current packet is full: start a new one
     for (const PolygonReference& ref : refs) {
         const Polygon& p = scene.polygons[ref.polygon];
         for (std::uint32_t i = 1; i + 1 < p.corner_count; ++i) {
             if (lane == 4) {
-                packets.emplace_back();
+                ++packet;
                 lane = 0;
             }
             const Vec3 corners[3] = {scene.corner_position(p, 0), scene.corner_position(p, i),
                                      scene.corner_position(p, i + 1)};
             const std::uint32_t* triangle =
                 p.corner_count == 3 ? scene.corners.data() + p.first_corner : nullptr;
-            set_lane(packets.back(), lane++, corners, ref.polygon, triangle);
+            set_lane(*packet, lane++, corners, ref.polygon, triangle);
         }
     }
     for (; lane < 4; ++lane) {
-        copy_lane(packets.back(), lane - 1, lane);
+        copy_lane(*packet, lane - 1, lane);
     }
-    packets.back().polygon[3] |= kLastPacketBit;
-    return first;
+    packet->polygon[3] |= kLastPacketBit;
 }
 
 }  // namespace rt::bvh

@@ -1,0 +1,33 @@
+// An allocator whose value-less construction leaves the element uninitialised (default-init), for
+// big arrays of plain data that are sized first and then written in parallel: std::vector's
+// resize() would otherwise zero every element on one thread, touching all the fresh memory twice.
+#pragma once
+
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+
+namespace rt {
+
+template <class T>
+class DefaultInitAllocator : public std::allocator<T> {
+public:
+    using std::allocator<T>::allocator;
+    // The allocator requirements name it; std::allocator's own would rebind to std::allocator.
+    template <class U>
+    struct rebind {  // NOLINT(readability-identifier-naming)
+        using other = DefaultInitAllocator<U>;
+    };
+
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        std::construct_at(p, std::forward<Args>(args)...);
+    }
+};
+
+}  // namespace rt
