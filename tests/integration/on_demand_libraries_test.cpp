@@ -95,7 +95,8 @@ TEST_F(WithoutTheLibrary, SdlRendersWithoutAWindowAndShowSummarises) {
     const ProgramResult r = run("libSDL2-2.0.so.0", "rt", render("a.ppm"));
     EXPECT_EQ(r.exit_code, 0) << r.out;
     // The build has SDL2 but cannot load it, or lacks it.
-    EXPECT_TRUE(r.out.find("rt: warning: no window: cannot load libSDL2-2.0.so.0: ") != std::string::npos ||
+    EXPECT_TRUE(r.out.find("rt: warning: no window: cannot load libSDL2-2.0.so.0: ") !=
+                    std::string::npos ||
                 r.out.find("built without SDL2") != std::string::npos)
         << r.out;
     ASSERT_TRUE(fs::exists(dir_.path() / "a.ppm"));

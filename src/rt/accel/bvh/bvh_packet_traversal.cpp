@@ -147,9 +147,11 @@ void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) 
 // the pre-filter cannot rule out for it, once per run of equal ids per lane. Lanes whose bit
 // visit clears in `rays` are asked no further.
 template <class Visit>
-[[gnu::always_inline]] inline void for_each_leaf_candidate(
-    const bvh::PacketArray& packets, const Scene& scene, std::uint32_t leaf,
-    const PacketValues& v, std::array<Lane, kPacketSize>& lanes, std::uint32_t& rays, Visit visit) {
+[[gnu::always_inline]] inline void for_each_leaf_candidate(const bvh::PacketArray& packets,
+                                                           const Scene& scene, std::uint32_t leaf,
+                                                           const PacketValues& v,
+                                                           std::array<Lane, kPacketSize>& lanes,
+                                                           std::uint32_t& rays, Visit visit) {
     for (int lane = 0; lane < kPacketSize; ++lane) {
         lanes[lane].previous = ~0u;
     }
@@ -223,10 +225,12 @@ __attribute__((target("avx2"))) std::uint32_t still_reaching(const StackEntry& e
 // which tests a node's eight children at once where the packet tests them a child at a time. It
 // offers each lane the single ray's candidates, so its answer stays the single ray's. Returns the
 // lanes the single walk cannot take (none, as set_up_packet chooses its lanes).
-__attribute__((target("avx2"))) std::uint32_t go_on_alone(
-    const bvh::Hierarchy& tree, const Scene& scene, std::uint32_t child, PacketValues& v,
-    PacketBounds& b, std::array<Lane, kPacketSize>& lanes, std::uint32_t rays,
-    TraceCounters& counters) {
+__attribute__((target("avx2"))) std::uint32_t go_on_alone(const bvh::Hierarchy& tree,
+                                                          const Scene& scene, std::uint32_t child,
+                                                          PacketValues& v, PacketBounds& b,
+                                                          std::array<Lane, kPacketSize>& lanes,
+                                                          std::uint32_t rays,
+                                                          TraceCounters& counters) {
     std::uint32_t left = rays;
     for (std::uint32_t r = rays; r != 0; r &= r - 1) {
         const int lane = std::countr_zero(r);

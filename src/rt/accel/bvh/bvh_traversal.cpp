@@ -82,9 +82,9 @@ __attribute__((target("avx2"))) inline int pair_candidates_avx2(const bvh::Trian
 // once per run of equal ids (a polygon's fan triangles are adjacent). Stops early when visit
 // returns true. With AVX2, two packets at a time.
 template <bool kAvx2, class Visit>
-[[gnu::always_inline]] inline bool for_each_candidate(
-    const bvh::PacketArray& packets, std::uint32_t leaf, const FloatRay& ray,
-    Visit visit) {
+[[gnu::always_inline]] inline bool for_each_candidate(const bvh::PacketArray& packets,
+                                                      std::uint32_t leaf, const FloatRay& ray,
+                                                      Visit visit) {
     std::uint32_t previous = ~0u;
     for (std::uint32_t index = leaf & ~kLeafBit;;) {
         const bvh::TrianglePacket* packet = &packets[index];
@@ -235,7 +235,8 @@ template <bool kAvx2>
 // packet's lane going on alone: single_ray_walk.h).
 class NearestHitElsewhere {
 public:
-    NearestHitElsewhere(const RaySpace& space, ClosestHitSoFar& best) : space_(space), best_(best) {}
+    NearestHitElsewhere(const RaySpace& space, ClosestHitSoFar& best)
+        : space_(space), best_(best) {}
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
                TraceCounters& counters) {
         ++counters.polygon_tests;

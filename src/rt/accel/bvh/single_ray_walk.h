@@ -5,9 +5,9 @@
 
 #include <cstdint>
 
+#include "rt/accel/accelerator.h"
 #include "rt/accel/bvh/bvh_layout.h"
 #include "rt/accel/hit.h"
-#include "rt/accel/accelerator.h"
 #include "rt/geometry/ray_polygon.h"
 #include "rt/scene/scene.h"
 
