@@ -223,26 +223,22 @@ __attribute__((target("avx2"))) std::uint32_t still_reaching(const StackEntry& e
 
 // Few lanes left in the subtree at `child`: each goes on alone, with the single ray's walk,
 // which tests a node's eight children at once where the packet tests them a child at a time. It
-// offers each lane the single ray's candidates, so its answer stays the single ray's. Returns the
-// lanes the single walk cannot take (none, as set_up_packet chooses its lanes).
-__attribute__((target("avx2"))) std::uint32_t go_on_alone(const bvh::Hierarchy& tree,
-                                                          const Scene& scene, std::uint32_t child,
-                                                          PacketValues& v, PacketBounds& b,
-                                                          std::array<Lane, kPacketSize>& lanes,
-                                                          std::uint32_t rays,
-                                                          TraceCounters& counters) {
-    std::uint32_t left = rays;
+// offers each lane the single ray's candidates, so its answer stays the single ray's. The lane's
+// float form is taken from the packet's values, which set_up_packet made bit for bit the
+// single ray's: building it again from the ray cost three divisions a lane.
+__attribute__((target("avx2"))) void go_on_alone(const bvh::Hierarchy& tree, const Scene& scene,
+                                                 std::uint32_t child, PacketValues& v,
+                                                 PacketBounds& b,
+                                                 std::array<Lane, kPacketSize>& lanes,
+                                                 std::uint32_t rays, TraceCounters& counters) {
     for (std::uint32_t r = rays; r != 0; r &= r - 1) {
         const int lane = std::countr_zero(r);
         Lane& l = lanes[lane];
-        if (bvh::nearest_below(tree, scene, child, l.ray(), l.interval(), l.space(), l.best(),
-                               counters)) {
-            v.t_max[lane] = bvh::lane_scaled_up(v, lane, l.best().reach());
-            left &= ~(1u << lane);
-        }
+        bvh::nearest_below(tree, scene, child, bvh::lane_float_ray(v, lane), l.interval(),
+                           l.space(), l.best(), counters);
+        v.t_max[lane] = bvh::lane_scaled_up(v, lane, l.best().reach());
     }
     b.t_max = lanes_max(_mm256_load_ps(v.t_max));
-    return left;
 }
 
 // Front to back for the packet: the nearest child (by its lanes' nearest entry) first, the
@@ -261,11 +257,9 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
     for (;;) {
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             if (std::popcount(rays) <= kFewLanes) {
-                rays = go_on_alone(tree, scene, child, v, b, lanes, rays, counters);
-                if (rays == 0) {
-                    child = bvh::kNoChild;
-                    break;
-                }
+                go_on_alone(tree, scene, child, v, b, lanes, rays, counters);
+                child = bvh::kNoChild;
+                break;
             }
             counters.nodes_visited += std::popcount(rays);
             const bvh::WideNode& node = inner_node(tree, child);

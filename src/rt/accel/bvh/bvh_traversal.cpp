@@ -386,22 +386,17 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
     return nearest.best();
 }
 
-bool bvh::nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t start,
-                        const Ray& ray, Interval t, const RaySpace& space, ClosestHitSoFar& best,
-                        TraceCounters& counters) {
-    const FloatRay fray(ray, tree.scale);
-    if (!fray.usable) {
-        return false;
-    }
+void bvh::nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t start,
+                        const FloatRay& fray, Interval t, const RaySpace& space,
+                        ClosestHitSoFar& best, TraceCounters& counters) {
     NearestHitElsewhere nearest(space, best);
 #ifdef RT_BVH_AVX2
     if (cpu_has_avx2) {
         nearest_below_avx2(tree, scene, fray, t, start, nearest, counters);
-        return true;
+        return;
     }
 #endif
     nearest_in_tree<false>(tree, scene, fray, t, start, nearest, counters);
-    return true;
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {

@@ -14,6 +14,25 @@
 
 namespace rt::bvh {
 
+FloatRay lane_float_ray(const PacketValues& v, int lane) {
+    FloatRay ray;
+    ray.usable = true;
+    ray.scale_t = v.scale_t[lane];
+    for (int k = 0; k < 3; ++k) {
+        ray.origin[k] = v.origin[k][lane];
+        ray.inverse[k] = v.inverse[k][lane];
+        ray.slab_margin[k] = v.margin[k][lane];
+    }
+    ray.kx = v.kx[lane];
+    ray.ky = v.ky[lane];
+    ray.kz = v.kz[lane];
+    ray.shear_x = v.shear_x[lane];
+    ray.shear_y = v.shear_y[lane];
+    ray.edge_margin_linear = v.edge_linear[lane];
+    ray.edge_margin_constant = v.edge_constant[lane];
+    return ray;
+}
+
 float lane_scaled_down(const PacketValues& v, int lane, double t) {
     return float_below(t * v.scale_t[lane]);
 }

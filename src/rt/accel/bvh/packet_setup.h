@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "rt/accel/accelerator.h"
+#include "rt/accel/float_prefilter/float_ray.h"
 
 namespace rt::bvh {
 
@@ -27,6 +28,9 @@ struct alignas(32) PacketValues {
     int kz[8];
     bool same_axes;  ///< every set-up lane has the same kz
 };
+
+/// A set-up lane's FloatRay: the same values FloatRay(ray, scene_scale) computes for its ray.
+FloatRay lane_float_ray(const PacketValues& v, int lane);
 
 /// FloatRay::scaled_down and scaled_up for a lane.
 float lane_scaled_down(const PacketValues& v, int lane, double t);

@@ -36,6 +36,8 @@ struct FloatRay {
     float edge_margin_constant = 0.0f;  ///< plus this
 
     FloatRay(const Ray& ray, double scene_scale);
+    /// Unusable until its fields are filled (a packet's lane, bvh/packet_setup.h).
+    FloatRay() = default;
 
     /// t as the float tests see it, rounded towards -inf or +inf (so comparisons stay safe).
     /// Inline: the traversal calls them after every leaf.
