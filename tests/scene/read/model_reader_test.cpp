@@ -3,7 +3,9 @@
 #include "rt/scene/read/model_reader.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "model_files.h"
@@ -127,6 +129,36 @@ TEST_F(ModelReader, AnOpenModelIsWarnedAbout) {
     EXPECT_EQ(warnings(), (std::vector<std::string>{
                               "m.obj: the model is not watertight: 9 edges border one polygon "
                               "only"}));
+}
+
+TEST_F(ModelReader, AnEdgeOfThreePolygonsIsWarnedAbout) {
+    // Three triangles on the edge 1-2; their other six edges border one each.
+    read("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n");
+    EXPECT_EQ(warnings(), (std::vector<std::string>{
+                              "m.obj: the model is not watertight: 6 edges border one polygon "
+                              "only, 1 edge borders more than two"}));
+}
+
+TEST_F(ModelReader, ALoopOfManyCornersThroughOneCornerTwiceIsSkipped) {
+    // 20 corners on a circle, the loop passing through the first twice.
+    std::string obj;
+    for (int k = 0; k < 20; ++k) {
+        obj += fmt::format("v {} {} 0\n", std::cos(k * 0.314159), std::sin(k * 0.314159));
+    }
+    obj += "f";
+    for (int k = 1; k <= 20; ++k) {
+        obj += fmt::format(" {}", k);
+    }
+    obj += " 1 10\nf";
+    for (int k = 1; k <= 20; ++k) {
+        obj += fmt::format(" {}", k);
+    }
+    obj += "\n";
+    const SurfaceMesh m = read("m.obj", obj);
+    ASSERT_EQ(m.polygons.size(), 1u);
+    EXPECT_EQ(m.polygons[0].corner_count, 20u);
+    const std::vector<std::string> w = warnings();
+    EXPECT_EQ(w.front(), "m.obj: polygon 0 passes through one corner twice; skipped");
 }
 
 TEST_F(ModelReader, PointsAndLinesAreSkippedWithAWarning) {

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <bit>
-#include <unordered_map>
+#include <cstdint>
+#include <vector>
 
+#include "rt/core/huge_pages.h"
 #include "rt/scene/read/field_reader.h"
 
 #include <fmt/format.h>
@@ -24,11 +26,89 @@ struct PositionKey {
     bool operator==(const PositionKey&) const = default;
 };
 
-struct PositionHash {
-    std::size_t operator()(const PositionKey& k) const {
-        return std::hash<std::uint64_t>{}(k.x ^ (k.y * 0x9e3779b97f4a7c15ULL) ^
-                                          (k.z * 0xc2b2ae3d27d4eb4fULL));
+// Slots for an open-addressing table of at most `keys` keys: a power of two with a quarter more
+// room than that, so that it never fills (a closed mesh's edges and a model's distinct positions
+// are far fewer than the bound). In fresh memory every page is faulted in and zeroed, so the
+// tables are no bigger than this, and on huge pages.
+std::size_t table_size(std::size_t keys) {
+    return std::bit_ceil(std::max<std::size_t>(16, keys + keys / 4 + 1));
+}
+
+std::uint64_t position_hash(const PositionKey& k) {
+    const std::uint64_t h = k.x ^ (k.y * 0x9e3779b97f4a7c15ULL) ^ (k.z * 0xc2b2ae3d27d4eb4fULL);
+    return (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
+}
+
+// The first vertex at each position, by open addressing over one array of vertex indices (a
+// position's key is its first vertex's): 4 bytes a slot, no allocation per vertex. A
+// std::unordered_map of the keys took a fifth of a million-triangle model's load, most of it in the
+// kernel handing out memory for its nodes.
+class FirstVertexAt {
+public:
+    explicit FirstVertexAt(const std::vector<Vec3>& vertices)
+        : vertices_(vertices), mask_(table_size(vertices.size()) - 1) {
+        reserve_huge(slots_, mask_ + 1);
+        slots_.resize(mask_ + 1, kEmpty);
     }
+
+    /// The first vertex before `v` at v's position, or v itself (which is then recorded).
+    std::uint32_t first_at(std::uint32_t v) {
+        const PositionKey key(vertices_[v]);
+        for (std::size_t i = position_hash(key) & mask_;; i = (i + 1) & mask_) {
+            if (slots_[i] == kEmpty) {
+                slots_[i] = v;
+                return v;
+            }
+            if (PositionKey(vertices_[slots_[i]]) == key) {
+                return slots_[i];
+            }
+        }
+    }
+
+private:
+    static constexpr std::uint32_t kEmpty = 0xffffffffu;
+    const std::vector<Vec3>& vertices_;
+    std::size_t mask_;
+    std::vector<std::uint32_t> slots_;
+};
+
+// How many polygons border each undirected edge (a << 32 | b, a <= b), counted up to 3 (more
+// than two is all the check asks), by open addressing: no allocation per edge (a
+// std::unordered_map spent most of its time getting memory for its nodes).
+class EdgeUses {
+public:
+    explicit EdgeUses(std::size_t most_edges) : mask_(table_size(most_edges) - 1) {
+        reserve_huge(edges_, mask_ + 1);
+        edges_.resize(mask_ + 1, kEmpty);
+        reserve_huge(counts_, mask_ + 1);
+        counts_.resize(mask_ + 1, 0);
+    }
+
+    void add(std::uint64_t edge) {
+        std::size_t i = (((edge ^ (edge >> 31)) * 0x9e3779b97f4a7c15ULL) >> 20) & mask_;
+        while (edges_[i] != edge && edges_[i] != kEmpty) {
+            i = (i + 1) & mask_;
+        }
+        edges_[i] = edge;
+        counts_[i] = static_cast<std::uint8_t>(std::min(counts_[i] + 1, 3));
+    }
+
+    /// Calls f(count) for each edge.
+    template <class F>
+    void for_each(F&& f) const {
+        for (std::size_t i = 0; i < edges_.size(); ++i) {
+            if (edges_[i] != kEmpty) {
+                f(counts_[i]);
+            }
+        }
+    }
+
+private:
+    // Never an edge: its second corner is not above its first.
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+    std::size_t mask_;
+    std::vector<std::uint64_t> edges_;
+    std::vector<std::uint8_t> counts_;
 };
 
 // The loop with corners that repeat their predecessor (cyclically) dropped; normals follow.
@@ -51,30 +131,52 @@ void drop_repeats(std::vector<std::uint32_t>& loop, std::vector<Vec3>& normals) 
     normals.resize(normals.empty() ? 0 : kept);
 }
 
-bool visits_a_corner_twice(std::vector<std::uint32_t> loop) {
+// Out of line: inlined into weld_vertices, GCC 12 mistook the copy's release for freeing a
+// pointer into the middle of a block (-Wfree-nonheap-object).
+[[gnu::noinline]] bool sorted_has_repeat(std::vector<std::uint32_t> loop) {
     std::sort(loop.begin(), loop.end());
     return std::adjacent_find(loop.begin(), loop.end()) != loop.end();
+}
+
+bool visits_a_corner_twice(const std::vector<std::uint32_t>& loop) {
+    if (loop.size() <= 16) {  // most polygons: no copy, no allocation
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            if (std::find(loop.begin() + static_cast<std::ptrdiff_t>(i) + 1, loop.end(), loop[i]) !=
+                loop.end()) {
+                return true;
+            }
+        }
+        return false;
+    }
+    return sorted_has_repeat(loop);
 }
 
 }  // namespace
 
 void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diagnostics) {
-    std::unordered_map<PositionKey, std::uint32_t, PositionHash> index_of;
-    index_of.reserve(mesh.vertices.size());
     std::vector<Vec3> vertices;
     std::vector<std::uint32_t> welded(mesh.vertices.size());
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        const auto [it, fresh] = index_of.emplace(PositionKey(mesh.vertices[v]),
-                                                  static_cast<std::uint32_t>(vertices.size()));
-        if (fresh) {
-            vertices.push_back(mesh.vertices[v]);
+    {
+        FirstVertexAt first(mesh.vertices);
+        for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+            const std::uint32_t f = first.first_at(v);
+            if (f == v) {
+                welded[v] = static_cast<std::uint32_t>(vertices.size());
+                vertices.push_back(mesh.vertices[v]);
+            } else {
+                welded[v] = welded[f];
+            }
         }
-        welded[v] = it->second;
     }
     SurfaceMesh out;
     out.vertices = std::move(vertices);
     out.materials = std::move(mesh.materials);
     const bool has_normals = !mesh.corner_normals.empty();
+    out.polygons.reserve(mesh.polygons.size());
+    out.corners.reserve(mesh.corners.size());
+    if (has_normals) {
+        out.corner_normals.reserve(mesh.corner_normals.size());
+    }
     std::vector<std::uint32_t> loop;
     std::vector<Vec3> normals;
     for (const MeshPolygon& p : mesh.polygons) {
@@ -100,8 +202,7 @@ void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diag
 
 void warn_if_not_watertight(const SurfaceMesh& mesh, const std::string& name,
                             Diagnostics& diagnostics) {
-    std::unordered_map<std::uint64_t, std::uint32_t> uses;  // undirected edge -> polygons
-    uses.reserve(mesh.corners.size());
+    EdgeUses uses(mesh.corners.size());
     for (const MeshPolygon& p : mesh.polygons) {
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
             std::uint64_t a = mesh.corners[p.first_corner + k];
@@ -109,26 +210,28 @@ void warn_if_not_watertight(const SurfaceMesh& mesh, const std::string& name,
             if (a > b) {
                 std::swap(a, b);
             }
-            ++uses[(a << 32) | b];
+            uses.add((a << 32) | b);
         }
     }
     std::size_t open = 0;
     std::size_t crowded = 0;
-    for (const auto& [edge, count] : uses) {
+    uses.for_each([&](std::uint8_t count) {
         open += count == 1 ? 1 : 0;
         crowded += count > 2 ? 1 : 0;
-    }
+    });
     if (open == 0 && crowded == 0) {
         return;
     }
     std::string why;
     if (open > 0) {
-        why = fmt::format("{} border one polygon only",
-                          count_of(static_cast<std::int64_t>(open), "edge"));
+        why =
+            fmt::format("{} {} one polygon only", count_of(static_cast<std::int64_t>(open), "edge"),
+                        open == 1 ? "borders" : "border");
     }
     if (crowded > 0) {
-        why += fmt::format("{}{} border more than two", why.empty() ? "" : ", ",
-                           count_of(static_cast<std::int64_t>(crowded), "edge"));
+        why += fmt::format("{}{} {} more than two", why.empty() ? "" : ", ",
+                           count_of(static_cast<std::int64_t>(crowded), "edge"),
+                           crowded == 1 ? "borders" : "border");
     }
     diagnostics.warn(name + ": the model is not watertight: " + why);
 }

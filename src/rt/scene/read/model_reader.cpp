@@ -199,6 +199,18 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
                                 m.mMaterialIndex, offsets_.size()));
     }
     const auto base = static_cast<std::uint32_t>(mesh_.vertices.size());
+    // Room for the whole mesh first: growing by doubling copied a million-polygon model's arrays
+    // into fresh memory again and again.
+    std::size_t corners = 0;
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+        corners += std::min<std::size_t>(m.mFaces[f].mNumIndices, kMaxEdgesPerPolygon + 1);
+    }
+    mesh_.vertices.reserve(mesh_.vertices.size() + m.mNumVertices);
+    mesh_.polygons.reserve(mesh_.polygons.size() + m.mNumFaces);
+    mesh_.corners.reserve(mesh_.corners.size() + corners);
+    if (any_normals_ || m.HasNormals()) {
+        mesh_.corner_normals.reserve(mesh_.corners.size() + corners);
+    }
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
         const aiVector3D& p = m.mVertices[v];
         mesh_.vertices.push_back(t.point({p.x, p.y, p.z}));
