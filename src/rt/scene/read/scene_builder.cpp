@@ -1,6 +1,8 @@
 #include "rt/scene/read/scene_builder.h"
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "rt/scene/polygon_geometry.h"
 #include "rt/scene/read/field_reader.h"
@@ -47,6 +49,15 @@ bool within_range(const Vec3& p) {
            std::fabs(p.z) <= kMaxCoordinate;
 }
 
+// Room for `more` elements beyond v's size, growing at least geometrically: reserving exactly what
+// each surface adds would copy the arrays once per surface.
+template <class T>
+void reserve_more(std::vector<T>& v, std::size_t more) {
+    if (v.capacity() - v.size() < more) {
+        v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+    }
+}
+
 std::string out_of_range(std::string_view what, const Vec3& from, const Vec3& to) {
     return fmt::format("{} {} is placed at {}, outside the coordinate range {:g} to {:g}", what,
                        show_point(from.x, from.y, from.z), show_point(to.x, to.y, to.z),
@@ -84,6 +95,12 @@ void SceneBuilder::add_surface(const ScnSurface& entry, const SurfaceMesh& mesh,
                     std::vector<std::uint32_t>(mesh.vertices.size(), kUnplaced),
                     {}};
     scene_.surfaces.push_back(entry.surface);
+    // Room for the whole surface first: a million-polygon model's arrays were otherwise copied
+    // into fresh memory at every doubling.
+    reserve_more(scene_.polygons, mesh.polygons.size());
+    reserve_more(scene_.polygon_origin, mesh.polygons.size());
+    reserve_more(scene_.corners, mesh.corners.size());
+    reserve_more(scene_.positions, mesh.vertices.size());
     for (const MeshPolygon& polygon : mesh.polygons) {
         add_polygon(placing, polygon);
     }
