@@ -206,8 +206,7 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
     result.nodes = std::move(tree.nodes);
     fill_leaves(scene, all, tree.leaves, result, threads);
     // The nodes keep their reserved room: collapse_to_wide frees them soon after, and shrinking
-    // them copied them into fresh memory (25 ms of the 1M sphere's first build).
-    shrink_to_fit_huge(result.packets);
+    // them copied them into fresh memory. The packets were sized exactly (fill_leaves).
     return result;
 }
 

@@ -49,10 +49,8 @@ void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
                 __builtin_prefetch(&scene.positions[scene.corners[p.first_corner + k]]);
             }
         });
-        const std::span<const PolygonReference> leaf_refs = refs_of(refs, leaves[i]);
-        write_leaf_packets(scene, leaf_refs, tree.packets.data() + packet);
         point_at(tree, leaves[i], packet);
-        packet += leaf_packet_count(leaf_refs);
+        packet += write_leaf_packets(scene, refs_of(refs, leaves[i]), tree.packets.data() + packet);
     }
 }
 

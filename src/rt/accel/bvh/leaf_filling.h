@@ -23,8 +23,9 @@ struct PendingLeaf {
     std::uint32_t end = 0;
 };
 
-/// Appends the leaves' packets to tree.packets in the order given, and points each leaf's child
-/// word (or tree.root) at its first packet. `threads` splits the leaves into that many runs.
+/// Sizes tree.packets to the leaves' packets and writes them in the order given, and points each
+/// leaf's child word (or tree.root) at its first packet. `threads` splits the leaves into that many
+/// runs.
 void fill_leaves(const Scene& scene, std::span<const PolygonReference> refs,
                  std::span<const PendingLeaf> leaves, Hierarchy& tree, unsigned threads);
 

@@ -54,8 +54,8 @@ std::uint32_t leaf_packet_count(std::span<const PolygonReference> refs) {
     return (triangles + 3) / 4;
 }
 
-void write_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
-                        TrianglePacket* out) {
+std::uint32_t write_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
+                                 TrianglePacket* out) {
     prefetch_leaf(scene, refs);
     TrianglePacket* packet = out - 1;
     int lane = 4;  // the current packet is full: start a new one
@@ -77,6 +77,7 @@ void write_leaf_packets(const Scene& scene, std::span<const PolygonReference> re
         copy_lane(*packet, lane - 1, lane);
     }
     packet->polygon[3] |= kLastPacketBit;
+    return static_cast<std::uint32_t>(packet - out + 1);
 }
 
 }  // namespace rt::bvh

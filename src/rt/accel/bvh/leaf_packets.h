@@ -13,9 +13,9 @@ namespace rt::bvh {
 std::uint32_t leaf_packet_count(std::span<const PolygonReference> refs);
 
 /// Writes the fan triangles (v0, v_i, v_i+1) of every referenced polygon, four to a packet, into
-/// the leaf_packet_count(refs) packets at `out`, and marks the last. `refs` must not be empty
-/// (each reference has at least one triangle).
-void write_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
-                        TrianglePacket* out);
+/// the leaf_packet_count(refs) packets at `out`, and marks the last; returns that count. `refs`
+/// must not be empty (each reference has at least one triangle).
+std::uint32_t write_leaf_packets(const Scene& scene, std::span<const PolygonReference> refs,
+                                 TrianglePacket* out);
 
 }  // namespace rt::bvh
