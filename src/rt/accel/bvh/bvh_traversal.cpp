@@ -15,6 +15,7 @@
 #include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/bvh/single_ray_walk.h"
+#include "rt/core/prefetch.h"
 #include "rt/geometry/ray_polygon.h"
 
 namespace rt {
@@ -118,23 +119,14 @@ template <bool kAvx2, class Visit>
 
 // Asks for a child's first cache lines early: a ray spends much of its time waiting for memory.
 void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
-#if defined(__GNUC__)
-    const void* at = bvh::is_leaf(child)
-                         ? static_cast<const void*>(&tree.packets[child & ~kLeafBit])
-                         : static_cast<const void*>(&tree.wide[child]);
-    __builtin_prefetch(at);
-    __builtin_prefetch(static_cast<const char*>(at) + 64);
-    __builtin_prefetch(static_cast<const char*>(at) + 128);
-    __builtin_prefetch(static_cast<const char*>(at) + 192);
-    if (bvh::is_leaf(child)) {  // two packets reach into an eighth cache line
-        for (int line = 4; line < 7; ++line) {
-            __builtin_prefetch(static_cast<const char*>(at) + std::ptrdiff_t{64} * line);
-        }
+    const char* at = bvh::is_leaf(child)
+                         ? reinterpret_cast<const char*>(&tree.packets[child & ~kLeafBit])
+                         : reinterpret_cast<const char*>(&tree.wide[child]);
+    // A wide node fills four cache lines; two packets reach into a seventh.
+    const int lines = bvh::is_leaf(child) ? 7 : 4;
+    for (int line = 0; line < lines; ++line) {
+        prefetch(at + std::ptrdiff_t{64} * line);
     }
-#else
-    (void)tree;
-    (void)child;
-#endif
 }
 
 // Orders a pair by entry, nearest first, without a branch to mispredict.

@@ -6,6 +6,7 @@
 #include "rt/accel/bvh/leaf_packets.h"
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
+#include "rt/core/prefetch.h"
 
 namespace rt::bvh {
 
@@ -41,12 +42,12 @@ void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
     };
     std::uint32_t packet = first;
     for (std::size_t i = 0; i < leaves.size(); ++i) {
-        ahead(i + kRecordsAhead, [](const Polygon& p) { __builtin_prefetch(&p); });
+        ahead(i + kRecordsAhead, [](const Polygon& p) { prefetch(&p); });
         ahead(i + kCornersAhead,
-              [&](const Polygon& p) { __builtin_prefetch(scene.corners.data() + p.first_corner); });
+              [&](const Polygon& p) { prefetch(scene.corners.data() + p.first_corner); });
         ahead(i + kPositionsAhead, [&](const Polygon& p) {
             for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-                __builtin_prefetch(&scene.positions[scene.corners[p.first_corner + k]]);
+                prefetch(&scene.positions[scene.corners[p.first_corner + k]]);
             }
         });
         point_at(tree, leaves[i], packet);

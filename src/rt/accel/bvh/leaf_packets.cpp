@@ -1,5 +1,7 @@
 #include "rt/accel/bvh/leaf_packets.h"
 
+#include "rt/core/prefetch.h"
+
 namespace rt::bvh {
 
 namespace {
@@ -31,15 +33,15 @@ void copy_lane(TrianglePacket& packet, int from, int to) {
 // of queueing one behind the other.
 void prefetch_leaf(const Scene& scene, std::span<const PolygonReference> refs) {
     for (const PolygonReference& ref : refs) {
-        __builtin_prefetch(&scene.polygons[ref.polygon]);
+        prefetch(&scene.polygons[ref.polygon]);
     }
     for (const PolygonReference& ref : refs) {
-        __builtin_prefetch(scene.corners.data() + scene.polygons[ref.polygon].first_corner);
+        prefetch(scene.corners.data() + scene.polygons[ref.polygon].first_corner);
     }
     for (const PolygonReference& ref : refs) {
         const Polygon& p = scene.polygons[ref.polygon];
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
-            __builtin_prefetch(&scene.positions[scene.corners[p.first_corner + k]]);
+            prefetch(&scene.positions[scene.corners[p.first_corner + k]]);
         }
     }
 }
