@@ -312,24 +312,142 @@ void grow_by_centroid(Box& box, const PolygonReference& ref) {
     }
 }
 
+#if defined(__SSE2__)
+// The two sides' boxes of centres, grown in registers as references are judged. Each side grows
+// by the centre or by a value that leaves it as it is (+inf for a minimum, -inf for a maximum),
+// chosen without a branch, so that judging a block of references has no branch to mispredict.
+// The lanes are grow_by_centroid's float operations: std::min(box, c) is (c < box ? c : box),
+// which _mm_min_ps(c, box) is, and so for the maximum; the boxes are the same bit for bit.
+class CentroidBoxes {
+public:
+    void grow(bool left, const PolygonReference& ref) {
+        // {lo0, lo1, lo2, hi0} and {lo2, hi0, hi1, hi2}, each to three lanes and a copy.
+        const __m128 low_part = _mm_loadu_ps(ref.box.lo);
+        const __m128 high_part = _mm_loadu_ps(ref.box.lo + 2);
+        const __m128 lo = _mm_shuffle_ps(low_part, low_part, _MM_SHUFFLE(2, 2, 1, 0));
+        const __m128 hi = _mm_shuffle_ps(high_part, high_part, _MM_SHUFFLE(3, 3, 2, 1));
+        const __m128 centre = _mm_mul_ps(_mm_set1_ps(0.5f), _mm_add_ps(lo, hi));
+        const __m128 left_mask = _mm_castsi128_ps(_mm_set1_epi32(left ? -1 : 0));
+        const auto pick = [&](__m128 if_left, __m128 if_right) {
+            return _mm_or_ps(_mm_and_ps(left_mask, if_left), _mm_andnot_ps(left_mask, if_right));
+        };
+        const __m128 none_lo = _mm_set1_ps(HUGE_VALF);
+        const __m128 none_hi = _mm_set1_ps(-HUGE_VALF);
+        left_lo_ = _mm_min_ps(pick(centre, none_lo), left_lo_);
+        left_hi_ = _mm_max_ps(pick(centre, none_hi), left_hi_);
+        right_lo_ = _mm_min_ps(pick(none_lo, centre), right_lo_);
+        right_hi_ = _mm_max_ps(pick(none_hi, centre), right_hi_);
+    }
+    void write(Box& left, Box& right) const {
+        store(left_lo_, left_hi_, left);
+        store(right_lo_, right_hi_, right);
+    }
+
+private:
+    static void store(__m128 lo, __m128 hi, Box& box) {
+        alignas(16) float l[4];
+        alignas(16) float h[4];
+        _mm_store_ps(l, lo);
+        _mm_store_ps(h, hi);
+        for (int k = 0; k < 3; ++k) {
+            box.lo[k] = l[k];
+            box.hi[k] = h[k];
+        }
+    }
+    __m128 left_lo_ = _mm_set1_ps(HUGE_VALF);
+    __m128 left_hi_ = _mm_set1_ps(-HUGE_VALF);
+    __m128 right_lo_ = _mm_set1_ps(HUGE_VALF);
+    __m128 right_hi_ = _mm_set1_ps(-HUGE_VALF);
+};
+#else
+class CentroidBoxes {
+public:
+    void grow(bool left, const PolygonReference& ref) {
+        grow_by_centroid(left ? left_ : right_, ref);
+    }
+    void write(Box& left, Box& right) const {
+        left = left_;
+        right = right_;
+    }
+
+private:
+    Box left_;
+    Box right_;
+};
+#endif
+
+// References judged at a time from each end of a range by the block partition.
+constexpr std::ptrdiff_t kPartitionBlock = 32;
+
 // Moves the references whose bin on `axis` is below `split` before the others, with the swaps
-// std::partition makes (so the order, and the tree, do not depend on the library), and grows
-// each side's box of centres: every reference is judged exactly once. Returns where the right
-// side begins.
+// std::partition makes (so the order, and the tree, do not depend on the library), and finds
+// each side's box of centres. Returns where the right side begins.
+//
+// Which side a reference goes to is a coin toss in a soup, and a loop that branches on it
+// mispredicts every other reference. So the range is partitioned by blocks (Edelkamp and Weiss's
+// BlockQuicksort): a block from each end is judged without a branch, noting where its misplaced
+// references are, and then those are swapped pairwise. The k-th misplaced reference from the
+// left meets the k-th from the right, as in the loop, so the swaps are the loop's, and so is the
+// tree. What is left, under two blocks, goes through the loop; a reference it judges a second
+// time grows its side's box by the same centre again, which changes nothing.
 std::uint32_t partition_by_bin(std::span<PolygonReference> refs, const ReferenceRange& r,
                                const Binner& binner, int axis, int split, Box& left_centroids,
                                Box& right_centroids) {
     PolygonReference* first = refs.data() + r.begin;
     PolygonReference* last = refs.data() + r.end;
+    CentroidBoxes boxes;
     const auto goes_left = [&](const PolygonReference& ref) {
         const bool left = binner(ref.centroid(axis)) < split;
-        grow_by_centroid(left ? left_centroids : right_centroids, ref);
+        boxes.grow(left, ref);
         return left;
+    };
+    // Offsets of the misplaced references in the current left and right blocks; the right
+    // block's count back from `last`.
+    std::array<std::uint8_t, kPartitionBlock> misplaced_left;
+    std::array<std::uint8_t, kPartitionBlock> misplaced_right;
+    int left_start = 0;
+    int left_count = 0;
+    int right_start = 0;
+    int right_count = 0;
+    while (last - first > 2 * kPartitionBlock) {
+        if (left_count == 0) {
+            left_start = 0;
+            for (int i = 0; i < kPartitionBlock; ++i) {
+                misplaced_left[left_count] = static_cast<std::uint8_t>(i);
+                left_count += goes_left(first[i]) ? 0 : 1;
+            }
+        }
+        if (right_count == 0) {
+            right_start = 0;
+            for (int i = 0; i < kPartitionBlock; ++i) {
+                misplaced_right[right_count] = static_cast<std::uint8_t>(i);
+                right_count += goes_left(*(last - 1 - i)) ? 1 : 0;
+            }
+        }
+        const int pairs = std::min(left_count, right_count);
+        for (int j = 0; j < pairs; ++j) {
+            std::swap(first[misplaced_left[left_start + j]],
+                      *(last - 1 - misplaced_right[right_start + j]));
+        }
+        left_count -= pairs;
+        right_count -= pairs;
+        left_start += pairs;
+        right_start += pairs;
+        if (left_count == 0) {
+            first += kPartitionBlock;
+        }
+        if (right_count == 0) {
+            last -= kPartitionBlock;
+        }
+    }
+    const auto done = [&] {
+        boxes.write(left_centroids, right_centroids);
+        return static_cast<std::uint32_t>(first - refs.data());
     };
     for (;;) {
         for (;; ++first) {
             if (first == last) {
-                return static_cast<std::uint32_t>(first - refs.data());
+                return done();
             }
             if (!goes_left(*first)) {
                 break;
@@ -338,7 +456,7 @@ std::uint32_t partition_by_bin(std::span<PolygonReference> refs, const Reference
         --last;
         for (;; --last) {
             if (first == last) {
-                return static_cast<std::uint32_t>(first - refs.data());
+                return done();
             }
             if (goes_left(*last)) {
                 break;
