@@ -19,6 +19,8 @@ namespace {
 constexpr int kMedianDepth = 40;
 // Subtrees at least this big, and shallow enough (spawn_depth), are built on their own thread.
 constexpr std::uint32_t kParallelSize = 4096;
+// The two sides of a split near the top are split at once when both have at least this many.
+constexpr std::uint32_t kParallelSplit = 1u << 16;
 
 // Subtrees above this depth get their own threads: enough of them (four a level) for two a
 // thread, and no more. Each spawned subtree's nodes are copied into its parent's, a copy a level,
@@ -74,6 +76,7 @@ private:
     Pending pending(const ReferenceRange& r, int depth) {
         return {r, split_range(refs_, r, depth >= kMedianDepth, threads_)};
     }
+    std::pair<Pending, Pending> pending_pair(const SplitDecision& split, int depth);
     // A leaf's child word is written once its packets are (fill_leaves).
     std::uint32_t leaf(const ReferenceRange& r, std::uint32_t node, int slot) {
         leaves_.push_back({node, static_cast<std::uint32_t>(slot), r.begin, r.end});
@@ -109,10 +112,29 @@ int SubtreeBuilder::open_up_to_four(Pending p, int depth, std::array<Pending, 4>
             break;
         }
         const SplitDecision split = children[widest].split;
-        children[widest] = pending(split.left, depth);
-        children[count++] = pending(split.right, depth);
+        const auto [left, right] = pending_pair(split, depth);
+        children[widest] = left;
+        children[count++] = right;
     }
     return count;
+}
+
+// The two sides of a split, each with its own split decided. Near the top, where the subtrees
+// have no threads of their own yet, the two are split at once on two threads (each binning on
+// half of the build's threads): otherwise the first levels were split on one thread while the
+// others waited. The decisions do not depend on the threads (split_range).
+std::pair<Pending, Pending> SubtreeBuilder::pending_pair(const SplitDecision& split, int depth) {
+    if (threads_ > 1 && depth <= spawn_depth_ &&
+        std::min(split.left.size(), split.right.size()) >= kParallelSplit) {
+        const unsigned left_threads = threads_ / 2;
+        const bool by_median = depth >= kMedianDepth;
+        std::future<SplitDecision> right = std::async(std::launch::async, [&] {
+            return split_range(refs_, split.right, by_median, threads_ - left_threads);
+        });
+        Pending left{split.left, split_range(refs_, split.left, by_median, left_threads)};
+        return {left, {split.right, right.get()}};
+    }
+    return {pending(split.left, depth), pending(split.right, depth)};
 }
 
 std::uint32_t SubtreeBuilder::build(Pending p, int depth) {

@@ -402,9 +402,9 @@ std::uint32_t partition_by_bin(std::span<PolygonReference> refs, const Reference
         return left;
     };
     // Offsets of the misplaced references in the current left and right blocks; the right
-    // block's count back from `last`.
-    std::array<std::uint8_t, kPartitionBlock> misplaced_left;
-    std::array<std::uint8_t, kPartitionBlock> misplaced_right;
+    // block's count back from `last`. Only the entries below the counts are read.
+    std::array<std::uint8_t, kPartitionBlock> misplaced_left;   // NOLINT(*-pro-type-member-init)
+    std::array<std::uint8_t, kPartitionBlock> misplaced_right;  // NOLINT(*-pro-type-member-init)
     int left_start = 0;
     int left_count = 0;
     int right_start = 0;
