@@ -136,7 +136,8 @@ struct Scene {
 
 /// Moves the arrays the intersection methods read per ray (positions, corners, polygons) into
 /// memory backed by 2 MiB pages where the system allows (core/huge_pages.h), once the scene is
-/// complete: the exact test then misses the TLB less on big meshes.
+/// complete: the exact test then misses the TLB less on big meshes. For scenes made by other
+/// means than SceneBuilder, which reserves its arrays in such memory from the start.
 void move_to_huge_pages(Scene& scene);
 
 }  // namespace rt

@@ -134,8 +134,9 @@ Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dia
         const SourceText text = read_listed_file(scene, folder, *scn.shape_file, "the shape file");
         scene.shapes = read_shape_file(text, diagnostics);
     }
+    // The scene's big arrays are already in memory advised for huge pages: SceneBuilder reserves
+    // them so (reserve_more), and copying them again (move_to_huge_pages) would only cost time.
     add_surfaces(scene, scn, folder, dialect, diagnostics);
-    move_to_huge_pages(scene);
     return scene;
 }
 

@@ -144,9 +144,13 @@ Scene model_scene(const std::filesystem::path& model, const ReaderDialect& diale
     scene.view = framing_view(placed);
 
     SceneBuilder builder(scene, diagnostics);
+    const SurfaceMesh floor_mesh = checkerboard_mesh(kCheckers, floor_half);
+    const SurfaceMesh light_mesh = square_light_mesh(3.0);
+    // Added after the model, the floor copied a million-polygon model's arrays once more.
+    builder.reserve_for({&mesh, &floor_mesh, &light_mesh});
     builder.add_surface(model_entry, mesh, 0);
-    builder.add_surface(floor, checkerboard_mesh(kCheckers, floor_half), 1);
-    builder.add_surface(light, square_light_mesh(3.0), 2);
+    builder.add_surface(floor, floor_mesh, 1);
+    builder.add_surface(light, light_mesh, 2);
     builder.finish(named_at);
     return scene;
 }

@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "rt/core/huge_pages.h"
 #include "rt/scene/polygon_geometry.h"
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/reader_limits.h"
@@ -50,11 +51,13 @@ bool within_range(const Vec3& p) {
 }
 
 // Room for `more` elements beyond v's size, growing at least geometrically: reserving exactly what
-// each surface adds would copy the arrays once per surface.
+// each surface adds would copy the arrays once per surface. The room is advised for huge pages
+// (core/huge_pages.h) as it is reserved, so that a big scene's arrays, which every intersection
+// method reads at random, need no copy into such memory after.
 template <class T>
 void reserve_more(std::vector<T>& v, std::size_t more) {
     if (v.capacity() - v.size() < more) {
-        v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+        reserve_huge(v, std::max(v.size() + more, 2 * v.capacity()));
     }
 }
 
@@ -104,6 +107,21 @@ void SceneBuilder::add_surface(const ScnSurface& entry, const SurfaceMesh& mesh,
     for (const MeshPolygon& polygon : mesh.polygons) {
         add_polygon(placing, polygon);
     }
+}
+
+void SceneBuilder::reserve_for(std::initializer_list<const SurfaceMesh*> meshes) {
+    std::size_t polygons = 0;
+    std::size_t corners = 0;
+    std::size_t vertices = 0;
+    for (const SurfaceMesh* mesh : meshes) {
+        polygons += mesh->polygons.size();
+        corners += mesh->corners.size();
+        vertices += mesh->vertices.size();
+    }
+    reserve_more(scene_.polygons, polygons);
+    reserve_more(scene_.polygon_origin, polygons);
+    reserve_more(scene_.corners, corners);
+    reserve_more(scene_.positions, vertices);
 }
 
 SourceLocation SceneBuilder::polygon_location(const Placing& placing,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -21,6 +22,10 @@ public:
     /// The scene must already hold its attributes and the shape file's shapes; the builder
     /// replaces Scene::shapes with world-space copies of the shapes polygons use.
     SceneBuilder(Scene& scene, Diagnostics& diagnostics);
+
+    /// Room in the scene's arrays for all of these meshes, when the caller has them all before
+    /// adding any: the arrays are then filled in place, never copied as they grow.
+    void reserve_for(std::initializer_list<const SurfaceMesh*> meshes);
 
     /// Adds the polygons of one optical surface read from source_files[file].
     void add_surface(const ScnSurface& entry, const SurfaceMesh& mesh, std::uint32_t file);
