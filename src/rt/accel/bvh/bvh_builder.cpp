@@ -8,6 +8,7 @@
 
 #include "rt/accel/bvh/leaf_filling.h"
 #include "rt/accel/bvh/sah_split.h"
+#include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
@@ -17,21 +18,19 @@ namespace {
 // Past this many 4-wide levels every split is an object median (which halves): the depth, and
 // so the traversal stack, stays below kMaxDepth + 16 for any 2^32 references.
 constexpr int kMedianDepth = 40;
-// Subtrees at least this big, and shallow enough (spawn_depth), are built on their own thread.
+// Subtrees at least this big may be built on their own thread (spawn_limit).
 constexpr std::uint32_t kParallelSize = 4096;
-// The two sides of a split near the top are split at once when both have at least this many.
+// The two sides of a split the top builder makes are split at once when both have at least this
+// many.
 constexpr std::uint32_t kParallelSplit = 1u << 16;
 
-// Subtrees above this depth get their own threads: enough of them (four a level) for two a
-// thread, and no more. Each spawned subtree's nodes are copied into its parent's, a copy a level,
-// and a small subtree's arrays are too small for huge pages, so each extra level costs fresh
-// memory, page fault by page fault (docs/lab/bvh-first-build-2026-12-03.md).
-int spawn_depth(unsigned threads) {
-    int depth = 1;
-    while (depth < 3 && (1u << (2 * depth)) < 2 * threads) {
-        ++depth;
-    }
-    return depth;
+// The top builder builds every node of more than this many references itself, and gives each
+// child under it (of kParallelSize or more) a thread of its own: about four a build thread, by
+// size rather than by depth. By depth, one level on two threads, a sphere standing on a floor
+// (`rt --model`) split into subtrees of 35k, 108k, 204k and 650k references, and the last ran
+// alone for half the build. Each spawned subtree's nodes are copied once, into the top builder's.
+std::uint32_t spawn_limit(std::uint32_t references, unsigned threads) {
+    return std::max(kParallelSize, references / (4 * threads));
 }
 
 // Generous guesses of a subtree's nodes and leaves (the 1M sphere and soup have one node per 12
@@ -60,15 +59,23 @@ struct Subtree {
 class SubtreeBuilder {
 public:
     /// `references`: how many the subtree holds, to reserve room for its nodes and leaves.
+    /// `top`: the builder of the whole tree, which spawns subtrees (spawn_limit) when `threads` is
+    /// more than one; the spawned ones build theirs alone.
     SubtreeBuilder(const Scene& scene, std::span<PolygonReference> refs, unsigned threads,
-                   std::uint32_t references)
-        : scene_(scene), refs_(refs), threads_(threads), spawn_depth_(spawn_depth(threads)) {
+                   std::uint32_t references, bool top)
+        : scene_(scene),
+          refs_(refs),
+          threads_(threads),
+          spawn_limit_(top && threads > 1 ? spawn_limit(references, threads) : 0) {
         reserve_huge(nodes_, expected_nodes(references));
         reserve_huge(leaves_, expected_leaves(references));
     }
 
     /// The child word for `p` (an inner node's index is local to this builder).
     std::uint32_t build(Pending p, int depth);
+
+    /// Waits for the spawned subtrees and moves them in.
+    void take_in_spawned();
 
     Subtree take() { return {std::move(nodes_), std::move(leaves_)}; }
 
@@ -77,10 +84,15 @@ private:
         return {r, split_range(refs_, r, depth >= kMedianDepth, threads_)};
     }
     std::pair<Pending, Pending> pending_pair(const SplitDecision& split, int depth);
-    // A leaf's child word is written once its packets are (fill_leaves).
+    // Until its packets are written (fill_leaves), a leaf's child word holds the leaf's index in
+    // leaves_, so that the leaves can be put in the tree's order (in_tree_order).
     std::uint32_t leaf(const ReferenceRange& r, std::uint32_t node, int slot) {
+        if (leaves_.size() >= kLeafBit) {
+            throw Error("the BVH cannot hold more than 2^31 leaves");
+        }
+        const auto index = static_cast<std::uint32_t>(leaves_.size());
         leaves_.push_back({node, static_cast<std::uint32_t>(slot), r.begin, r.end});
-        return kLeafBit;
+        return kLeafBit | index;
     }
     void fill(std::uint32_t index, Pending p, int depth);
     std::uint32_t append(Subtree&& sub);
@@ -88,10 +100,18 @@ private:
 
     const Scene& scene_;
     std::span<PolygonReference> refs_;
-    unsigned threads_;  ///< more than one: spawn subtrees, bin big ranges in parallel
-    int spawn_depth_;
+    unsigned threads_;  ///< more than one: bin big ranges in parallel
+    /// Children smaller than this (and of kParallelSize or more) get their own thread; 0: none.
+    std::uint32_t spawn_limit_;
     std::vector<Node> nodes_;
     std::vector<PendingLeaf> leaves_;
+    /// Subtrees being built on their own threads, and the child word each is to fill.
+    struct Spawned {
+        std::uint32_t node;
+        int slot;
+        std::future<Subtree> subtree;
+    };
+    std::vector<Spawned> spawned_;
 };
 
 // Replaces the largest splittable range by its halves until there are four (or none left).
@@ -119,13 +139,12 @@ int SubtreeBuilder::open_up_to_four(Pending p, int depth, std::array<Pending, 4>
     return count;
 }
 
-// The two sides of a split, each with its own split decided. Near the top, where the subtrees
-// have no threads of their own yet, the two are split at once on two threads (each binning on
-// half of the build's threads): otherwise the first levels were split on one thread while the
-// others waited. The decisions do not depend on the threads (split_range).
+// The two sides of a split, each with its own split decided. In the top builder, whose nodes no
+// other thread builds, the two are split at once on two threads (each binning on half of the
+// build's threads): otherwise the first levels were split on one thread while the others waited.
+// The decisions do not depend on the threads (split_range).
 std::pair<Pending, Pending> SubtreeBuilder::pending_pair(const SplitDecision& split, int depth) {
-    if (threads_ > 1 && depth <= spawn_depth_ &&
-        std::min(split.left.size(), split.right.size()) >= kParallelSplit) {
+    if (spawn_limit_ != 0 && std::min(split.left.size(), split.right.size()) >= kParallelSplit) {
         const unsigned left_threads = threads_ / 2;
         const bool by_median = depth >= kMedianDepth;
         std::future<SplitDecision> right = std::async(std::launch::async, [&] {
@@ -162,43 +181,53 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
         }
         node.child[c] = kNoChild;
     }
-    std::vector<std::pair<int, std::future<Subtree>>> spawned;
     std::array<bool, 4> built_here{};
     for (int c = 0; c < count; ++c) {
         const Pending& child = children[c];
         if (child.split.leaf) {
             nodes_[index].child[c] = leaf(child.range, index, c);
-        } else if (threads_ > 1 && depth < spawn_depth_ && child.range.size() >= kParallelSize) {
-            spawned.emplace_back(c, std::async(std::launch::async, [this, child, depth] {
-                                     SubtreeBuilder sub(scene_, refs_, threads_,
-                                                        child.range.size());
-                                     sub.build(child, depth + 1);
-                                     return sub.take();
-                                 }));
+        } else if (child.range.size() < spawn_limit_ && child.range.size() >= kParallelSize) {
+            spawned_.push_back({index, c, std::async(std::launch::async, [this, child, depth] {
+                                    SubtreeBuilder sub(scene_, refs_, threads_,
+                                                       child.range.size(), false);
+                                    sub.build(child, depth + 1);
+                                    return sub.take();
+                                })});
         } else {
             built_here[c] = true;
             nodes_[index].child[c] = static_cast<std::uint32_t>(nodes_.size());
             nodes_.emplace_back();
         }
     }
+    // The spawned subtrees are waited for only when the whole top is built: waiting for each in
+    // turn here held back the spawning of the next node's children.
     for (int c = 0; c < count; ++c) {
         if (built_here[c]) {
             fill(nodes_[index].child[c], children[c], depth + 1);
         }
     }
-    for (auto& [c, future] : spawned) {
-        nodes_[index].child[c] = append(future.get());
-    }
 }
 
-// Moves a finished subtree in, shifting its node indices; returns its root's index.
+void SubtreeBuilder::take_in_spawned() {
+    for (Spawned& s : spawned_) {
+        nodes_[s.node].child[s.slot] = append(s.subtree.get());
+    }
+    spawned_.clear();
+}
+
+// Moves a finished subtree in, shifting its node and leaf indices; returns its root's index.
 std::uint32_t SubtreeBuilder::append(Subtree&& sub) {
     const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
+    const auto leaf_offset = static_cast<std::uint32_t>(leaves_.size());
+    if (std::uint64_t{leaf_offset} + sub.leaves.size() > kLeafBit) {
+        throw Error("the BVH cannot hold more than 2^31 leaves");
+    }
     for (Node& node : sub.nodes) {
         for (std::uint32_t& child : node.child) {
-            if (child != kNoChild && !is_leaf(child)) {
-                child += node_offset;
+            if (child == kNoChild) {
+                continue;
             }
+            child += is_leaf(child) ? leaf_offset : node_offset;
         }
     }
     nodes_.insert(nodes_.end(), sub.nodes.begin(), sub.nodes.end());
@@ -207,6 +236,35 @@ std::uint32_t SubtreeBuilder::append(Subtree&& sub) {
     }
     leaves_.insert(leaves_.end(), sub.leaves.begin(), sub.leaves.end());
     return node_offset;  // the subtree's root is its node 0
+}
+
+// The leaves in the order a one-thread build finds them, whatever order the threads finished
+// in: each node's leaf children (in slot order), then its inner children's leaves, depth first.
+// The packets are written in this order, so the tree does not depend on the thread count.
+void collect_leaves(const Hierarchy& tree, std::uint32_t node, std::span<const PendingLeaf> found,
+                    std::vector<PendingLeaf>& out) {
+    const Node& n = tree.nodes[node];
+    for (const std::uint32_t child : n.child) {
+        if (child != kNoChild && is_leaf(child)) {
+            out.push_back(found[child & ~kLeafBit]);
+        }
+    }
+    for (const std::uint32_t child : n.child) {
+        if (child != kNoChild && !is_leaf(child)) {
+            collect_leaves(tree, child, found, out);
+        }
+    }
+}
+
+std::vector<PendingLeaf> in_tree_order(const Hierarchy& tree, std::span<const PendingLeaf> found) {
+    std::vector<PendingLeaf> ordered;
+    reserve_huge(ordered, found.size());
+    if (is_leaf(tree.root)) {
+        ordered.push_back(found[tree.root & ~kLeafBit]);
+    } else {
+        collect_leaves(tree, tree.root, found, ordered);
+    }
+    return ordered;
 }
 
 }  // namespace
@@ -221,12 +279,13 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
         return result;
     }
     const std::span<PolygonReference> all(refs.bounded);
-    SubtreeBuilder builder(scene, all, threads, static_cast<std::uint32_t>(all.size()));
+    SubtreeBuilder builder(scene, all, threads, static_cast<std::uint32_t>(all.size()), true);
     const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
     result.root = builder.build({whole, split_range(all, whole, false, threads)}, 0);
+    builder.take_in_spawned();
     Subtree tree = builder.take();
     result.nodes = std::move(tree.nodes);
-    fill_leaves(scene, all, tree.leaves, result, threads);
+    fill_leaves(scene, all, in_tree_order(result, tree.leaves), result, threads);
     // The nodes keep their reserved room: collapse_to_wide frees them soon after, and shrinking
     // them copied them into fresh memory. The packets were sized exactly (fill_leaves).
     return result;
