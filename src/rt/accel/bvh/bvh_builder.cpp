@@ -188,8 +188,8 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
             nodes_[index].child[c] = leaf(child.range, index, c);
         } else if (child.range.size() < spawn_limit_ && child.range.size() >= kParallelSize) {
             spawned_.push_back({index, c, std::async(std::launch::async, [this, child, depth] {
-                                    SubtreeBuilder sub(scene_, refs_, threads_,
-                                                       child.range.size(), false);
+                                    SubtreeBuilder sub(scene_, refs_, threads_, child.range.size(),
+                                                       false);
                                     sub.build(child, depth + 1);
                                     return sub.take();
                                 })});
