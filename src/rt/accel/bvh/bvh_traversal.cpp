@@ -139,9 +139,13 @@ void order_pair(StackEntry& a, StackEntry& b) {
 }
 
 // Of the children the ray may meet, returns the nearest (by box entry) to descend into and pushes
-// the others farthest first, so the next nearest is popped next; kNoChild if none.
-std::uint32_t descend(const bvh::Hierarchy& tree, const bvh::WideNode& node,
-                      const bvh::WideHits& hits, StackEntry* stack, int& size) {
+// the others farthest first, so the next nearest is popped next; kNoChild if none. Forced inline:
+// as a call, once per node, it was a sixth of the walk's samples on the soups, and inlined the
+// walk goes about 5 % faster there (docs/lab/bvh-partition-2026-12-03.md).
+[[gnu::always_inline]] inline std::uint32_t descend(const bvh::Hierarchy& tree,
+                                                    const bvh::WideNode& node,
+                                                    const bvh::WideHits& hits, StackEntry* stack,
+                                                    int& size) {
     int bits = hits.mask;
     if (bits == 0) {
         return bvh::kNoChild;
