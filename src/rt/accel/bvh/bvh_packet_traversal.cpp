@@ -19,6 +19,7 @@
 #include "rt/accel/bvh/packet_setup.h"
 #include "rt/accel/bvh/single_ray_walk.h"
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/core/prefetch.h"
 #include "rt/geometry/ray_polygon.h"
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
@@ -134,10 +135,10 @@ using bvh::exact_hit;  // leaf_exact_hit.h
 // exact test otherwise waits for them.
 void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) {
     for (int t = 0; t < 4; ++t) {
-        __builtin_prefetch(&scene.polygons[packet.polygon[t] & ~kLastPacketBit]);
+        prefetch(&scene.polygons[packet.polygon[t] & ~kLastPacketBit]);
         if (packet.position[0][t] != bvh::kNotTriangle) {
             for (int c = 0; c < 3; ++c) {
-                __builtin_prefetch(&scene.positions[packet.position[c][t]]);
+                prefetch(&scene.positions[packet.position[c][t]]);
             }
         }
     }
@@ -199,7 +200,7 @@ void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
                          : static_cast<const void*>(&inner_node(tree, child));
     const int lines = bvh::is_leaf(child) ? 7 : 4;
     for (int line = 0; line < lines; ++line) {
-        __builtin_prefetch(static_cast<const char*>(at) + std::ptrdiff_t{64} * line);
+        prefetch(static_cast<const char*>(at) + std::ptrdiff_t{64} * line);
     }
 }
 

@@ -18,6 +18,7 @@
 
 #include "rt/accel/octree/octree_top_table.h"
 #include "rt/accel/octree/octree_tree.h"
+#include "rt/core/prefetch.h"
 
 namespace rt {
 
@@ -191,7 +192,7 @@ void walk_octree_inside(const OctreeTree& tree, const Ray& ray, Interval inside,
         [&](double t_exit, const OctreeLeafAt& leaf) {
             return visit(tree.leaf_polygons(*leaf.node), t_exit, leaf);
         },
-        [&](const OctreeNode* node) { __builtin_prefetch(tree.polygons.data() + node->first); });
+        [&](const OctreeNode* node) { prefetch(tree.polygons.data() + node->first); });
 }
 
 /// Calls visit(polygons, t_exit, leaf) for each leaf the ray passes within the interval, nearest

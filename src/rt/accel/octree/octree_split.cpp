@@ -9,6 +9,7 @@
 
 #include "rt/accel/voxel/polygon_box_overlap.h"
 #include "rt/core/error.h"
+#include "rt/core/prefetch.h"
 
 namespace rt {
 
@@ -176,21 +177,21 @@ void OctreeFill::split(const OctreeCell& cell, const std::vector<std::uint32_t>&
             const std::uint32_t later = polygons[i + kAhead];
             // A box (48 bytes) or a record may straddle two cache lines: fetch both ends.
             const char* box = reinterpret_cast<const char*>(&bounds_[later]);
-            __builtin_prefetch(box);
-            __builtin_prefetch(box + sizeof(Box3) - 1);
+            prefetch(box);
+            prefetch(box + sizeof(Box3) - 1);
             const char* record = reinterpret_cast<const char*>(&scene_.polygons[later]);
-            __builtin_prefetch(record);
-            __builtin_prefetch(record + offsetof(Polygon, normal) + sizeof(Vec3) - 1);
+            prefetch(record);
+            prefetch(record + offsetof(Polygon, normal) + sizeof(Vec3) - 1);
         }
         if (i + kCornerAhead < count) {
             const Polygon& later = scene_.polygons[polygons[i + kCornerAhead]];
-            __builtin_prefetch(&scene_.corners[later.first_corner]);
+            prefetch(&scene_.corners[later.first_corner]);
         }
         if (i + kPositionAhead < count) {
             const Polygon& later = scene_.polygons[polygons[i + kPositionAhead]];
             const std::uint32_t n = std::min<std::uint32_t>(later.corner_count, 4);
             for (std::uint32_t k = 0; k < n; ++k) {
-                __builtin_prefetch(&scene_.positions[scene_.corners[later.first_corner + k]]);
+                prefetch(&scene_.positions[scene_.corners[later.first_corner + k]]);
             }
         }
         const std::uint32_t id = polygons[i];

@@ -4,6 +4,7 @@
 
 #include "rt/accel/seads/seads_walk.h"
 #include "rt/accel/voxel/voxel_queries.h"
+#include "rt/core/prefetch.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -28,7 +29,7 @@ auto packets_ahead(const CellPackets& packets) {
     return [cells = &packets](std::size_t next, std::size_t after) {
         const std::uint32_t* table = cells->cell_table();
         if (after != SeadsCursor::kNoVoxelAhead) {
-            __builtin_prefetch(table + after);
+            prefetch(table + after);
         }
         if (next != SeadsCursor::kNoVoxelAhead) {
             cells->prefetch_blocks(table[next]);

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "rt/accel/seads/seads_grid.h"
+#include "rt/core/prefetch.h"
 
 namespace rt {
 
@@ -209,7 +210,7 @@ void walk_seads_inside(const SeadsGrid& grid, const Ray& ray, Interval inside, V
         empty,
         [&](std::size_t next, std::size_t) {
             if (next != SeadsCursor::kNoVoxelAhead) {
-                __builtin_prefetch(grid.offsets.data() + next);
+                prefetch(grid.offsets.data() + next);
             }
         });
 }

@@ -20,6 +20,7 @@
 
 #include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/core/prefetch.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
@@ -94,7 +95,7 @@ public:
             {reinterpret_cast<const CellPacket*>(begin), reinterpret_cast<const CellPacket*>(end)}};
     }
     /// Asks the cache for the start of the header and packets from block `first`.
-    void prefetch_blocks(std::uint32_t first) const { __builtin_prefetch(blocks_.data() + first); }
+    void prefetch_blocks(std::uint32_t first) const { prefetch(blocks_.data() + first); }
     /// The table indexed by cell number the walk may prefetch from.
     const std::uint32_t* cell_table() const { return first_.data(); }
     /// The largest |coordinate| of any finite lane corner: the FloatRay's scene scale covers it.
