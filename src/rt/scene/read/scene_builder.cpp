@@ -100,10 +100,7 @@ void SceneBuilder::add_surface(const ScnSurface& entry, const SurfaceMesh& mesh,
     scene_.surfaces.push_back(entry.surface);
     // Room for the whole surface first: a million-polygon model's arrays were otherwise copied
     // into fresh memory at every doubling.
-    reserve_more(scene_.polygons, mesh.polygons.size());
-    reserve_more(scene_.polygon_origin, mesh.polygons.size());
-    reserve_more(scene_.corners, mesh.corners.size());
-    reserve_more(scene_.positions, mesh.vertices.size());
+    reserve_for({&mesh});
     for (const MeshPolygon& polygon : mesh.polygons) {
         add_polygon(placing, polygon);
     }
