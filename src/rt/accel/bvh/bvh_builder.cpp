@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
+#include <exception>
 #include <future>
+#include <memory>
 #include <thread>
 #include <utility>
 
 #include "rt/accel/bvh/leaf_filling.h"
 #include "rt/accel/bvh/sah_split.h"
+#include "rt/accel/largest_first_queue.h"
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 
@@ -24,8 +28,8 @@ constexpr std::uint32_t kParallelSize = 4096;
 // many.
 constexpr std::uint32_t kParallelSplit = 1u << 16;
 
-// The top builder builds every node of more than this many references itself, and gives each
-// child under it (of kParallelSize or more) a thread of its own: about four a build thread, by
+// The top builder builds every node of more than this many references itself, and queues each
+// child under it (of kParallelSize or more) for the build threads: about four a build thread, by
 // size rather than by depth. By depth, one level on two threads, a sphere standing on a floor
 // (`rt --model`) split into subtrees of 35k, 108k, 204k and 650k references, and the last ran
 // alone for half the build. Each spawned subtree's nodes are copied once, into the top builder's.
@@ -69,14 +73,22 @@ public:
           spawn_limit_(top && threads > 1 ? spawn_limit(references, threads) : 0) {
         reserve_huge(nodes_, expected_nodes(references));
         reserve_huge(leaves_, expected_leaves(references));
+        if (spawn_limit_ != 0) {
+            // The calling thread joins them once the top is built (take_in_spawned).
+            queue_ = std::make_unique<LargestFirstQueue>(threads - 1);
+        }
     }
 
     /// The child word for `p` (an inner node's index is local to this builder).
     std::uint32_t build(Pending p, int depth);
 
-    /// Waits for the spawned subtrees and moves them in.
+    /// Builds the queued subtrees with the other threads, and moves them in: their nodes after
+    /// this builder's, their leaves where a one-thread build finds them.
     void take_in_spawned();
 
+    /// The nodes, and the leaves in the order a one-thread build finds them: each node's leaf
+    /// children (in slot order), then its inner children's leaves, depth first. The packets are
+    /// written in this order, so the tree does not depend on the thread count.
     Subtree take() { return {std::move(nodes_), std::move(leaves_)}; }
 
 private:
@@ -84,8 +96,8 @@ private:
         return {r, split_range(refs_, r, depth >= kMedianDepth, threads_)};
     }
     std::pair<Pending, Pending> pending_pair(const SplitDecision& split, int depth);
-    // Until its packets are written (fill_leaves), a leaf's child word holds the leaf's index in
-    // leaves_, so that the leaves can be put in the tree's order (in_tree_order).
+    // Until its packets are written (fill_leaves, through the leaf's node and slot), a leaf's
+    // child word holds the leaf bit and the leaf's index in this builder's leaves_.
     std::uint32_t leaf(const ReferenceRange& r, std::uint32_t node, int slot) {
         if (leaves_.size() >= kLeafBit) {
             throw Error("the BVH cannot hold more than 2^31 leaves");
@@ -95,23 +107,33 @@ private:
         return kLeafBit | index;
     }
     void fill(std::uint32_t index, Pending p, int depth);
-    std::uint32_t append(Subtree&& sub);
+    std::uint32_t append_nodes(std::vector<Node>&& nodes);
     int open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children);
 
     const Scene& scene_;
     std::span<PolygonReference> refs_;
     unsigned threads_;  ///< more than one: bin big ranges in parallel
-    /// Children smaller than this (and of kParallelSize or more) get their own thread; 0: none.
+    /// Children smaller than this (and of kParallelSize or more) are queued for the build
+    /// threads; 0: none.
     std::uint32_t spawn_limit_;
     std::vector<Node> nodes_;
     std::vector<PendingLeaf> leaves_;
-    /// Subtrees being built on their own threads, and the child word each is to fill.
+    /// Queued subtrees, in the order queued, and the child word each is to fill. (A deque: the
+    /// jobs write into their entries while more are added.)
     struct Spawned {
         std::uint32_t node;
         int slot;
-        std::future<Subtree> subtree;
+        Subtree subtree;
+        std::exception_ptr error;
+        /// How many of this builder's leaves a one-thread build would have found before this
+        /// subtree's: where its leaves go (take_in_spawned).
+        std::size_t leaves_before = 0;
     };
-    std::vector<Spawned> spawned_;
+    std::deque<Spawned> spawned_;
+    /// spawned_'s indices in the order a one-thread build would have built them.
+    std::vector<std::size_t> spawned_in_tree_order_;
+    /// Declared last, so destroyed first: its threads write into spawned_.
+    std::unique_ptr<LargestFirstQueue> queue_;
 };
 
 // Replaces the largest splittable range by its halves until there are four (or none left).
@@ -182,17 +204,24 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
         node.child[c] = kNoChild;
     }
     std::array<bool, 4> built_here{};
+    constexpr std::size_t kBuiltHere = ~std::size_t{0};
+    std::array<std::size_t, 4> spawned_as{kBuiltHere, kBuiltHere, kBuiltHere, kBuiltHere};
     for (int c = 0; c < count; ++c) {
         const Pending& child = children[c];
         if (child.split.leaf) {
             nodes_[index].child[c] = leaf(child.range, index, c);
         } else if (child.range.size() < spawn_limit_ && child.range.size() >= kParallelSize) {
-            spawned_.push_back({index, c, std::async(std::launch::async, [this, child, depth] {
-                                    SubtreeBuilder sub(scene_, refs_, threads_, child.range.size(),
-                                                       false);
-                                    sub.build(child, depth + 1);
-                                    return sub.take();
-                                })});
+            spawned_as[c] = spawned_.size();
+            Spawned& spawned = spawned_.emplace_back(Spawned{index, c, {}, {}});
+            queue_->push(child.range.size(), [this, child, depth, &spawned] {
+                try {
+                    SubtreeBuilder sub(scene_, refs_, threads_, child.range.size(), false);
+                    sub.build(child, depth + 1);
+                    spawned.subtree = sub.take();
+                } catch (...) {
+                    spawned.error = std::current_exception();
+                }
+            });
         } else {
             built_here[c] = true;
             nodes_[index].child[c] = static_cast<std::uint32_t>(nodes_.size());
@@ -200,71 +229,72 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
         }
     }
     // The spawned subtrees are waited for only when the whole top is built: waiting for each in
-    // turn here held back the spawning of the next node's children.
+    // turn here held back the spawning of the next node's children. A one-thread build would
+    // build them here, in turn with the others.
     for (int c = 0; c < count; ++c) {
         if (built_here[c]) {
             fill(nodes_[index].child[c], children[c], depth + 1);
+        } else if (spawned_as[c] != kBuiltHere) {
+            spawned_[spawned_as[c]].leaves_before = leaves_.size();
+            spawned_in_tree_order_.push_back(spawned_as[c]);
         }
     }
 }
 
 void SubtreeBuilder::take_in_spawned() {
-    for (Spawned& s : spawned_) {
-        nodes_[s.node].child[s.slot] = append(s.subtree.get());
+    if (spawned_.empty()) {
+        return;
     }
-    spawned_.clear();
-}
-
-// Moves a finished subtree in, shifting its node and leaf indices; returns its root's index.
-std::uint32_t SubtreeBuilder::append(Subtree&& sub) {
-    const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
-    const auto leaf_offset = static_cast<std::uint32_t>(leaves_.size());
-    if (std::uint64_t{leaf_offset} + sub.leaves.size() > kLeafBit) {
+    queue_->finish();
+    std::size_t total_leaves = leaves_.size();
+    for (const Spawned& s : spawned_) {
+        if (s.error) {
+            std::rethrow_exception(s.error);
+        }
+        total_leaves += s.subtree.leaves.size();
+    }
+    if (total_leaves > kLeafBit) {
         throw Error("the BVH cannot hold more than 2^31 leaves");
     }
-    for (Node& node : sub.nodes) {
+    // Each subtree's leaves are in its own one-thread order already: they go in as blocks, where a
+    // one-thread build would have found them among this builder's.
+    std::vector<PendingLeaf> leaves;
+    reserve_huge(leaves, total_leaves);
+    std::size_t taken = 0;
+    for (const std::size_t i : spawned_in_tree_order_) {
+        Spawned& s = spawned_[i];
+        leaves.insert(leaves.end(), leaves_.begin() + static_cast<std::ptrdiff_t>(taken),
+                      leaves_.begin() + static_cast<std::ptrdiff_t>(s.leaves_before));
+        taken = s.leaves_before;
+        const std::uint32_t node_offset = append_nodes(std::move(s.subtree.nodes));
+        nodes_[s.node].child[s.slot] = node_offset;  // the subtree's root is its node 0
+        for (PendingLeaf leaf : s.subtree.leaves) {
+            leaf.node += node_offset;  // a spawned subtree's root is never a leaf
+            leaves.push_back(leaf);
+        }
+        s.subtree = {};
+    }
+    leaves.insert(leaves.end(), leaves_.begin() + static_cast<std::ptrdiff_t>(taken),
+                  leaves_.end());
+    leaves_ = std::move(leaves);
+    spawned_.clear();
+    spawned_in_tree_order_.clear();
+}
+
+// Moves a finished subtree's nodes in, shifting their node indices; returns where they start.
+// Their leaves' child words are left as they are: the packets' indices replace them
+// (fill_leaves).
+std::uint32_t SubtreeBuilder::append_nodes(std::vector<Node>&& nodes) {
+    const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
+    for (Node& node : nodes) {
         for (std::uint32_t& child : node.child) {
-            if (child == kNoChild) {
-                continue;
+            if (child != kNoChild && !is_leaf(child)) {
+                child += node_offset;
             }
-            child += is_leaf(child) ? leaf_offset : node_offset;
         }
     }
-    nodes_.insert(nodes_.end(), sub.nodes.begin(), sub.nodes.end());
-    for (PendingLeaf& leaf : sub.leaves) {
-        leaf.node += node_offset;  // a spawned subtree's root is never a leaf
-    }
-    leaves_.insert(leaves_.end(), sub.leaves.begin(), sub.leaves.end());
-    return node_offset;  // the subtree's root is its node 0
-}
-
-// The leaves in the order a one-thread build finds them, whatever order the threads finished
-// in: each node's leaf children (in slot order), then its inner children's leaves, depth first.
-// The packets are written in this order, so the tree does not depend on the thread count.
-void collect_leaves(const Hierarchy& tree, std::uint32_t node, std::span<const PendingLeaf> found,
-                    std::vector<PendingLeaf>& out) {
-    const Node& n = tree.nodes[node];
-    for (const std::uint32_t child : n.child) {
-        if (child != kNoChild && is_leaf(child)) {
-            out.push_back(found[child & ~kLeafBit]);
-        }
-    }
-    for (const std::uint32_t child : n.child) {
-        if (child != kNoChild && !is_leaf(child)) {
-            collect_leaves(tree, child, found, out);
-        }
-    }
-}
-
-std::vector<PendingLeaf> in_tree_order(const Hierarchy& tree, std::span<const PendingLeaf> found) {
-    std::vector<PendingLeaf> ordered;
-    reserve_huge(ordered, found.size());
-    if (is_leaf(tree.root)) {
-        ordered.push_back(found[tree.root & ~kLeafBit]);
-    } else {
-        collect_leaves(tree, tree.root, found, ordered);
-    }
-    return ordered;
+    nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
+    return node_offset;
 }
 
 }  // namespace
@@ -285,7 +315,7 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
     builder.take_in_spawned();
     Subtree tree = builder.take();
     result.nodes = std::move(tree.nodes);
-    fill_leaves(scene, all, in_tree_order(result, tree.leaves), result, threads);
+    fill_leaves(scene, all, tree.leaves, result, threads);
     // The nodes keep their reserved room: collapse_to_wide frees them soon after, and shrinking
     // them copied them into fresh memory. The packets were sized exactly (fill_leaves).
     return result;
