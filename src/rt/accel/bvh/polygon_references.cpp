@@ -16,21 +16,25 @@ namespace {
 // factor of two.
 constexpr double kPlaneDeviationGain = 0x1p21;
 
-// The polygon's double box, widened for non-planarity; false if anything is not finite.
+// The polygon's double box, widened for non-planarity; false if anything is not finite. Every
+// corner is asked: a NaN drops out of a minimum taken after it, so a NaN corner between finite
+// ones left a finite box that did not hold the first corner.
 bool polygon_box(const Vec3* positions, const std::uint32_t* corners, const Polygon& p, Vec3& lo,
                  Vec3& hi) {
     const Vec3 first = positions[corners[0]];
     lo = hi = first;
+    bool finite = is_finite(first) && is_finite(p.normal);
     double deviation = 0.0;
     double size = std::max(std::max(std::fabs(first.x), std::fabs(first.y)), std::fabs(first.z));
     for (std::uint32_t k = 1; k < p.corner_count; ++k) {
         const Vec3 c = positions[corners[k]];
+        finite = finite && is_finite(c);
         lo = min_components(lo, c);
         hi = max_components(hi, c);
         deviation = std::max(deviation, std::fabs(dot(p.normal, c - first)));
         size = std::max(size, std::max(std::max(std::fabs(c.x), std::fabs(c.y)), std::fabs(c.z)));
     }
-    if (!is_finite(lo) || !is_finite(hi) || !is_finite(p.normal) || !std::isfinite(deviation)) {
+    if (!finite || !std::isfinite(deviation)) {
         return false;
     }
     // The deviation computed in double is itself off by a few units of the coordinates' size.
@@ -83,10 +87,10 @@ PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) 
         threads = std::max(1u, std::thread::hardware_concurrency());
     }
     const auto polygons = static_cast<std::uint32_t>(scene.polygons.size());
-    // Each thread takes a run of at least 64k polygons; the runs are joined in polygon order, so
+    // Each thread takes a run of at least 16k polygons; the runs are joined in polygon order, so
     // the result does not depend on the thread count.
     const std::uint32_t runs =
-        std::clamp<std::uint32_t>(threads, 1, std::max<std::uint32_t>(polygons >> 16, 1));
+        std::clamp<std::uint32_t>(threads, 1, std::max<std::uint32_t>(polygons >> 14, 1));
     const auto bound = [&](std::uint32_t r) {
         return static_cast<std::uint32_t>(std::uint64_t{polygons} * r / runs);
     };
