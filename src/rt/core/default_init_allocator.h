@@ -30,4 +30,29 @@ public:
     }
 };
 
+/// For plain data whose default member initialisers would still write every element (a box's
+/// empty +-inf): value-less construction writes nothing at all, so that an array sized first can
+/// be written by several threads, each faulting in its own part of the fresh memory. Only for
+/// trivially copyable and destructible types, whose objects the allocation itself creates (C++20's
+/// implicit-lifetime rule); every element must be assigned before it is read.
+template <class T>
+class UnwrittenAllocator : public std::allocator<T> {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                  "only plain data may be left unwritten");
+
+public:
+    using std::allocator<T>::allocator;
+    template <class U>
+    struct rebind {  // NOLINT(readability-identifier-naming)
+        using other = UnwrittenAllocator<U>;
+    };
+
+    template <class U>
+    void construct(U* /*p*/) noexcept {}
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        std::construct_at(p, std::forward<Args>(args)...);
+    }
+};
+
 }  // namespace rt

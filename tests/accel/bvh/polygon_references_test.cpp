@@ -3,13 +3,17 @@
 #include "rt/accel/bvh/polygon_references.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
+#include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "rt/accel/float_prefilter/float_ray.h"
 #include "support/meshes/generated_meshes.h"
 
 namespace rt::bvh {
@@ -62,6 +66,97 @@ TEST(PolygonReferences, EveryBoxHoldsItsCorners) {
             }
         }
     }
+}
+
+// Each box is the documented one, bit for bit, worked out here one coordinate at a time: the
+// corners' box, widened by (deviation + 2^-48 size) 2^21 for corners off the polygon's plane,
+// rounded outward to float; no box when that is not finite. The values are chosen to be hard:
+// signed zeros, subnormals, doubles between floats, sizes beyond float's range, normals that are
+// not the corners' (so the widening is not zero).
+TEST(PolygonReferences, TrianglesGetTheDocumentedBoxBitForBit) {
+    std::mt19937_64 random(11);
+    const std::vector<double> hard = {0.0,   -0.0,        1e-310,  -1e-310,   1.0 + 0x1p-30,
+                                      -3.0 - 0x1p-29, 0x1p-149, 3.4e38,  -3.4e38, 1e39,
+                                      0.1,   -0.7,        1e-30,   123456.789};
+    std::uniform_int_distribution<std::size_t> pick(0, hard.size() - 1);
+    std::uniform_real_distribution<double> spread(-10.0, 10.0);
+    std::bernoulli_distribution use_hard(0.3);
+    const auto value = [&] { return use_hard(random) ? hard[pick(random)] : spread(random); };
+    Scene scene;
+    const std::uint32_t count = 4000;
+    for (std::uint32_t id = 0; id < count; ++id) {
+        Polygon p;
+        p.first_corner = static_cast<std::uint32_t>(scene.corners.size());
+        p.corner_count = 3;
+        p.normal = id % 3 == 0 ? Vec3{0, 0, 1} : Vec3{value(), value(), value()};
+        // Every tenth of signed zeros alone: no widening, so the zeros' signs reach the box.
+        const bool zeros = id % 10 == 0;
+        const auto coordinate = [&] {
+            return zeros ? (random() % 2 == 0 ? 0.0 : -0.0) : value();
+        };
+        for (int k = 0; k < 3; ++k) {
+            scene.corners.push_back(static_cast<std::uint32_t>(scene.positions.size()));
+            scene.positions.push_back({coordinate(), coordinate(), coordinate()});
+        }
+        scene.polygons.push_back(p);
+    }
+    const PolygonReferences refs = make_polygon_references(scene, 1);
+    std::size_t bounded = 0;
+    std::vector<std::uint32_t> unbounded;
+    for (std::uint32_t id = 0; id < count; ++id) {
+        SCOPED_TRACE(id);
+        const Polygon& p = scene.polygons[id];
+        const Vec3 a = scene.corner_position(p, 0);
+        bool finite = is_finite(p.normal);
+        double deviation = 0.0;
+        double size = 0.0;
+        Vec3 lo = a;
+        Vec3 hi = a;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const Vec3 c = scene.corner_position(p, k);
+            finite = finite && is_finite(c);
+            // As written, a < b ? a : b: with signed zeros, the order decides the sign.
+            lo = min_components(lo, c);
+            hi = max_components(hi, c);
+            for (int axis = 0; axis < 3; ++axis) {
+                size = std::max(size, std::fabs(c[axis]));
+            }
+            const Vec3 d = c - a;
+            deviation = std::max(deviation,
+                                 std::fabs(p.normal.x * d.x + p.normal.y * d.y + p.normal.z * d.z));
+        }
+        const double widen = (deviation + 0x1p-48 * size) * 0x1p21;
+        PolygonReference expected;
+        double float_size = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            finite = finite && std::isfinite(lo[axis] - widen) && std::isfinite(hi[axis] + widen) &&
+                     std::isfinite(deviation);
+            expected.box.lo[axis] = float_below(lo[axis] - widen);
+            expected.box.hi[axis] = float_above(hi[axis] + widen);
+            float_size = std::max({float_size, std::fabs(double{expected.box.lo[axis]}),
+                                   std::fabs(double{expected.box.hi[axis]})});
+        }
+        if (!finite || !std::isfinite(float_size)) {
+            unbounded.push_back(id);
+            continue;
+        }
+        ASSERT_LT(bounded, refs.bounded.size());
+        const PolygonReference& got = refs.bounded[bounded++];
+        ASSERT_EQ(got.polygon, id);
+        EXPECT_EQ(got.triangles, 1u);
+        for (int axis = 0; axis < 3; ++axis) {  // bit for bit: the sign of a zero counts
+            EXPECT_EQ(std::bit_cast<std::uint32_t>(got.box.lo[axis]),
+                      std::bit_cast<std::uint32_t>(expected.box.lo[axis]))
+                << "lo " << axis << ": " << got.box.lo[axis] << " " << expected.box.lo[axis];
+            EXPECT_EQ(std::bit_cast<std::uint32_t>(got.box.hi[axis]),
+                      std::bit_cast<std::uint32_t>(expected.box.hi[axis]))
+                << "hi " << axis << ": " << got.box.hi[axis] << " " << expected.box.hi[axis];
+        }
+    }
+    EXPECT_EQ(bounded, refs.bounded.size());
+    EXPECT_EQ(refs.unbounded, unbounded);
+    EXPECT_GT(bounded, count / 4);
+    EXPECT_GT(unbounded.size(), 10u);
 }
 
 // Runs of polygons on several threads, joined in order: the same references, broken polygons and

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "rt/core/default_init_allocator.h"
+
 #include "rt/scene/scene.h"
 
 namespace rt::bvh {
@@ -39,8 +41,11 @@ struct PolygonReference {
     float centroid(int axis) const { return 0.5f * (box.lo[axis] + box.hi[axis]); }
 };
 
+/// Sized first and written by every thread, each its own run (polygon_references.cpp).
+using ReferenceArray = std::vector<PolygonReference, UnwrittenAllocator<PolygonReference>>;
+
 struct PolygonReferences {
-    std::vector<PolygonReference> bounded;
+    ReferenceArray bounded;
     /// Polygons with a non-finite corner or normal: no box can hold them, so every ray tests them.
     std::vector<std::uint32_t> unbounded;
     /// Largest |coordinate| of any bounded box.
