@@ -1,6 +1,8 @@
 #include "rt/core/huge_pages.h"
 
 #include <cstdint>
+#include <limits>
+#include <new>
 #include <numeric>
 #include <vector>
 
@@ -62,6 +64,29 @@ TEST(HugePages, AdviceOnSmallOrNullMemoryIsHarmless) {
     int small = 7;
     advise_huge_pages(&small, sizeof(small));
     EXPECT_EQ(small, 7);
+}
+
+// Big room on a 2 MiB boundary, so that all of it may be huge pages; small room as usual. Both are
+// given back through the allocator (the sanitized build checks the pairing).
+TEST(HugePages, TheAllocatorPutsBigRoomOnHugePageBoundaries) {
+    constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+    std::vector<std::uint64_t, HugePageAllocator<std::uint64_t>> big;
+    big.reserve(kHugeAllocation / sizeof(std::uint64_t) + 3);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePage, 0u);
+    big.resize(big.capacity());
+    std::iota(big.begin(), big.end(), std::uint64_t{11});
+    EXPECT_EQ(big.back(), std::uint64_t{11} + big.size() - 1);
+    big.push_back(1);  // grows: new huge room, the old given back
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePage, 0u);
+    EXPECT_EQ(big[5], 16u);
+
+    std::vector<int, HugePageAllocator<int>> small{4, 5, 6};
+    small.shrink_to_fit();
+    EXPECT_EQ(small, (std::vector<int, HugePageAllocator<int>>{4, 5, 6}));
+
+    HugePageAllocator<char> bytes;
+    EXPECT_THROW(static_cast<void>(bytes.allocate(std::numeric_limits<std::size_t>::max() - 16)),
+                 std::bad_alloc);
 }
 
 }  // namespace

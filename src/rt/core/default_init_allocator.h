@@ -1,6 +1,7 @@
 // An allocator whose value-less construction leaves the element uninitialised (default-init), for
 // big arrays of plain data that are sized first and then written in parallel: std::vector's
 // resize() would otherwise zero every element on one thread, touching all the fresh memory twice.
+// Their room comes in whole huge pages (HugePageAllocator), since they are big and written once.
 #pragma once
 
 #include <memory>
@@ -8,13 +9,15 @@
 #include <type_traits>
 #include <utility>
 
+#include "rt/core/huge_pages.h"
+
 namespace rt {
 
 template <class T>
-class DefaultInitAllocator : public std::allocator<T> {
+class DefaultInitAllocator : public HugePageAllocator<T> {
 public:
-    using std::allocator<T>::allocator;
-    // The allocator requirements name it; std::allocator's own would rebind to std::allocator.
+    using HugePageAllocator<T>::HugePageAllocator;
+    // The allocator requirements name it: the base's would rebind to the base.
     template <class U>
     struct rebind {  // NOLINT(readability-identifier-naming)
         using other = DefaultInitAllocator<U>;
@@ -36,12 +39,12 @@ public:
 /// trivially copyable and destructible types, whose objects the allocation itself creates (C++20's
 /// implicit-lifetime rule); every element must be assigned before it is read.
 template <class T>
-class UnwrittenAllocator : public std::allocator<T> {
+class UnwrittenAllocator : public HugePageAllocator<T> {
     static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
                   "only plain data may be left unwritten");
 
 public:
-    using std::allocator<T>::allocator;
+    using HugePageAllocator<T>::HugePageAllocator;
     template <class U>
     struct rebind {  // NOLINT(readability-identifier-naming)
         using other = UnwrittenAllocator<U>;

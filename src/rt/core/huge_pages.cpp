@@ -1,6 +1,9 @@
 #include "rt/core/huge_pages.h"
 
 #include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <new>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -26,6 +29,28 @@ void advise_huge_pages(const void* data, std::size_t bytes) {
     static_cast<void>(data);
     static_cast<void>(bytes);
 #endif
+}
+
+void* allocate_huge(std::size_t bytes) {
+    constexpr std::size_t kHugePage = std::size_t{2} << 20;
+    if (bytes > std::numeric_limits<std::size_t>::max() - kHugePage) {
+        throw std::bad_alloc();
+    }
+    const std::size_t rounded = (bytes + kHugePage - 1) & ~(kHugePage - 1);
+    void* data = std::aligned_alloc(kHugePage, rounded);
+    if (data == nullptr) {
+        throw std::bad_alloc();
+    }
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    // Whole pages on their boundaries: all of the room may become huge pages, however small.
+    static_cast<void>(madvise(data, rounded, MADV_HUGEPAGE));
+#endif
+    return data;
+}
+
+void free_huge(void* data) noexcept {
+    // NOLINTNEXTLINE(cppcoreguidelines-no-malloc): the pair of allocate_huge's aligned_alloc
+    std::free(data);
 }
 
 }  // namespace rt

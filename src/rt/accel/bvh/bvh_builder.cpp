@@ -54,9 +54,10 @@ struct Pending {
 };
 
 // One subtree's nodes and the leaves it found (packets come after, in leaf_filling.cpp).
+using LeafArray = std::vector<PendingLeaf, HugePageAllocator<PendingLeaf>>;
 struct Subtree {
-    std::vector<Node> nodes;
-    std::vector<PendingLeaf> leaves;
+    NodeArray nodes;
+    LeafArray leaves;
 };
 
 // Builds one subtree into its own arrays; a parent builder appends them to its own.
@@ -107,7 +108,7 @@ private:
         return kLeafBit | index;
     }
     void fill(std::uint32_t index, Pending p, int depth);
-    std::uint32_t append_nodes(std::vector<Node>&& nodes);
+    std::uint32_t append_nodes(NodeArray&& nodes);
     int open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children);
 
     const Scene& scene_;
@@ -116,8 +117,8 @@ private:
     /// Children smaller than this (and of kParallelSize or more) are queued for the build
     /// threads; 0: none.
     std::uint32_t spawn_limit_;
-    std::vector<Node> nodes_;
-    std::vector<PendingLeaf> leaves_;
+    NodeArray nodes_;
+    LeafArray leaves_;
     /// Queued subtrees, in the order queued, and the child word each is to fill. (A deque: the
     /// jobs write into their entries while more are added.)
     struct Spawned {
@@ -258,7 +259,7 @@ void SubtreeBuilder::take_in_spawned() {
     }
     // Each subtree's leaves are in its own one-thread order already: they go in as blocks, where a
     // one-thread build would have found them among this builder's.
-    std::vector<PendingLeaf> leaves;
+    LeafArray leaves;
     reserve_huge(leaves, total_leaves);
     std::size_t taken = 0;
     for (const std::size_t i : spawned_in_tree_order_) {
@@ -284,7 +285,7 @@ void SubtreeBuilder::take_in_spawned() {
 // Moves a finished subtree's nodes in, shifting their node indices; returns where they start.
 // Their leaves' child words are left as they are: the packets' indices replace them
 // (fill_leaves).
-std::uint32_t SubtreeBuilder::append_nodes(std::vector<Node>&& nodes) {
+std::uint32_t SubtreeBuilder::append_nodes(NodeArray&& nodes) {
     const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
     for (Node& node : nodes) {
         for (std::uint32_t& child : node.child) {

@@ -60,12 +60,16 @@ struct alignas(16) TrianglePacket {
 /// sizing them writes nothing.
 using PacketArray = std::vector<TrianglePacket, DefaultInitAllocator<TrianglePacket>>;
 
+/// Nodes in whole huge pages (core/huge_pages.h).
+using NodeArray = std::vector<Node, HugePageAllocator<Node>>;
+using WideNodeArray = std::vector<WideNode, HugePageAllocator<WideNode>>;
+
 /// The whole structure as the builder leaves it and traversal reads it.
 struct Hierarchy {
-    std::vector<Node> nodes;
+    NodeArray nodes;
     PacketArray packets;
     /// `nodes` collapsed to 8-wide (collapse.cpp); traversal reads these, `nodes` is then empty.
-    std::vector<WideNode> wide;
+    WideNodeArray wide;
     std::uint32_t root = kNoChild;  ///< a child word; kNoChild for an empty scene
     /// Largest |coordinate| of any (inflated) box: the scale the float error bounds are taken at.
     double scale = 0.0;

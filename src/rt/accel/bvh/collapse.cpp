@@ -39,7 +39,7 @@ int children_of(const Node& node, Slot* out) {
 }
 
 std::uint32_t collapse(const Hierarchy& tree, std::uint32_t node_index,
-                       std::vector<WideNode>& wide) {
+                       WideNodeArray& wide) {
     Slot slots[8];
     int count = children_of(tree.nodes[node_index], slots);
     for (;;) {
