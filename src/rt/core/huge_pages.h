@@ -21,8 +21,9 @@ inline constexpr std::size_t kHugePageWorthwhile = std::size_t{4} << 20;
 /// is affected; nothing happens for small arrays, where the system says no, or elsewhere.
 void advise_huge_pages(const void* data, std::size_t bytes);
 
-/// Room of this many bytes or more is allocated in whole huge pages (HugePageAllocator).
-inline constexpr std::size_t kHugeAllocation = kHugePageWorthwhile;
+/// Room of this many bytes or more is allocated in whole huge pages (HugePageAllocator): it fills
+/// at least half of the last one.
+inline constexpr std::size_t kHugeAllocation = std::size_t{1} << 20;
 
 /// `bytes` rounded up to whole 2 MiB pages, on a 2 MiB boundary, advised as above; freed with
 /// free_huge. Throws std::bad_alloc when the system has no such room.
@@ -32,11 +33,10 @@ void free_huge(void* data) noexcept;
 /// For the big arrays a build writes once (the BVH's references, nodes and packets): room of
 /// kHugeAllocation bytes or more starts on a 2 MiB boundary and fills whole huge pages.
 /// std::allocator's big blocks start just past a 2 MiB boundary (malloc's header), so advising
-/// them (reserve_huge) left their first 2 MiB in small pages, each faulted in on its own: on the
-/// 1M meshes' first builds, 2 threads, median of 9 alternated, the references took 35.6 -> 30.9
-/// ms and collapse_to_wide 18.2 -> 10.8 ms. Smaller room comes from std::allocator: rounded up to
-/// a huge page of its own, each of the subtrees' small arrays made the build slower on the
-/// virtual machine we measure on, whose fresh huge pages cost more than the small pages saved.
+/// them (reserve_huge) left their first 2 MiB in small pages, each faulted in on its own, and
+/// arrays under 4 MiB were not advised at all. On the virtual machine we measure on, each first
+/// touch of a 4 KiB page costs about 10 us. Smaller room comes from std::allocator, and so do
+/// the many short-lived arrays of a build's parts (bvh_builder.cpp says why).
 template <class T>
 class HugePageAllocator {
 public:

@@ -53,14 +53,18 @@ struct Pending {
     SplitDecision split;
 };
 
-// One subtree's nodes and the leaves it found (packets come after, in leaf_filling.cpp).
-using LeafArray = std::vector<PendingLeaf, HugePageAllocator<PendingLeaf>>;
+// One subtree's nodes and the leaves it found (packets come after, in leaf_filling.cpp), in room
+// from Allocator: the whole tree's in whole huge pages (HugePageAllocator), a spawned subtree's
+// from std::allocator. There are a few dozen of those, short-lived and about 1 MiB each: a huge
+// page each would zero up to twice the memory they need.
+template <template <class> class Allocator>
 struct Subtree {
-    NodeArray nodes;
-    LeafArray leaves;
+    std::vector<Node, Allocator<Node>> nodes;
+    std::vector<PendingLeaf, Allocator<PendingLeaf>> leaves;
 };
 
 // Builds one subtree into its own arrays; a parent builder appends them to its own.
+template <template <class> class Allocator>
 class SubtreeBuilder {
 public:
     /// `references`: how many the subtree holds, to reserve room for its nodes and leaves.
@@ -90,7 +94,7 @@ public:
     /// The nodes, and the leaves in the order a one-thread build finds them: each node's leaf
     /// children (in slot order), then its inner children's leaves, depth first. The packets are
     /// written in this order, so the tree does not depend on the thread count.
-    Subtree take() { return {std::move(nodes_), std::move(leaves_)}; }
+    Subtree<Allocator> take() { return {std::move(nodes_), std::move(leaves_)}; }
 
 private:
     Pending pending(const ReferenceRange& r, int depth) {
@@ -108,7 +112,7 @@ private:
         return kLeafBit | index;
     }
     void fill(std::uint32_t index, Pending p, int depth);
-    std::uint32_t append_nodes(NodeArray&& nodes);
+    std::uint32_t append_nodes(std::span<const Node> nodes);
     int open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children);
 
     const Scene& scene_;
@@ -117,14 +121,14 @@ private:
     /// Children smaller than this (and of kParallelSize or more) are queued for the build
     /// threads; 0: none.
     std::uint32_t spawn_limit_;
-    NodeArray nodes_;
-    LeafArray leaves_;
+    std::vector<Node, Allocator<Node>> nodes_;
+    std::vector<PendingLeaf, Allocator<PendingLeaf>> leaves_;
     /// Queued subtrees, in the order queued, and the child word each is to fill. (A deque: the
     /// jobs write into their entries while more are added.)
     struct Spawned {
-        std::uint32_t node;
-        int slot;
-        Subtree subtree;
+        std::uint32_t node = 0;
+        int slot = 0;
+        Subtree<std::allocator> subtree;
         std::exception_ptr error;
         /// How many of this builder's leaves a one-thread build would have found before this
         /// subtree's: where its leaves go (take_in_spawned).
@@ -138,7 +142,8 @@ private:
 };
 
 // Replaces the largest splittable range by its halves until there are four (or none left).
-int SubtreeBuilder::open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children) {
+template <template <class> class Allocator>
+int SubtreeBuilder<Allocator>::open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children) {
     children[0] = p;
     int count = 1;
     while (count < 4) {
@@ -166,7 +171,8 @@ int SubtreeBuilder::open_up_to_four(Pending p, int depth, std::array<Pending, 4>
 // other thread builds, the two are split at once on two threads (each binning on half of the
 // build's threads): otherwise the first levels were split on one thread while the others waited.
 // The decisions do not depend on the threads (split_range).
-std::pair<Pending, Pending> SubtreeBuilder::pending_pair(const SplitDecision& split, int depth) {
+template <template <class> class Allocator>
+std::pair<Pending, Pending> SubtreeBuilder<Allocator>::pending_pair(const SplitDecision& split, int depth) {
     if (spawn_limit_ != 0 && std::min(split.left.size(), split.right.size()) >= kParallelSplit) {
         const unsigned left_threads = threads_ / 2;
         const bool by_median = depth >= kMedianDepth;
@@ -179,7 +185,8 @@ std::pair<Pending, Pending> SubtreeBuilder::pending_pair(const SplitDecision& sp
     return {pending(split.left, depth), pending(split.right, depth)};
 }
 
-std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
+template <template <class> class Allocator>
+std::uint32_t SubtreeBuilder<Allocator>::build(Pending p, int depth) {
     if (p.split.leaf) {
         return leaf(p.range, kNoChild, 0);
     }
@@ -192,7 +199,8 @@ std::uint32_t SubtreeBuilder::build(Pending p, int depth) {
 // Fills node `index` with up to four children. The inner children built here get consecutive
 // nodes, and the leaves consecutive packets, so that a ray testing siblings reads neighbouring
 // cache lines.
-void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
+template <template <class> class Allocator>
+void SubtreeBuilder<Allocator>::fill(std::uint32_t index, Pending p, int depth) {
     std::array<Pending, 4> children;
     const int count = open_up_to_four(p, depth + 1, children);
     for (int c = 0; c < 4; ++c) {
@@ -216,7 +224,8 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
             Spawned& spawned = spawned_.emplace_back(Spawned{index, c, {}, {}});
             queue_->push(child.range.size(), [this, child, depth, &spawned] {
                 try {
-                    SubtreeBuilder sub(scene_, refs_, threads_, child.range.size(), false);
+                    SubtreeBuilder<std::allocator> sub(scene_, refs_, threads_,
+                                                       child.range.size(), false);
                     sub.build(child, depth + 1);
                     spawned.subtree = sub.take();
                 } catch (...) {
@@ -242,7 +251,8 @@ void SubtreeBuilder::fill(std::uint32_t index, Pending p, int depth) {
     }
 }
 
-void SubtreeBuilder::take_in_spawned() {
+template <template <class> class Allocator>
+void SubtreeBuilder<Allocator>::take_in_spawned() {
     if (spawned_.empty()) {
         return;
     }
@@ -259,7 +269,7 @@ void SubtreeBuilder::take_in_spawned() {
     }
     // Each subtree's leaves are in its own one-thread order already: they go in as blocks, where a
     // one-thread build would have found them among this builder's.
-    LeafArray leaves;
+    std::vector<PendingLeaf, Allocator<PendingLeaf>> leaves;
     reserve_huge(leaves, total_leaves);
     std::size_t taken = 0;
     for (const std::size_t i : spawned_in_tree_order_) {
@@ -267,7 +277,7 @@ void SubtreeBuilder::take_in_spawned() {
         leaves.insert(leaves.end(), leaves_.begin() + static_cast<std::ptrdiff_t>(taken),
                       leaves_.begin() + static_cast<std::ptrdiff_t>(s.leaves_before));
         taken = s.leaves_before;
-        const std::uint32_t node_offset = append_nodes(std::move(s.subtree.nodes));
+        const std::uint32_t node_offset = append_nodes(s.subtree.nodes);
         nodes_[s.node].child[s.slot] = node_offset;  // the subtree's root is its node 0
         for (PendingLeaf leaf : s.subtree.leaves) {
             leaf.node += node_offset;  // a spawned subtree's root is never a leaf
@@ -282,19 +292,21 @@ void SubtreeBuilder::take_in_spawned() {
     spawned_in_tree_order_.clear();
 }
 
-// Moves a finished subtree's nodes in, shifting their node indices; returns where they start.
+// Copies a finished subtree's nodes in, shifting their node indices; returns where they start.
 // Their leaves' child words are left as they are: the packets' indices replace them
 // (fill_leaves).
-std::uint32_t SubtreeBuilder::append_nodes(NodeArray&& nodes) {
+template <template <class> class Allocator>
+std::uint32_t SubtreeBuilder<Allocator>::append_nodes(std::span<const Node> nodes) {
     const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
-    for (Node& node : nodes) {
-        for (std::uint32_t& child : node.child) {
+    const auto first = static_cast<std::ptrdiff_t>(nodes_.size());
+    nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
+    for (auto node = nodes_.begin() + first; node != nodes_.end(); ++node) {
+        for (std::uint32_t& child : node->child) {
             if (child != kNoChild && !is_leaf(child)) {
                 child += node_offset;
             }
         }
     }
-    nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
     return node_offset;
 }
 
@@ -310,11 +322,12 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
         return result;
     }
     const std::span<PolygonReference> all(refs.bounded);
-    SubtreeBuilder builder(scene, all, threads, static_cast<std::uint32_t>(all.size()), true);
+    SubtreeBuilder<HugePageAllocator> builder(scene, all, threads,
+                                              static_cast<std::uint32_t>(all.size()), true);
     const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
     result.root = builder.build({whole, split_range(all, whole, false, threads)}, 0);
     builder.take_in_spawned();
-    Subtree tree = builder.take();
+    Subtree<HugePageAllocator> tree = builder.take();
     result.nodes = std::move(tree.nodes);
     fill_leaves(scene, all, tree.leaves, result, threads);
     // The nodes keep their reserved room: collapse_to_wide frees them soon after, and shrinking
