@@ -1,12 +1,12 @@
 #include "rt/accel/largest_first_queue.h"
 
-#include <gtest/gtest.h>
-
 #include <atomic>
 #include <chrono>
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace rt {
 namespace {

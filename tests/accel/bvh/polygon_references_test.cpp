@@ -4,16 +4,17 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
 
+#include "rt/accel/float_prefilter/float_ray.h"
+
 #include <gtest/gtest.h>
 
-#include "rt/accel/float_prefilter/float_ray.h"
 #include "support/meshes/generated_meshes.h"
 
 namespace rt::bvh {
@@ -75,9 +76,9 @@ TEST(PolygonReferences, EveryBoxHoldsItsCorners) {
 // not the corners' (so the widening is not zero).
 TEST(PolygonReferences, TrianglesGetTheDocumentedBoxBitForBit) {
     std::mt19937_64 random(11);
-    const std::vector<double> hard = {0.0,   -0.0,        1e-310,  -1e-310,   1.0 + 0x1p-30,
-                                      -3.0 - 0x1p-29, 0x1p-149, 3.4e38,  -3.4e38, 1e39,
-                                      0.1,   -0.7,        1e-30,   123456.789};
+    const std::vector<double> hard = {
+        0.0,    -0.0,    1e-310, -1e-310, 1.0 + 0x1p-30, -3.0 - 0x1p-29, 0x1p-149,
+        3.4e38, -3.4e38, 1e39,   0.1,     -0.7,          1e-30,          123456.789};
     std::uniform_int_distribution<std::size_t> pick(0, hard.size() - 1);
     std::uniform_real_distribution<double> spread(-10.0, 10.0);
     std::bernoulli_distribution use_hard(0.3);
@@ -91,9 +92,7 @@ TEST(PolygonReferences, TrianglesGetTheDocumentedBoxBitForBit) {
         p.normal = id % 3 == 0 ? Vec3{0, 0, 1} : Vec3{value(), value(), value()};
         // Every tenth of signed zeros alone: no widening, so the zeros' signs reach the box.
         const bool zeros = id % 10 == 0;
-        const auto coordinate = [&] {
-            return zeros ? (random() % 2 == 0 ? 0.0 : -0.0) : value();
-        };
+        const auto coordinate = [&] { return zeros ? (random() % 2 == 0 ? 0.0 : -0.0) : value(); };
         for (int k = 0; k < 3; ++k) {
             scene.corners.push_back(static_cast<std::uint32_t>(scene.positions.size()));
             scene.positions.push_back({coordinate(), coordinate(), coordinate()});

@@ -143,7 +143,8 @@ private:
 
 // Replaces the largest splittable range by its halves until there are four (or none left).
 template <template <class> class Allocator>
-int SubtreeBuilder<Allocator>::open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children) {
+int SubtreeBuilder<Allocator>::open_up_to_four(Pending p, int depth,
+                                               std::array<Pending, 4>& children) {
     children[0] = p;
     int count = 1;
     while (count < 4) {
@@ -172,7 +173,8 @@ int SubtreeBuilder<Allocator>::open_up_to_four(Pending p, int depth, std::array<
 // build's threads): otherwise the first levels were split on one thread while the others waited.
 // The decisions do not depend on the threads (split_range).
 template <template <class> class Allocator>
-std::pair<Pending, Pending> SubtreeBuilder<Allocator>::pending_pair(const SplitDecision& split, int depth) {
+std::pair<Pending, Pending> SubtreeBuilder<Allocator>::pending_pair(const SplitDecision& split,
+                                                                    int depth) {
     if (spawn_limit_ != 0 && std::min(split.left.size(), split.right.size()) >= kParallelSplit) {
         const unsigned left_threads = threads_ / 2;
         const bool by_median = depth >= kMedianDepth;
@@ -224,8 +226,8 @@ void SubtreeBuilder<Allocator>::fill(std::uint32_t index, Pending p, int depth) 
             Spawned& spawned = spawned_.emplace_back(Spawned{index, c, {}, {}});
             queue_->push(child.range.size(), [this, child, depth, &spawned] {
                 try {
-                    SubtreeBuilder<std::allocator> sub(scene_, refs_, threads_,
-                                                       child.range.size(), false);
+                    SubtreeBuilder<std::allocator> sub(scene_, refs_, threads_, child.range.size(),
+                                                       false);
                     sub.build(child, depth + 1);
                     spawned.subtree = sub.take();
                 } catch (...) {

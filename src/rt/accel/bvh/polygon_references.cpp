@@ -76,26 +76,24 @@ bool triangle_reference(const Vec3* positions, const std::uint32_t* corners, con
     __m256d hi = _mm256_max_pd(_mm256_max_pd(a, b), c);
     // dot(normal, b - a) and dot(normal, c - a), each (x + y) + z: hadd pairs x + y of each in the
     // low lanes and z + 0 in the high ones (a -0 z may become +0; fabs makes them equal).
-    const __m256d pairs =
-        _mm256_hadd_pd(_mm256_mul_pd(n, _mm256_sub_pd(b, a)), _mm256_mul_pd(n, _mm256_sub_pd(c, a)));
-    const __m128d dots =
-        _mm_add_pd(_mm256_castpd256_pd128(pairs), _mm256_extractf128_pd(pairs, 1));
+    const __m256d pairs = _mm256_hadd_pd(_mm256_mul_pd(n, _mm256_sub_pd(b, a)),
+                                         _mm256_mul_pd(n, _mm256_sub_pd(c, a)));
+    const __m128d dots = _mm_add_pd(_mm256_castpd256_pd128(pairs), _mm256_extractf128_pd(pairs, 1));
     const __m128d sign = _mm_set1_pd(-0.0);
     const __m128d deviations = _mm_andnot_pd(sign, dots);
     const double deviation =
         std::max(_mm_cvtsd_f64(deviations), _mm_cvtsd_f64(_mm_unpackhi_pd(deviations, deviations)));
     const __m256d sign4 = _mm256_set1_pd(-0.0);
-    const __m256d largest = _mm256_max_pd(
-        _mm256_max_pd(_mm256_andnot_pd(sign4, a), _mm256_andnot_pd(sign4, b)),
-        _mm256_andnot_pd(sign4, c));
+    const __m256d largest =
+        _mm256_max_pd(_mm256_max_pd(_mm256_andnot_pd(sign4, a), _mm256_andnot_pd(sign4, b)),
+                      _mm256_andnot_pd(sign4, c));
     const auto widest_lane = [](__m256d v) {
         const __m128d low = _mm256_castpd256_pd128(v);
         const double xy = std::max(_mm_cvtsd_f64(low), _mm_cvtsd_f64(_mm_unpackhi_pd(low, low)));
         return std::max(xy, _mm_cvtsd_f64(_mm256_extractf128_pd(v, 1)));
     };
     const double corner_size = widest_lane(largest);
-    const __m256d widen =
-        _mm256_set1_pd((deviation + 0x1p-48 * corner_size) * kPlaneDeviationGain);
+    const __m256d widen = _mm256_set1_pd((deviation + 0x1p-48 * corner_size) * kPlaneDeviationGain);
     lo = _mm256_sub_pd(lo, widen);
     hi = _mm256_add_pd(hi, widen);
     if (!all_finite(lo, hi)) {
@@ -106,15 +104,15 @@ bool triangle_reference(const Vec3* positions, const std::uint32_t* corners, con
     const __m128i one = _mm_set1_epi32(1);
     const __m128 lo_nearest = _mm256_cvtpd_ps(lo);
     const __m128i lo_bits = _mm_castps_si128(lo_nearest);
-    const __m128i lo_stepped = _mm_sub_epi32(
-        _mm_add_epi32(lo_bits, _mm_slli_epi32(_mm_srli_epi32(lo_bits, 31), 1)), one);
+    const __m128i lo_stepped =
+        _mm_sub_epi32(_mm_add_epi32(lo_bits, _mm_slli_epi32(_mm_srli_epi32(lo_bits, 31), 1)), one);
     const __m128 lo_float =
         _mm_blendv_ps(lo_nearest, _mm_castsi128_ps(lo_stepped),
                       _mm256_cvtpd_ps(_mm256_cmp_pd(_mm256_cvtps_pd(lo_nearest), lo, _CMP_GT_OQ)));
     const __m128 hi_nearest = _mm256_cvtpd_ps(hi);
     const __m128i hi_bits = _mm_castps_si128(hi_nearest);
-    const __m128i hi_stepped = _mm_sub_epi32(
-        _mm_add_epi32(hi_bits, one), _mm_slli_epi32(_mm_srli_epi32(hi_bits, 31), 1));
+    const __m128i hi_stepped =
+        _mm_sub_epi32(_mm_add_epi32(hi_bits, one), _mm_slli_epi32(_mm_srli_epi32(hi_bits, 31), 1));
     const __m128 hi_float =
         _mm_blendv_ps(hi_nearest, _mm_castsi128_ps(hi_stepped),
                       _mm256_cvtpd_ps(_mm256_cmp_pd(_mm256_cvtps_pd(hi_nearest), hi, _CMP_LT_OQ)));

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "rt/core/default_init_allocator.h"
-
 #include "rt/scene/scene.h"
 
 namespace rt::bvh {
