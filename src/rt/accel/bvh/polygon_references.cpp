@@ -9,6 +9,7 @@
 #endif
 
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/accel/parallel_parts.h"
 #include "rt/core/huge_pages.h"
 
 namespace rt::bvh {
@@ -203,17 +204,10 @@ PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) 
     reserve_huge(refs.bounded, polygons);
     refs.bounded.resize(polygons);
     std::vector<Run> parts(runs);
-    std::vector<std::thread> pool;
-    for (std::uint32_t r = 1; r < runs; ++r) {
-        pool.emplace_back([&, r] {
-            write_references(scene, bound(r), bound(r + 1), refs.bounded.data() + bound(r),
-                             parts[r]);
-        });
-    }
-    write_references(scene, 0, bound(1), refs.bounded.data(), parts[0]);
-    for (std::thread& t : pool) {
-        t.join();
-    }
+    run_in_parts(polygons, static_cast<int>(runs), [&](std::size_t first, std::size_t last, int r) {
+        write_references(scene, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last),
+                         refs.bounded.data() + first, parts[static_cast<std::size_t>(r)]);
+    });
     // A run that skipped polygons (fewer than three corners, or unbounded) left a gap before the
     // next run's part: close it.
     std::size_t end = 0;
