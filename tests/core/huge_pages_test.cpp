@@ -30,18 +30,6 @@ TEST(HugePages, ReserveHugeNeverShrinks) {
     EXPECT_EQ(values.size(), 100u);
 }
 
-TEST(HugePages, ShrinkToFitHugeKeepsTheElementsExactly) {
-    std::vector<std::uint64_t> values;
-    reserve_huge(values, kHugePageWorthwhile);  // far more than is kept
-    for (std::uint64_t i = 0; i < 300000; ++i) {
-        values.push_back(i * 2654435761u);
-    }
-    const std::vector<std::uint64_t> before = values;
-    shrink_to_fit_huge(values);
-    EXPECT_EQ(values.capacity(), values.size());
-    EXPECT_EQ(values, before);
-}
-
 TEST(HugePages, MoveToHugePagesKeepsTheElementsAndFitsThem) {
     std::vector<std::uint32_t> big(kHugePageWorthwhile / sizeof(std::uint32_t) + 5);
     std::iota(big.begin(), big.end(), 7u);

@@ -85,15 +85,6 @@ void copy_into_huge_pages(std::vector<T, A>& v) {
     v.swap(copied);
 }
 
-/// v.shrink_to_fit(), into advised memory: a plain shrink_to_fit copies into memory that gets
-/// small pages.
-template <class T, class A>
-void shrink_to_fit_huge(std::vector<T, A>& v) {
-    if (v.capacity() != v.size()) {
-        copy_into_huge_pages(v);
-    }
-}
-
 /// Moves v's elements into advised memory of exactly their size, when they take enough room to
 /// be worth it: for arrays filled before anyone knew their size (a scene's, as it is read).
 template <class T, class A>
