@@ -214,7 +214,7 @@ void SubtreeBuilder<Allocator>::fill(std::uint32_t index, Pending p, int depth) 
         }
         node.child[c] = kNoChild;
     }
-    std::array<bool, 4> built_here{};
+    // Each inner child is either built here or spawned; spawned_as tells which.
     constexpr std::size_t kBuiltHere = ~std::size_t{0};
     std::array<std::size_t, 4> spawned_as{kBuiltHere, kBuiltHere, kBuiltHere, kBuiltHere};
     for (int c = 0; c < count; ++c) {
@@ -235,7 +235,6 @@ void SubtreeBuilder<Allocator>::fill(std::uint32_t index, Pending p, int depth) 
                 }
             });
         } else {
-            built_here[c] = true;
             nodes_[index].child[c] = static_cast<std::uint32_t>(nodes_.size());
             nodes_.emplace_back();
         }
@@ -244,9 +243,12 @@ void SubtreeBuilder<Allocator>::fill(std::uint32_t index, Pending p, int depth) 
     // turn here held back the spawning of the next node's children. A one-thread build would
     // build them here, in turn with the others.
     for (int c = 0; c < count; ++c) {
-        if (built_here[c]) {
+        if (children[c].split.leaf) {
+            continue;
+        }
+        if (spawned_as[c] == kBuiltHere) {
             fill(nodes_[index].child[c], children[c], depth + 1);
-        } else if (spawned_as[c] != kBuiltHere) {
+        } else {
             spawned_[spawned_as[c]].leaves_before = leaves_.size();
             spawned_in_tree_order_.push_back(spawned_as[c]);
         }
