@@ -12,6 +12,7 @@
 #include "rt/accel/bvh/leaf_filling.h"
 #include "rt/accel/bvh/sah_split.h"
 #include "rt/accel/largest_first_queue.h"
+#include "rt/accel/parallel_parts.h"
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 
@@ -54,7 +55,7 @@ struct Pending {
 };
 
 // One subtree's nodes and the leaves it found (packets come after, in leaf_filling.cpp), in room
-// from Allocator: the whole tree's in whole huge pages (HugePageAllocator), a spawned subtree's
+// from Allocator: the whole tree's in whole huge pages (UnwrittenAllocator), a spawned subtree's
 // from std::allocator. There are a few dozen of those, short-lived and about 1 MiB each: a huge
 // page each would zero up to twice the memory they need.
 template <template <class> class Allocator>
@@ -112,7 +113,7 @@ private:
         return kLeafBit | index;
     }
     void fill(std::uint32_t index, Pending p, int depth);
-    std::uint32_t append_nodes(std::span<const Node> nodes);
+    void copy_nodes(std::span<const Node> nodes, std::uint32_t node_offset);
     int open_up_to_four(Pending p, int depth, std::array<Pending, 4>& children);
 
     const Scene& scene_;
@@ -261,57 +262,89 @@ void SubtreeBuilder<Allocator>::take_in_spawned() {
         return;
     }
     queue_->finish();
+    std::size_t total_nodes = nodes_.size();
     std::size_t total_leaves = leaves_.size();
     for (const Spawned& s : spawned_) {
         if (s.error) {
             std::rethrow_exception(s.error);
         }
+        total_nodes += s.subtree.nodes.size();
         total_leaves += s.subtree.leaves.size();
     }
     if (total_leaves > kLeafBit) {
         throw Error("the BVH cannot hold more than 2^31 leaves");
     }
-    // Each subtree's leaves are in its own one-thread order already: they go in as blocks, where a
-    // one-thread build would have found them among this builder's.
-    std::vector<PendingLeaf, Allocator<PendingLeaf>> leaves;
-    reserve_huge(leaves, total_leaves);
+    // Where each subtree goes: its nodes after this builder's and the subtrees' before it in tree
+    // order; its leaves, already in its own one-thread order, as a block where a one-thread build
+    // would have found them among this builder's, which go just ahead of it.
+    struct Placement {
+        Spawned* subtree;
+        std::uint32_t node_offset;
+        std::size_t own_from, own_to;  ///< this builder's leaves that go just ahead of it
+        std::size_t leaf_at;           ///< where those go; the subtree's follow them
+    };
+    std::vector<Placement> plan;
+    plan.reserve(spawned_in_tree_order_.size());
+    auto node_offset = static_cast<std::uint32_t>(nodes_.size());
+    std::size_t leaf_at = 0;
     std::size_t taken = 0;
     for (const std::size_t i : spawned_in_tree_order_) {
         Spawned& s = spawned_[i];
-        leaves.insert(leaves.end(), leaves_.begin() + static_cast<std::ptrdiff_t>(taken),
-                      leaves_.begin() + static_cast<std::ptrdiff_t>(s.leaves_before));
+        plan.push_back({&s, node_offset, taken, s.leaves_before, leaf_at});
+        node_offset += static_cast<std::uint32_t>(s.subtree.nodes.size());
+        leaf_at += s.leaves_before - taken + s.subtree.leaves.size();
         taken = s.leaves_before;
-        const std::uint32_t node_offset = append_nodes(s.subtree.nodes);
-        nodes_[s.node].child[s.slot] = node_offset;  // the subtree's root is its node 0
-        for (PendingLeaf leaf : s.subtree.leaves) {
-            leaf.node += node_offset;  // a spawned subtree's root is never a leaf
-            leaves.push_back(leaf);
-        }
-        s.subtree = {};
     }
-    leaves.insert(leaves.end(), leaves_.begin() + static_cast<std::ptrdiff_t>(taken),
-                  leaves_.end());
+    // Sized without being written (UnwrittenAllocator), then copied into by every build thread, so
+    // that each faults in its own part of the fresh memory: a fresh page's first touch can cost
+    // far more than the copy (docs/accelerators.md, "Build speed").
+    nodes_.resize(total_nodes);
+    std::vector<PendingLeaf, Allocator<PendingLeaf>> leaves;
+    reserve_huge(leaves, total_leaves);
+    leaves.resize(total_leaves);
+    const auto copy_own = [&](std::size_t from, std::size_t to, std::size_t at) {
+        std::copy(leaves_.begin() + static_cast<std::ptrdiff_t>(from),
+                  leaves_.begin() + static_cast<std::ptrdiff_t>(to),
+                  leaves.begin() + static_cast<std::ptrdiff_t>(at));
+    };
+    const int parts = static_cast<int>(std::min<std::size_t>(threads_, plan.size()));
+    run_in_parts(plan.size(), parts, [&](std::size_t first, std::size_t last, int) {
+        for (std::size_t i = first; i < last; ++i) {
+            const Placement& p = plan[i];
+            Subtree<std::allocator>& sub = p.subtree->subtree;
+            copy_own(p.own_from, p.own_to, p.leaf_at);
+            copy_nodes(sub.nodes, p.node_offset);
+            auto out =
+                leaves.begin() + static_cast<std::ptrdiff_t>(p.leaf_at + p.own_to - p.own_from);
+            for (PendingLeaf leaf : sub.leaves) {
+                leaf.node += p.node_offset;  // a spawned subtree's root is never a leaf
+                *out++ = leaf;
+            }
+            sub = {};
+        }
+    });
+    copy_own(taken, leaves_.size(), leaf_at);
+    for (const Placement& p : plan) {
+        nodes_[p.subtree->node].child[p.subtree->slot] = p.node_offset;  // the subtree's node 0
+    }
     leaves_ = std::move(leaves);
     spawned_.clear();
     spawned_in_tree_order_.clear();
 }
 
-// Copies a finished subtree's nodes in, shifting their node indices; returns where they start.
-// Their leaves' child words are left as they are: the packets' indices replace them
-// (fill_leaves).
+// Copies a finished subtree's nodes to `node_offset` on, shifting their node indices. Their
+// leaves' child words are left as they are: the packets' indices replace them (fill_leaves).
 template <template <class> class Allocator>
-std::uint32_t SubtreeBuilder<Allocator>::append_nodes(std::span<const Node> nodes) {
-    const auto node_offset = static_cast<std::uint32_t>(nodes_.size());
-    const auto first = static_cast<std::ptrdiff_t>(nodes_.size());
-    nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
-    for (auto node = nodes_.begin() + first; node != nodes_.end(); ++node) {
-        for (std::uint32_t& child : node->child) {
+void SubtreeBuilder<Allocator>::copy_nodes(std::span<const Node> nodes, std::uint32_t node_offset) {
+    auto out = nodes_.begin() + static_cast<std::ptrdiff_t>(node_offset);
+    for (Node node : nodes) {
+        for (std::uint32_t& child : node.child) {
             if (child != kNoChild && !is_leaf(child)) {
                 child += node_offset;
             }
         }
+        *out++ = node;
     }
-    return node_offset;
 }
 
 }  // namespace
@@ -326,12 +359,12 @@ Hierarchy build_hierarchy(const Scene& scene, PolygonReferences& refs, unsigned 
         return result;
     }
     const std::span<PolygonReference> all(refs.bounded);
-    SubtreeBuilder<HugePageAllocator> builder(scene, all, threads,
-                                              static_cast<std::uint32_t>(all.size()), true);
+    SubtreeBuilder<UnwrittenAllocator> builder(scene, all, threads,
+                                               static_cast<std::uint32_t>(all.size()), true);
     const ReferenceRange whole = make_range(all, 0, static_cast<std::uint32_t>(all.size()));
     result.root = builder.build({whole, split_range(all, whole, false, threads)}, 0);
     builder.take_in_spawned();
-    Subtree<HugePageAllocator> tree = builder.take();
+    Subtree<UnwrittenAllocator> tree = builder.take();
     result.nodes = std::move(tree.nodes);
     fill_leaves(scene, all, tree.leaves, result, threads);
     // The nodes keep their reserved room: collapse_to_wide frees them soon after, and shrinking

@@ -60,8 +60,9 @@ struct alignas(16) TrianglePacket {
 /// sizing them writes nothing.
 using PacketArray = std::vector<TrianglePacket, DefaultInitAllocator<TrianglePacket>>;
 
-/// Nodes in whole huge pages (core/huge_pages.h).
-using NodeArray = std::vector<Node, HugePageAllocator<Node>>;
+/// Nodes in whole huge pages (core/huge_pages.h), sized without being written when the builder
+/// takes in the subtrees built on other threads, which copy their nodes in at once.
+using NodeArray = std::vector<Node, UnwrittenAllocator<Node>>;
 using WideNodeArray = std::vector<WideNode, HugePageAllocator<WideNode>>;
 
 /// The whole structure as the builder leaves it and traversal reads it.
