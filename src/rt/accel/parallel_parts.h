@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <thread>
 #include <vector>
@@ -43,6 +44,21 @@ void run_in_parts(std::size_t count, int parts, Work&& work) {
         });
     }
     work(std::size_t{0}, count / n, 0);
+}
+
+/// Calls work(i, thread) for every i in [0, count), on up to `threads` threads (the calling one
+/// among them), each taking the next i when done with its last: for parts of uneven size.
+/// `thread`, in [0, threads), is for scratch space of the thread's own.
+template <class Work>
+void share_out(std::size_t count, int threads, Work&& work) {
+    const auto n = static_cast<int>(std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::max(threads, 1)), 1, std::max<std::size_t>(count, 1)));
+    std::atomic<std::size_t> next{0};
+    run_in_parts(static_cast<std::size_t>(n), n, [&](std::size_t, std::size_t, int thread) {
+        for (std::size_t i = next++; i < count; i = next++) {
+            work(i, thread);
+        }
+    });
 }
 
 }  // namespace rt

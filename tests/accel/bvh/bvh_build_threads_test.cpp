@@ -1,6 +1,6 @@
 // The BVH's tree does not depend on how many threads build it: references made on runs of
 // polygons, big ranges binned in parallel, the sides near the top split at once, subtrees spawned
-// and appended, packets written by runs of leaves. Every node and packet is compared byte for
+// and appended, packets written by runs of leaves, wide nodes collapsed by parts. Every node and packet is compared byte for
 // byte, on a mesh big enough to take each of those paths.
 #include <cstdint>
 #include <cstring>
@@ -19,7 +19,7 @@ namespace {
 Hierarchy build(const Scene& scene, unsigned threads) {
     PolygonReferences refs = make_polygon_references(scene, threads);
     Hierarchy tree = build_hierarchy(scene, refs, threads);
-    collapse_to_wide(tree);
+    collapse_to_wide(tree, threads);
     return tree;
 }
 

@@ -88,6 +88,33 @@ TEST(ExitCullingBuild, PartsCoverTheRangeOnce) {
     }
 }
 
+TEST(ExitCullingBuild, SharedOutItemsAreEachDoneOnce) {
+    for (const std::size_t count : {0u, 1u, 5u, 1000u}) {
+        for (const int threads : {0, 1, 2, 3, 8}) {
+            // Each thread counts into its own slots: the items are shared out as they come.
+            const int slots = std::max(threads, 1);
+            std::vector<std::vector<int>> seen(static_cast<std::size_t>(slots),
+                                               std::vector<int>(count, 0));
+            bool thread_in_range = true;
+            share_out(count, threads, [&](std::size_t i, int thread) {
+                if (thread < 0 || thread >= slots) {
+                    thread_in_range = false;
+                    return;
+                }
+                ++seen[static_cast<std::size_t>(thread)][i];
+            });
+            EXPECT_TRUE(thread_in_range);
+            for (std::size_t i = 0; i < count; ++i) {
+                int total = 0;
+                for (const std::vector<int>& own : seen) {
+                    total += own[i];
+                }
+                EXPECT_EQ(total, 1) << count << " items on " << threads << " threads, item " << i;
+            }
+        }
+    }
+}
+
 TEST(ExitCullingBuild, SmallScenesBuildOnTheCallingThread) {
     EXPECT_EQ(build_threads_for(0, 71), 1);
     EXPECT_GE(build_threads_for(0, 1000000), 1);

@@ -10,7 +10,7 @@ Bvh::Bvh(const Scene& scene, const BvhSettings& settings) : scene_(scene) {
     bvh::PolygonReferences refs = bvh::make_polygon_references(scene, settings.build_threads);
     unbounded_ = std::move(refs.unbounded);
     tree_ = bvh::build_hierarchy(scene, refs, settings.build_threads);
-    bvh::collapse_to_wide(tree_);
+    bvh::collapse_to_wide(tree_, settings.build_threads);
 }
 
 std::size_t Bvh::memory_bytes() const {

@@ -63,7 +63,8 @@ using PacketArray = std::vector<TrianglePacket, DefaultInitAllocator<TrianglePac
 /// Nodes in whole huge pages (core/huge_pages.h), sized without being written when the builder
 /// takes in the subtrees built on other threads, which copy their nodes in at once.
 using NodeArray = std::vector<Node, UnwrittenAllocator<Node>>;
-using WideNodeArray = std::vector<WideNode, HugePageAllocator<WideNode>>;
+/// Sized first, then written by every build thread (collapse.cpp).
+using WideNodeArray = std::vector<WideNode, DefaultInitAllocator<WideNode>>;
 
 /// The whole structure as the builder leaves it and traversal reads it.
 struct Hierarchy {

@@ -6,7 +6,8 @@
 
 namespace rt::bvh {
 
-/// Fills tree.wide from tree.nodes, renumbers tree.root into it, and frees tree.nodes.
-void collapse_to_wide(Hierarchy& tree);
+/// Fills tree.wide from tree.nodes, renumbers tree.root into it, and frees tree.nodes. `threads`
+/// (0: one per hardware thread) share the work; the result is the same for any count.
+void collapse_to_wide(Hierarchy& tree, unsigned threads = 1);
 
 }  // namespace rt::bvh

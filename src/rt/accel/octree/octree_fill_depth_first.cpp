@@ -8,13 +8,13 @@
 // put there, only offset, so the arrays are the same bit for bit whatever the number of threads.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <exception>
 #include <memory>
 #include <thread>
 #include <vector>
 
 #include "rt/accel/octree/octree_split.h"
+#include "rt/accel/parallel_parts.h"
 #include "rt/core/error.h"
 
 namespace rt {
@@ -129,27 +129,18 @@ OctreeTree build_octree_depth_first(const Scene& scene, const OctreeBuildSetting
 
         std::vector<OctreeTree> parts(tasks.size());
         std::vector<std::exception_ptr> errors(tasks.size());
-        std::atomic<std::size_t> next{0};
-        const auto work = [&] {
-            std::vector<ChildLists> scratch(static_cast<std::size_t>(tree.depth) + 1);
-            for (std::size_t t = next++; t < tasks.size(); t = next++) {
-                try {
-                    parts[t].nodes.emplace_back();
-                    fill(fill_state, parts[t], 0, tasks[t]->cell, tasks[t]->polygons, scratch);
-                } catch (...) {
-                    errors[t] = std::current_exception();
-                }
-                tasks[t]->polygons = {};
+        std::vector<std::vector<ChildLists>> scratch(
+            threads, std::vector<ChildLists>(static_cast<std::size_t>(tree.depth) + 1));
+        share_out(tasks.size(), static_cast<int>(threads), [&](std::size_t t, int thread) {
+            try {
+                parts[t].nodes.emplace_back();
+                fill(fill_state, parts[t], 0, tasks[t]->cell, tasks[t]->polygons,
+                     scratch[static_cast<std::size_t>(thread)]);
+            } catch (...) {
+                errors[t] = std::current_exception();
             }
-        };
-        {
-            std::vector<std::jthread> pool;
-            const std::size_t helpers = std::min<std::size_t>(threads, tasks.size()) - 1;
-            for (std::size_t i = 0; i < helpers; ++i) {
-                pool.emplace_back(work);
-            }
-            work();
-        }
+            tasks[t]->polygons = {};
+        });
         for (const std::exception_ptr& error : errors) {
             if (error) {
                 std::rethrow_exception(error);
