@@ -1,7 +1,7 @@
 // The BVH's tree does not depend on how many threads build it: references made on runs of
 // polygons, big ranges binned in parallel, the sides near the top split at once, subtrees spawned
-// and appended, packets written by runs of leaves, wide nodes collapsed by parts. Every node and packet is compared byte for
-// byte, on a mesh big enough to take each of those paths.
+// and appended, packets written by runs of leaves, wide nodes collapsed by parts. Every node and
+// packet is compared byte for byte, on a mesh big enough to take each of those paths.
 #include <cstdint>
 #include <cstring>
 
