@@ -41,7 +41,7 @@ std::vector<Ray> subsample(const std::vector<Ray>& rays, std::size_t keep) {
     std::vector<Ray> kept;
     const double stride = static_cast<double>(rays.size()) / static_cast<double>(keep);
     for (std::size_t i = 0; i < keep; ++i) {
-        kept.push_back(rays[static_cast<std::size_t>(i * stride)]);
+        kept.push_back(rays[static_cast<std::size_t>(static_cast<double>(i) * stride)]);
     }
     return kept;
 }
@@ -108,8 +108,10 @@ TraceRate time_packet_tracing(const Accelerator& accel, const std::vector<RayPac
         const TraceCounters counters = trace_packets(accel, packets);
         const double elapsed = thread_cpu_seconds() - cpu_start;
         rate.hits = counters.hits;
-        rate.nodes_per_ray = static_cast<double>(counters.nodes_visited) / rays;
-        rate.tests_per_ray = static_cast<double>(counters.polygon_tests) / rays;
+        rate.nodes_per_ray =
+            static_cast<double>(counters.nodes_visited) / static_cast<double>(rays);
+        rate.tests_per_ray =
+            static_cast<double>(counters.polygon_tests) / static_cast<double>(rays);
         fastest = std::min(fastest, elapsed);
         total += elapsed;
     } while (total < least_seconds);
@@ -137,8 +139,10 @@ TraceRate time_tracing(const Accelerator& accel, const std::vector<Ray>& rays, u
         const double elapsed =
             threads <= 1 ? thread_cpu_seconds() - cpu_start : seconds_since(start);
         rate.hits = counters.hits;
-        rate.nodes_per_ray = static_cast<double>(counters.nodes_visited) / rays.size();
-        rate.tests_per_ray = static_cast<double>(counters.polygon_tests) / rays.size();
+        rate.nodes_per_ray =
+            static_cast<double>(counters.nodes_visited) / static_cast<double>(rays.size());
+        rate.tests_per_ray =
+            static_cast<double>(counters.polygon_tests) / static_cast<double>(rays.size());
         fastest = std::min(fastest, elapsed);
         total += elapsed;
     } while (total < least_seconds);
