@@ -109,18 +109,6 @@ void write_wide_node(const Slot* slots, int count, WideNode& out, PlaceChild&& c
     std::memcpy(&out, &result, sizeof(WideNode));  // the room was never written
 }
 
-// Writes the wide nodes of the subtree of `node_index` from wide[next] on, in preorder (a node,
-// then each inner child's subtree in slot order); returns the subtree's root's index.
-std::uint32_t collapse(const Hierarchy& tree, std::uint32_t node_index, WideNode* wide,
-                       std::uint32_t& next) {
-    Slot slots[8];
-    const int count = wide_children(tree, node_index, slots);
-    const std::uint32_t index = next++;
-    write_wide_node(slots, count, wide[index],
-                    [&](const Slot& slot) { return collapse(tree, slot.child, wide, next); });
-    return index;
-}
-
 // The top of the wide tree, this many levels deep, is laid out on one thread; the subtrees below
 // it (up to 8^3, usually a few hundred) are counted and written by every thread.
 constexpr int kTopLevels = 3;
@@ -133,11 +121,11 @@ struct Part {
     std::uint32_t first;  ///< where they start in tree.wide
 };
 
-// Appends the inner children `kTopLevels` wide levels below `node_index`, in preorder; returns
-// how many wide nodes lie above them.
-std::size_t find_parts(const Hierarchy& tree, std::uint32_t node_index, int level,
+// Appends the subtrees `levels` wide levels below `node_index` (where lay_out puts parts), in
+// preorder; returns how many wide nodes lie above them.
+std::size_t find_parts(const Hierarchy& tree, std::uint32_t node_index, int levels,
                        std::vector<Part>& parts) {
-    if (level == kTopLevels) {
+    if (levels == 0) {
         parts.push_back({node_index, 0, 0});
         return 0;
     }
@@ -146,17 +134,19 @@ std::size_t find_parts(const Hierarchy& tree, std::uint32_t node_index, int leve
     std::size_t top = 1;
     for (int c = 0; c < count; ++c) {
         if (!is_leaf(slots[c].child)) {
-            top += find_parts(tree, slots[c].child, level + 1, parts);
+            top += find_parts(tree, slots[c].child, levels - 1, parts);
         }
     }
     return top;
 }
 
-// Writes the top's wide nodes from wide[next] on, in preorder, and places each part (the next in
-// `part`) where it falls; returns the index of `node_index`'s wide node.
-std::uint32_t lay_out_top(const Hierarchy& tree, std::uint32_t node_index, int level,
-                          WideNode* wide, std::uint32_t& next, Part*& part) {
-    if (level == kTopLevels) {
+// Writes the wide nodes of the subtree of `node_index` from wide[next] on, in preorder (a node,
+// then each inner child's subtree in slot order), and returns its root's index. Subtrees `levels`
+// wide levels down (none if `levels` is negative) are not written but given their place: each is
+// the next of the parts at `part`, whose sizes are counted.
+std::uint32_t lay_out(const Hierarchy& tree, std::uint32_t node_index, int levels, WideNode* wide,
+                      std::uint32_t& next, Part*& part) {
+    if (levels == 0) {
         part->first = next;
         next += static_cast<std::uint32_t>(part->size);
         return (part++)->first;
@@ -165,7 +155,7 @@ std::uint32_t lay_out_top(const Hierarchy& tree, std::uint32_t node_index, int l
     const int count = wide_children(tree, node_index, slots);
     const std::uint32_t index = next++;
     write_wide_node(slots, count, wide[index], [&](const Slot& slot) {
-        return lay_out_top(tree, slot.child, level + 1, wide, next, part);
+        return lay_out(tree, slot.child, levels - 1, wide, next, part);
     });
     return index;
 }
@@ -186,7 +176,7 @@ void collapse_to_wide(Hierarchy& tree, unsigned threads) {
         // The top's few nodes are laid out on one thread, the parts below it counted and written
         // by all, each in its own place, so the tree is the same for any thread count.
         std::vector<Part> parts;
-        std::size_t total = find_parts(tree, tree.root, 0, parts);
+        std::size_t total = find_parts(tree, tree.root, kTopLevels, parts);
         share_out(parts.size(), static_cast<int>(threads),
                   [&](std::size_t i, int) { parts[i].size = count_wide(tree, parts[i].node); });
         for (const Part& part : parts) {
@@ -199,10 +189,11 @@ void collapse_to_wide(Hierarchy& tree, unsigned threads) {
         tree.wide.resize(total);  // written below: the array leaves its elements unwritten
         std::uint32_t next = 0;
         Part* part = parts.data();
-        tree.root = lay_out_top(tree, tree.root, 0, tree.wide.data(), next, part);
+        tree.root = lay_out(tree, tree.root, kTopLevels, tree.wide.data(), next, part);
         share_out(parts.size(), static_cast<int>(threads), [&](std::size_t i, int) {
             std::uint32_t at = parts[i].first;
-            collapse(tree, parts[i].node, tree.wide.data(), at);
+            Part* none = nullptr;
+            lay_out(tree, parts[i].node, -1, tree.wide.data(), at, none);
         });
     }
     tree.nodes.clear();
