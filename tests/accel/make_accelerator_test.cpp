@@ -30,11 +30,12 @@ TEST(AccelKindNames, AreTheOnesAccelTakesBothWays) {
     }
 }
 
-TEST(SuggestedVoxelSizes, SeadsIsTheCubeRootClampedTo4Through322) {
+TEST(SuggestedVoxelSizes, SeadsIsSevenTenthsOfTheCubeRootClampedTo4Through322) {
     EXPECT_EQ(suggested_seads_resolution(0), 4);
     EXPECT_EQ(suggested_seads_resolution(27), 4);
-    EXPECT_EQ(suggested_seads_resolution(1000), 10);
-    EXPECT_EQ(suggested_seads_resolution(1000000), 100);
+    EXPECT_EQ(suggested_seads_resolution(1000), 7);
+    EXPECT_EQ(suggested_seads_resolution(100000), 32);
+    EXPECT_EQ(suggested_seads_resolution(1000000), 70);
     EXPECT_EQ(suggested_seads_resolution(std::size_t{1} << 40), 322);
 }
 

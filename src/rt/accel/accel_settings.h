@@ -18,9 +18,10 @@ enum class AccelKind { BruteForce, Octree, Seads, Bvh, Embree };
 std::string_view accel_kind_name(AccelKind kind);
 std::optional<AccelKind> accel_kind_from_name(std::string_view name);
 
-/// Voxel sizes for a scene of this many polygons when nothing names one, measured best on cube
-/// spheres (bench/voxel): about one SEADS voxel a side per cube root of the count (finer grids
-/// walk more empty voxels than they save tests), and an octree depth of log2(count) / 2.5.
+/// Voxel sizes for a scene of this many polygons when nothing names one, measured best in the lab
+/// and on cube spheres (bench/voxel): 0.7 SEADS voxels a side per cube root of the count (finer
+/// grids walk more empty voxels, and file a large polygon in more of them, than they save tests),
+/// and an octree depth of log2(count) / 2.5.
 int suggested_seads_resolution(std::size_t polygons);
 int suggested_octree_depth(std::size_t polygons);
 

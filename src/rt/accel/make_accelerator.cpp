@@ -29,7 +29,8 @@ constexpr std::array<std::pair<AccelKind, std::string_view>, 5> kNames{{
 }  // namespace
 
 int suggested_seads_resolution(std::size_t polygons) {
-    return std::clamp(static_cast<int>(std::cbrt(static_cast<double>(polygons))), 4, 322);
+    const double side = 0.7 * std::cbrt(static_cast<double>(polygons));
+    return static_cast<int>(std::clamp(std::lround(side), 4L, 322L));
 }
 
 int suggested_octree_depth(std::size_t polygons) {
