@@ -75,18 +75,18 @@ TEST(MethodForScene, TheHeaderFillsWhatTheSettingsLeaveUnset) {
     EXPECT_EQ(decided(1, 3, none).octree.depth, 3);
     EXPECT_EQ(decided(12, 0, none).kind, AccelKind::Seads);
     EXPECT_EQ(decided(12, 0, none).seads_resolution, 12);
-    // Not named by the header: the suggested sizes (1000 polygons: depth 4, 10 a side).
+    // Not named by the header: the suggested sizes (1000 polygons: depth 4, 7 a side).
     EXPECT_EQ(decided(12, 0, none).octree.depth, 4);
-    EXPECT_EQ(decided(1, 3, none).seads_resolution, 10);
+    EXPECT_EQ(decided(1, 3, none).seads_resolution, 7);
     AccelSettings asked;
     asked.kind = AccelKind::Bvh;
     asked.octree.depth = 6;
-    asked.seads_resolution = 7;
+    asked.seads_resolution = 9;
     for (const int sptncde : {0, 1, 12}) {
         const AccelSettings d = decided(sptncde, 3, asked);
         EXPECT_EQ(d.kind, AccelKind::Bvh) << sptncde;
         EXPECT_EQ(d.octree.depth, 6) << sptncde;
-        EXPECT_EQ(d.seads_resolution, 7) << sptncde;
+        EXPECT_EQ(d.seads_resolution, 9) << sptncde;
     }
 }
 
