@@ -39,13 +39,15 @@ TEST(SuggestedVoxelSizes, SeadsIsSevenTenthsOfTheCubeRootClampedTo4Through322) {
     EXPECT_EQ(suggested_seads_resolution(std::size_t{1} << 40), 322);
 }
 
-TEST(SuggestedVoxelSizes, OctreeDepthIsLog2Over2Point5ClampedTo1Through20) {
+TEST(SuggestedVoxelSizes, OctreeDepthIsHalfOfLog2LessSixClampedTo1Through20) {
     EXPECT_EQ(suggested_octree_depth(0), 1);
     EXPECT_EQ(suggested_octree_depth(1), 1);
-    EXPECT_EQ(suggested_octree_depth(1024), 4);     // 10 / 2.5
-    EXPECT_EQ(suggested_octree_depth(1 << 20), 8);  // 20 / 2.5
-    EXPECT_EQ(suggested_octree_depth(1 << 21), 8);  // 8.4 rounds down
-    EXPECT_EQ(suggested_octree_depth(1 << 22), 9);  // 8.8 rounds up
+    EXPECT_EQ(suggested_octree_depth(142), 1);      // 0.57 rounds up
+    EXPECT_EQ(suggested_octree_depth(1024), 2);     // (10 - 6) / 2
+    EXPECT_EQ(suggested_octree_depth(100000), 5);   // 5.3 rounds down
+    EXPECT_EQ(suggested_octree_depth(1 << 20), 7);  // (20 - 6) / 2
+    EXPECT_EQ(suggested_octree_depth(1 << 21), 8);  // 7.5 rounds up
+    EXPECT_EQ(suggested_octree_depth(1 << 22), 8);
     EXPECT_EQ(suggested_octree_depth(std::size_t{1} << 62), 20);
 }
 
@@ -75,8 +77,8 @@ TEST(MethodForScene, TheHeaderFillsWhatTheSettingsLeaveUnset) {
     EXPECT_EQ(decided(1, 3, none).octree.depth, 3);
     EXPECT_EQ(decided(12, 0, none).kind, AccelKind::Seads);
     EXPECT_EQ(decided(12, 0, none).seads_resolution, 12);
-    // Not named by the header: the suggested sizes (1000 polygons: depth 4, 7 a side).
-    EXPECT_EQ(decided(12, 0, none).octree.depth, 4);
+    // Not named by the header: the suggested sizes (1000 polygons: depth 2, 7 a side).
+    EXPECT_EQ(decided(12, 0, none).octree.depth, 2);
     EXPECT_EQ(decided(1, 3, none).seads_resolution, 7);
     AccelSettings asked;
     asked.kind = AccelKind::Bvh;

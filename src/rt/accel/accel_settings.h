@@ -21,7 +21,8 @@ std::optional<AccelKind> accel_kind_from_name(std::string_view name);
 /// Voxel sizes for a scene of this many polygons when nothing names one, measured best in the lab
 /// and on cube spheres (bench/voxel): 0.7 SEADS voxels a side per cube root of the count (finer
 /// grids walk more empty voxels, and file a large polygon in more of them, than they save tests),
-/// and an octree depth of log2(count) / 2.5.
+/// and an octree depth of (log2(count) - 6) / 2, so that 4^depth is about count / 64: a surface's
+/// deepest leaves then hold a few dozen polygons, which their packets and bounds test cheaply.
 int suggested_seads_resolution(std::size_t polygons);
 int suggested_octree_depth(std::size_t polygons);
 

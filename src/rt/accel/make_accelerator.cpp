@@ -35,7 +35,7 @@ int suggested_seads_resolution(std::size_t polygons) {
 
 int suggested_octree_depth(std::size_t polygons) {
     const double count = static_cast<double>(std::max<std::size_t>(polygons, 1));
-    return std::clamp(static_cast<int>(std::lround(std::log2(count) / 2.5)), 1, 20);
+    return static_cast<int>(std::clamp(std::lround((std::log2(count) - 6.0) / 2.0), 1L, 20L));
 }
 
 std::string_view accel_kind_name(AccelKind kind) {
