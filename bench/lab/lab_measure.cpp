@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "rt/accel/make_accelerator.h"
+#include "rt/accel/octree_depth_for.h"
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 
@@ -193,9 +194,8 @@ std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, 
     settings.seads_resolution = options.seads_side != 0
                                     ? options.seads_side
                                     : suggested_seads_resolution(scene.polygons.size());
-    settings.octree.depth = options.octree_depth != 0
-                                ? options.octree_depth
-                                : suggested_octree_depth(scene.polygons.size());
+    settings.octree.depth =
+        options.octree_depth != 0 ? options.octree_depth : octree_depth_for(scene);
     Measurement m;
     m.mesh = mesh;
     m.triangles = fan_triangles(scene);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rt/accel/make_accelerator.h"
+#include "rt/accel/octree_depth_for.h"
 
 #include "command_line/command_line.h"
 #include "support/meshes/generated_meshes.h"
@@ -117,15 +118,15 @@ void run(const VoxelBenchArguments& a) {
         const rt::Scene scene = rt::test::make_cube_sphere(static_cast<std::uint32_t>(triangles));
         rt::AccelSettings seads;
         seads.kind = rt::AccelKind::Seads;
-        // About one voxel a side per cube root of the triangle count (measured best for the
-        // sphere: finer grids walk more empty voxels than they save tests).
+        // The suggested size (accel_settings.h): finer grids walk more empty voxels than they
+        // save tests.
         seads.seads_resolution = a.side > 0 ? a.side : rt::suggested_seads_resolution(triangles);
         if (a.only.empty() || a.only == "seads") {
             measure(scene, seads, a.ray_count);
         }
         rt::AccelSettings octree;
         octree.kind = rt::AccelKind::Octree;
-        octree.octree.depth = a.depth > 0 ? a.depth : rt::suggested_octree_depth(triangles);
+        octree.octree.depth = a.depth > 0 ? a.depth : rt::octree_depth_for(scene);
         if (a.only.empty() || a.only == "octree") {
             measure(scene, octree, a.ray_count);
         }

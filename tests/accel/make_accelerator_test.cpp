@@ -77,8 +77,13 @@ TEST(MethodForScene, TheHeaderFillsWhatTheSettingsLeaveUnset) {
     EXPECT_EQ(decided(1, 3, none).octree.depth, 3);
     EXPECT_EQ(decided(12, 0, none).kind, AccelKind::Seads);
     EXPECT_EQ(decided(12, 0, none).seads_resolution, 12);
-    // Not named by the header: the suggested sizes (1000 polygons: depth 2, 7 a side).
-    EXPECT_EQ(decided(12, 0, none).octree.depth, 2);
+    // Not named by the header: the suggested sizes (1000 polygons: depth 2, 7 a side). The depth
+    // is measured only for an octree.
+    AccelSettings octree;
+    octree.kind = AccelKind::Octree;
+    EXPECT_EQ(decided(12, 0, octree).octree.depth, 2);
+    EXPECT_FALSE(decided(12, 0, none).octree.depth.has_value());
+    EXPECT_FALSE(decided(0, 0, none).octree.depth.has_value());
     EXPECT_EQ(decided(1, 3, none).seads_resolution, 7);
     AccelSettings asked;
     asked.kind = AccelKind::Bvh;

@@ -8,6 +8,7 @@
 #include "rt/accel/brute_force.h"
 #include "rt/accel/bvh/bvh.h"
 #include "rt/accel/octree/octree.h"
+#include "rt/accel/octree_depth_for.h"
 #include "rt/accel/seads/seads.h"
 #if RT_WITH_EMBREE
 #include "rt/accel/embree/embree_accelerator.h"
@@ -65,8 +66,10 @@ AccelSettings method_for_scene(const Scene& scene, AccelSettings settings) {
                                          : AccelKind::Seads;
     }
     // A method the header does not name gets the voxel size measured best for the scene's size.
-    if (!settings.octree.depth) {
-        settings.octree.depth = h.sptncde == 1 ? h.octr : suggested_octree_depth(polygons);
+    // The suggested depth is measured on the scene (a few milliseconds on a big one), so only an
+    // octree gets it.
+    if (!settings.octree.depth && (h.sptncde == 1 || *settings.kind == AccelKind::Octree)) {
+        settings.octree.depth = h.sptncde == 1 ? h.octr : octree_depth_for(scene);
     }
     if (!settings.seads_resolution) {
         settings.seads_resolution =

@@ -10,7 +10,9 @@ namespace rt {
 
 /// The settings with what they leave unset decided for this scene: the method the header names
 /// (0 0 brute force, 1 depth octree, N 0 SEADS), its octree depth or SEADS voxels a side, and for
-/// a method the header does not name, the sizes suggested for the scene's polygon count.
+/// a method the header does not name, the sizes suggested for the scene: SEADS's for its polygon
+/// count, and when the method is the octree, octree_depth_for(scene). The octree depth is left
+/// unset when neither the header nor the settings name an octree.
 AccelSettings method_for_scene(const Scene& scene, AccelSettings settings);
 
 /// Builds the method of method_for_scene(scene, asked). The scene must outlive the result.

@@ -12,13 +12,15 @@ namespace rt {
 std::unique_ptr<Octree> octree_to_inspect(const Scene& scene, const Options& options,
                                           std::string_view what, const RunConsole& console) {
     AccelSettings settings = method_for_scene(scene, options.accel.method);
-    if (settings.kind != AccelKind::Octree && console.note) {
+    const AccelKind method = *settings.kind;
+    settings.kind = AccelKind::Octree;
+    settings = method_for_scene(scene, settings);  // the depth, when the method was another
+    if (method != AccelKind::Octree && console.note) {
         console.note(
             fmt::format("{}: the intersection method is {}; {} shows the octree "
                         "--accel octree would build (depth {})",
-                        what, accel_kind_name(*settings.kind), what, *settings.octree.depth));
+                        what, accel_kind_name(method), what, *settings.octree.depth));
     }
-    settings.kind = AccelKind::Octree;
     return std::make_unique<Octree>(scene, settings);
 }
 

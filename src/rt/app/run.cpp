@@ -7,6 +7,7 @@
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
+#include "rt/accel/octree_depth_for.h"
 #include "rt/app/input_digest.h"
 #include "rt/app/inspection_runs.h"
 #include "rt/app/memory_estimate.h"
@@ -219,7 +220,7 @@ Scene read_scene(const Options& options, Diagnostics& diagnostics) {
     }
     Scene scene = model_scene(options.model, options.dialect, diagnostics);
     scene.header.sptncde = 1;
-    scene.header.octr = suggested_octree_depth(scene.polygons.size());
+    scene.header.octr = octree_depth_for(scene);
     return scene;
 }
 

@@ -484,7 +484,7 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Intersection method: brute, octree, seads, bvh or embree",
      .details = "Overrides the third and fourth numbers of the scene header. When the header "
                 "names another method, octree and seads size themselves for the scene: a depth "
-                "of (log2(polygons) - 6)/2 (-od overrides it) and 0.7 cbrt(polygons) voxels a side. "
+                "measured on the scene (-od overrides it) and 0.7 cbrt(polygons) voxels a side. "
                 "embree (a comparison only, not exact) needs a build with Embree 3.",
      .section = "new", .example = "--accel bvh"},
     {.spelling = "--zbuffer", .topic = SpatialEncoding,
