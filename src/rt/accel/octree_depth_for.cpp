@@ -76,9 +76,10 @@ int octree_depth_for(const Scene& scene) {
         }
         centres.push_back(sum * (1.0 / static_cast<double>(p.corner_count)));
     }
-    // The finest level with at least 8 samples a cell, and the one two levels above it.
+    // The finest level with at least 8 samples a cell (3 or 4, as 4096 to 65,536 polygons are
+    // sampled), and the one two levels above it.
     const double samples = static_cast<double>(centres.size());
-    const int fine = std::clamp(static_cast<int>(std::floor(std::log2(samples / 8.0) / 3.0)), 3, 6);
+    const int fine = std::max(3, static_cast<int>(std::floor(std::log2(samples / 8.0) / 3.0)));
     const int coarse = fine - 2;
     // The centres' own box: reading every position for the scene's box would cost more than
     // the rest of the measure.
