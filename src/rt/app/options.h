@@ -48,12 +48,12 @@ struct Options {
     std::optional<PicturePart> tile;   ///< --tile I/N: render part I of N into a part file
 
     // --- what else to do or print ---------------------------------------------------------------
-    bool wireframe_only = false;            ///< -w (not implemented yet)
-    bool draw_octree = false;               ///< -oo (not implemented yet)
+    bool wireframe_only = false;            ///< -w
+    bool draw_octree = false;               ///< -oo
     bool profile = false;                   ///< -p
     bool random_rays = false;               ///< -r
     bool print_columns = false;             ///< -dc
-    bool debug_octree_interactive = false;  ///< -doi (not implemented yet)
+    bool debug_octree_interactive = false;  ///< -doi
     bool debug_color = false;               ///< -dd
     bool debug_chi_square = false;          ///< -dx
 
