@@ -14,6 +14,7 @@
 #include "support/run_program.h"
 #include "support/temp_dir.h"
 #include "support/x_display.h"
+#include <sys/stat.h>
 
 namespace rt::test {
 namespace {
@@ -72,6 +73,21 @@ TEST(RtSignals, AnInterruptedRenderKeepsAnExistingFile) {
     const Film part = read_gro(dir.path() / "out.partial.gro");
     EXPECT_FALSE(part.complete());
     EXPECT_LE(part.first_finished_row(), part.window().bottom);
+}
+
+// Before the render there is nothing to keep, and a read may never come back to look at the
+// flag: a scene that is a named pipe nobody writes to blocks rt in open(). The first signal
+// ends it there, at once.
+TEST(RtSignals, TheFirstSignalEndsARunStillReadingItsScene) {
+    const TempDir dir;
+    ASSERT_EQ(::mkfifo((dir.path() / "stuck.scn").c_str(), 0600), 0);
+    SpawnedProgram rt("rt", {"stuck", "-n", "--no-window", "--quiet", "--threads", "1"}, dir.path(),
+                      {std::nullopt, false});
+    std::this_thread::sleep_for(stretched(milliseconds(1000)));  // well into the blocked open
+    ASSERT_FALSE(rt.wait_for_exit(milliseconds(0))) << rt.errors();
+    rt.signal(SIGTERM);
+    EXPECT_EQ(rt.wait_for_exit(seconds(10)).value_or(-1), 143);
+    EXPECT_NE(rt.errors().find("rt: interrupted"), std::string::npos) << rt.errors();
 }
 
 }  // namespace

@@ -11,14 +11,21 @@ namespace {
 
 std::atomic<bool> g_interrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
-std::atomic<int> g_signal{0};  // the first signal received
+std::atomic<int> g_signal{0};             // the first signal received
+std::atomic<bool> g_exit_at_once{false};  // an ExitOnInterrupt lives
+
+[[noreturn]] void exit_interrupted(int signal) {
+    static constexpr char kSaid[] = "rt: interrupted\n";
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kSaid, sizeof kSaid - 1);
+    ::_exit(128 + signal);
+}
 
 extern "C" void on_interrupt(int signal) {
     int none = 0;
     g_signal.compare_exchange_strong(none, signal);
-    if (g_interrupted.exchange(true)) {
-        // A second Ctrl-C: the user really wants out.
-        ::_exit(128 + signal);
+    if (g_interrupted.exchange(true) || g_exit_at_once.load()) {
+        // A second Ctrl-C (the user really wants out), or nothing finished yet to keep.
+        exit_interrupted(signal);
     }
 }
 
@@ -43,6 +50,17 @@ const std::atomic<bool>& interrupt_flag() {
 
 int interrupt_signal() {
     return g_signal.load();
+}
+
+ExitOnInterrupt::ExitOnInterrupt() {
+    g_exit_at_once = true;
+    if (g_interrupted.load()) {  // a signal came just before
+        exit_interrupted(g_signal.load());
+    }
+}
+
+ExitOnInterrupt::~ExitOnInterrupt() {
+    g_exit_at_once = false;
 }
 
 }  // namespace rt

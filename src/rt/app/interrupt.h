@@ -1,5 +1,5 @@
 // Ctrl-C (SIGINT) or SIGTERM: the first asks the render to stop and keep what it finished; a
-// second ends the program at once.
+// second ends the program at once, and so does the first before there is anything to keep.
 #pragma once
 
 #include <atomic>
@@ -14,5 +14,16 @@ const std::atomic<bool>& interrupt_flag();
 void request_interrupt();
 /// The signal that asked to stop (SIGINT or SIGTERM); 0 if none did.
 int interrupt_signal();
+
+/// While one lives (reading the scene, building the intersection method), the first signal
+/// ends the program at once, with 128 + the signal: nothing is finished yet to keep, and a read
+/// blocked on a pipe or a long build would never look at the flag.
+class ExitOnInterrupt {
+public:
+    ExitOnInterrupt();
+    ~ExitOnInterrupt();
+    ExitOnInterrupt(const ExitOnInterrupt&) = delete;
+    ExitOnInterrupt& operator=(const ExitOnInterrupt&) = delete;
+};
 
 }  // namespace rt

@@ -10,6 +10,7 @@
 #include "rt/accel/octree_depth_for.h"
 #include "rt/app/input_digest.h"
 #include "rt/app/inspection_runs.h"
+#include "rt/app/interrupt.h"
 #include "rt/app/memory_estimate.h"
 #include "rt/app/output_checks.h"
 #include "rt/app/profile_report.h"
@@ -444,12 +445,14 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
     };
     PhaseTimes times;
     auto phase = Clock::now();
+    std::optional<ExitOnInterrupt> nothing_to_keep(std::in_place);
     Scene scene = read_scene(options, diagnostics);
     const std::string inputs = input_digest(scene);
     times.load_seconds = seconds_since(phase);
 
     const RenderSettings settings = render_settings(scene, options, console, resume, inputs);
     check_resources(scene, options, settings.window, console);
+    nothing_to_keep.reset();  // the window and the inspections wait on the flag themselves
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
     if (shown && resume != nullptr) {
         show_finished_rows(*resume, shown->board());  // over the wireframe, as if just drawn
@@ -460,8 +463,10 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
 
     warn_near_plane(scene, console);
     phase = Clock::now();
+    nothing_to_keep.emplace();
     const AcceleratorStack stack(scene, run_accelerator_stack(options),
                                  {console.note, console.warning, console.trace});
+    nothing_to_keep.reset();
     const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);
     const auto print_profile = [&](const KindCounters& counters) {
