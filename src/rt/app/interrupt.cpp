@@ -17,7 +17,7 @@ std::atomic<bool> g_exit_at_once{false};  // an ExitOnInterrupt lives
 [[noreturn]] void exit_interrupted(int signal) {
     static constexpr char kSaid[] = "rt: interrupted\n";
     [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kSaid, sizeof kSaid - 1);
-    ::_exit(128 + signal);
+    ::_exit(128 + (signal != 0 ? signal : SIGINT));  // a closed window counts as Ctrl-C
 }
 
 extern "C" void on_interrupt(int signal) {
