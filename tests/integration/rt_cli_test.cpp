@@ -78,6 +78,22 @@ TEST_F(RtProgram, MissingSceneNamesTheFile) {
     EXPECT_NE(r.err.find("nothere"), std::string::npos);
 }
 
+// Names the system cannot look up are reported as files that cannot be opened, with the reason,
+// not as internal errors: a loop of links, and a name longer than the system allows.
+TEST_F(RtProgram, UnlookupableSceneNamesAreInputErrors) {
+    fs::create_symlink("loop.scn", at("loop.scn"));
+    const ProgramResult loop = rt({"loop", "-n"});
+    EXPECT_EQ(loop.exit_code, 1);
+    EXPECT_NE(loop.err.find("loop.scn: cannot open the scene file"), std::string::npos) << loop.err;
+    const std::string long_name(5000, 'a');
+    const ProgramResult too_long = rt({long_name, "-n"});
+    EXPECT_EQ(too_long.exit_code, 1);
+    EXPECT_EQ(too_long.err.find("internal error"), std::string::npos) << too_long.err;
+    const ProgramResult show = run_program("show", {long_name, "--output", "x.png"}, dir_.path());
+    EXPECT_EQ(show.err.find("internal error"), std::string::npos) << show.err;
+    EXPECT_NE(show.exit_code, 0);
+}
+
 TEST_F(RtProgram, DashVDrawsTheManualsTextureMappedSurface) {
     write_small_scene("small.scn", "180 320 189 329");  // on the lenses
     const ProgramResult with = rt({"scenes/small", "-V", "-n", "--output", "v.ppm"});

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "rt/core/error.h"
@@ -55,8 +56,9 @@ void add_options(CLI::App& app, ShowArgs& s) {
 // as is.
 std::filesystem::path picture_path(const std::string& name) {
     std::filesystem::path given(name);
+    std::error_code error;  // a name the system cannot look up: the reader says why
     if (given.extension() == ".gro" || given.extension() == ".exr" ||
-        std::filesystem::is_regular_file(given)) {
+        std::filesystem::is_regular_file(given, error)) {
         return given;
     }
     return std::filesystem::path(name + ".gro");

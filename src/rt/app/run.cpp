@@ -4,6 +4,7 @@
 #include <chrono>
 #include <ctime>
 #include <optional>
+#include <system_error>
 
 #include "rt/accel/accel_settings.h"
 #include "rt/accel/accelerator_stack.h"
@@ -339,11 +340,14 @@ std::filesystem::path resolve_scene_path(const std::string& scene_argument) {
     if (ends_with_scn(scene_argument)) {
         return scene_argument;
     }
+    // Names the system cannot look up (too long, a loop of links) count as absent here: the
+    // reader's "cannot open" then says why.
+    std::error_code error;
     std::filesystem::path with_suffix = scene_argument + ".scn";
-    if (std::filesystem::exists(with_suffix)) {
+    if (std::filesystem::exists(with_suffix, error)) {
         return with_suffix;
     }
-    if (std::filesystem::is_regular_file(scene_argument)) {
+    if (std::filesystem::is_regular_file(scene_argument, error)) {
         return scene_argument;
     }
     return with_suffix;  // the reader's "cannot open" names the usual spelling
