@@ -49,15 +49,21 @@ TEST_F(CoordinateRange, AVertexPlacedBeyondTheRangeNamesTheVertexLine) {
               "far:2: the vertex (-100000000000000, 0, -100000000000000) is placed at (-1e+16, 0, "
               "-1e+16), outside "
               "the coordinate range -1e+15 to 1e+15 by optical surface 'far' (s.scn:12)");
-    // A vertex at 1e308 overflows the polygon's normal first: the polygon is degenerate, skipped
-    // with a warning, and its vertices are never placed.
+    // A vertex at 1e308 (or 1e20 beside corners at 1) rounds its polygon's area away: the
+    // polygon looks degenerate, but the vertex out of range is the mistake, and is reported.
     dir_.write("huge",
                "4\n0 -1 0 -1\n1 1e308 0 -1\n2 1 0 1\n3 -1 0 1\n4\n0 0 1\n1 1 2\n"
                "2 2 3\n3 3 0\n1\n0 4 0 1 2 3 0 -1 0 0\n");
-    EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 huge 2 0 0 0 0 0 0\n")), "no error");
-    ASSERT_EQ(diagnostics_.warnings().size(), 2u);
-    EXPECT_EQ(without(diagnostics_.warnings()[0], dir_.path().string() + "/"),
-              "huge:12: polygon 0 is degenerate (zero area); skipped");
+    EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 huge 1 0 0 0 0 0 0\n")),
+              "huge:3: the vertex (1e+308, 0, -1) is placed at (1e+308, 0, -1), outside the "
+              "coordinate range -1e+15 to 1e+15 by optical surface 'huge' (s.scn:12)");
+    dir_.write("spike",
+               "4\n0 -1 0 -1\n1 1e20 0 -1\n2 1 0 1\n3 -1 0 1\n4\n0 0 1\n1 1 2\n"
+               "2 2 3\n3 3 0\n1\n0 4 0 1 2 3 0 -1 0 0\n");
+    EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 spike 1 0 0 0 0 0 0\n")),
+              "spike:3: the vertex (1e+20, 0, -1) is placed at (1e+20, 0, -1), outside the "
+              "coordinate range -1e+15 to 1e+15 by optical surface 'spike' (s.scn:12)");
+    EXPECT_TRUE(diagnostics_.warnings().empty());
     // A scale that carries an ordinary vertex out of range is caught the same way.
     EXPECT_EQ(error(scn("$ 1\n$ 1\n$ 1 1 0 sq 1e300 0 0 0 0 0 0\n")),
               "sq:2: the vertex (-1, 0, -1) is placed at (-1e+300, 0, -1e+300), outside the "

@@ -131,6 +131,11 @@ void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
                                               polygon.corner_count);
     Vec3 n = newell_normal(loop, placing.mesh.vertices);
     if (const std::string_view why = degeneracy(loop, placing.mesh.vertices, n); !why.empty()) {
+        // A vertex placed out of range is the real mistake (one far corner alone can make the
+        // area vanish in the rounding); the check costs nothing on polygons that pass.
+        for (const std::uint32_t vertex : loop) {
+            placed_within_range(placing, polygon, vertex);
+        }
         diagnostics_.warn(fmt::format("{}: polygon {} is degenerate ({}); skipped",
                                       polygon_location(placing, polygon).to_string(),
                                       polygon.number, why));
@@ -257,23 +262,29 @@ std::uint32_t SceneBuilder::position_index(Placing& placing, const MeshPolygon& 
                                            std::uint32_t vertex) {
     std::uint32_t& slot = placing.position_of[vertex];
     if (slot == kUnplaced) {
-        const Vec3& p = placing.mesh.vertices[vertex];
-        const Vec3 placed = placing.transform.point(p);
-        if (!within_range(placed)) {
-            const std::vector<int>& lines = placing.mesh.vertex_lines;
-            const SourceLocation at =
-                vertex < lines.size()
-                    ? SourceLocation{scene_.source_files[placing.file], lines[vertex], 0}
-                    : polygon_location(placing, polygon);
-            throw InputError(
-                at, out_of_range("the vertex", p, placed) +
-                        fmt::format(" by optical surface '{}' ({})", placing.entry.surface.file,
-                                    placing.entry.surface.where.to_string()));
-        }
+        const Vec3 placed = placed_within_range(placing, polygon, vertex);
         slot = static_cast<std::uint32_t>(scene_.positions.size());
         scene_.positions.push_back(placed);
     }
     return slot;
+}
+
+Vec3 SceneBuilder::placed_within_range(const Placing& placing, const MeshPolygon& polygon,
+                                       std::uint32_t vertex) const {
+    const Vec3& p = placing.mesh.vertices[vertex];
+    const Vec3 placed = placing.transform.point(p);
+    if (!within_range(placed)) {
+        const std::vector<int>& lines = placing.mesh.vertex_lines;
+        const SourceLocation at =
+            vertex < lines.size()
+                ? SourceLocation{scene_.source_files[placing.file], lines[vertex], 0}
+                : polygon_location(placing, polygon);
+        throw InputError(
+            at, out_of_range("the vertex", p, placed) +
+                    fmt::format(" by optical surface '{}' ({})", placing.entry.surface.file,
+                                placing.entry.surface.where.to_string()));
+    }
+    return placed;
 }
 
 }  // namespace rt

@@ -45,6 +45,9 @@ private:
     /// (or the polygon's) when it lands outside kMaxCoordinate.
     std::uint32_t position_index(Placing& placing, const MeshPolygon& polygon,
                                  std::uint32_t vertex);
+    /// Where the vertex is placed; the same error as position_index when outside kMaxCoordinate.
+    Vec3 placed_within_range(const Placing& placing, const MeshPolygon& polygon,
+                             std::uint32_t vertex) const;
     SourceLocation polygon_location(const Placing& placing, const MeshPolygon& polygon) const;
 
     Scene& scene_;
