@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "support/temp_dir.h"
+#include <sys/stat.h>
 
 namespace rt {
 namespace {
@@ -65,6 +66,28 @@ TEST(AtomicFile, AFailedStreamIsAnIoErrorAndLeavesTheOldFile) {
     }
     EXPECT_EQ(test::read_text(path), "old");
     EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out.txt"});
+}
+
+// The rename would put a file where a named pipe (or a device, or a socket) was: every program
+// that writes through here refuses, as rt's checks before a render do.
+TEST(AtomicFile, APipeInTheWayIsAnIoErrorAndStays) {
+    const test::TempDir dir;
+    const fs::path path = dir.path() / "out.png";
+    ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+    bool wrote = false;
+    try {
+        write_file_atomically(path, [&](std::ostream& out) {
+            wrote = true;
+            out << "content";
+        });
+        FAIL() << "a pipe was replaced";
+    } catch (const IoError& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot write " + path.string() +
+                                             ": it is a device, a pipe or a socket, not a file");
+    }
+    EXPECT_FALSE(wrote);
+    EXPECT_TRUE(fs::is_fifo(path));
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out.png"});
 }
 
 TEST(AtomicFile, AFolderInTheWayIsAnIoErrorAndNoTemporaryStays) {

@@ -23,6 +23,15 @@ std::filesystem::path temporary_beside(const std::filesystem::path& path) {
 
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
+    // The rename would replace a device, a pipe or a socket with a file: refused, as rt's checks
+    // before a render refuse it (a link to one counts as one).
+    std::error_code looked;
+    const std::filesystem::file_status there = std::filesystem::status(path, looked);
+    if (std::filesystem::exists(there) && !std::filesystem::is_regular_file(there) &&
+        !std::filesystem::is_directory(there)) {
+        throw IoError("cannot write " + path.string() +
+                      ": it is a device, a pipe or a socket, not a file");
+    }
     const std::filesystem::path tmp = temporary_beside(path);
     try {
         errno = 0;
