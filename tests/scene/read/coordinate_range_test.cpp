@@ -84,7 +84,7 @@ TEST_F(CoordinateRange, TheEyeLookPointAndScreenDistanceAreLimited) {
     EXPECT_EQ(error(scn(entities, "$ 0 0 -10 2e15 0 0")),
               "s.scn:3: expected the look point's x (-1e+15 to 1e+15), found '2e15'");
     EXPECT_EQ(error(scn(entities, "$ 0 0 -10 0 0 0", "$ 1e16")),
-              "s.scn:4: expected the screen distance (between 0 and 1e+15), found '1e16'");
+              "s.scn:4: expected the screen distance (between 1e-05 and 1e+15), found '1e16'");
 }
 
 }  // namespace

@@ -329,8 +329,12 @@ TEST(ScnReader, HeaderAndViewErrors) {
               "s.scn:4: the eye point and the look point are the same (1, 2, 3)");
     EXPECT_EQ(with("$ 10.0 30.0 -75.0 0.0 0.0 0.0", "$ 10.0 30.0 -75.0 0.0 0.0 x"),
               "s.scn:4: expected the look point's z (-1e+15 to 1e+15), found 'x'");
+    // The least screen distance is a millionth of the eye's largest coordinate (75 here): a
+    // screen the eye's rounding swallows gave eye rays of no direction, and a black picture.
     EXPECT_EQ(with("$ 25.0", "$ 0"),
-              "s.scn:6: expected the screen distance (between 0 and 1e+15), found '0'");
+              "s.scn:6: expected the screen distance (between 7.5e-05 and 1e+15), found '0'");
+    EXPECT_EQ(with("$ 25.0", "$ 1e-100"),
+              "s.scn:6: expected the screen distance (between 7.5e-05 and 1e+15), found '1e-100'");
     EXPECT_EQ(with("$ 32.0 25.0", "$ 180 25.0"),
               "s.scn:8: expected the view angle x in degrees (between 0 and 180), found '180'");
     EXPECT_EQ(with("$ 32.0 25.0", "$ 32.0 -inf"),

@@ -31,6 +31,9 @@ inline constexpr int kMaxOctreeDepth = 20;
 /// the largest screen distance and shape radius: the world's extent, voxel sizes and Embree's float
 /// rays stay finite and keep a useful precision.
 inline constexpr double kMaxCoordinate = 1e15;
+/// The screen distance must be more than this times the eye point's largest |coordinate| (or 1
+/// when that is smaller): eye rays start on the screen, aimed away from the eye.
+inline constexpr double kLeastScreenDistance = 1e-6;
 /// The largest |value| of an attribute's colour channels and weights (e a d s t): a light or a
 /// surface can be bright, but not so bright that a few bounces leave the float range.
 inline constexpr double kMaxIntensity = 1e6;

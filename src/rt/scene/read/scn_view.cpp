@@ -1,5 +1,8 @@
 #include "rt/scene/read/scn_view.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "rt/core/text.h"
 #include "rt/scene/read/reader_limits.h"
 
@@ -115,7 +118,13 @@ SceneView read_view(ItemStream& scn, const SceneHeader& header, SourceLocation& 
         throw InputError(eye_at, "the eye point and the look point are the same " +
                                      show_point(v.eye.x, v.eye.y, v.eye.z));
     }
-    v.screen_distance = number_between(scn, "the screen distance", 0.0, kMaxCoordinate);
+    // Eye rays start on the screen and point away from the eye: a screen so close that the eye's
+    // own rounding swallows it gives rays of no direction (a black picture at 1e-100) or bent
+    // ones. A millionth of the eye's largest coordinate (or of 1) keeps them true to 1e-9.
+    const double eye_scale =
+        std::max({1.0, std::fabs(v.eye.x), std::fabs(v.eye.y), std::fabs(v.eye.z)});
+    v.screen_distance = number_between(scn, "the screen distance", kLeastScreenDistance * eye_scale,
+                                       kMaxCoordinate);
     scn.end_item();
     trace(scn, diagnostics, "screendist " + show_number(v.screen_distance));
     v.view_angle_x_degrees = number_between(scn, "the view angle x in degrees", 0.0, 180.0);
