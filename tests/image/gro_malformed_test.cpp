@@ -127,6 +127,8 @@ std::vector<BadGro> bad_files() {
          "7: expected a 'key value' header line, found ''"},
         {"long_line", file_with(replaced(6, "scene " + std::string(5000, 'x')), good),
          "7: expected a header line of at most 4096 characters, found a longer one"},
+        {"no_end_before_pixels", file_with(without(11), pixels(72)),
+         "12: expected a header line, or 'end' closing the header, found binary data"},
         {"truncated", file_with(header_lines(), pixels(71)),
          "13: expected 72 bytes of pixel data after 'end' (2 x 3 pixels), found 71 (the file is "
          "truncated)"},

@@ -48,6 +48,12 @@ public:
             if (c == '\n') {
                 break;
             }
+            // Header lines are text: a control byte is the pixels (or another binary file)
+            // reached before the 'end' line, which says more than "a line too long" would.
+            if (c < 0x20 && c != '\t' && c != '\r') {
+                throw expected_found(next_location(), "a header line, or 'end' closing the header",
+                                     "binary data");
+            }
             if (text.size() >= kMaxLineLength) {
                 throw expected_found(
                     next_location(),
