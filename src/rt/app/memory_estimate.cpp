@@ -161,11 +161,13 @@ void check_memory(const std::vector<MemoryPart>& parts, const MemoryLimit& limit
     if (total <= limit.bytes) {
         return;
     }
+    // With no part of a MiB or more (a limit set very low) there is nothing worth listing.
     throw UsageError(fmt::format(
-        "the render needs about {} ({}), more than the {} available ({}): render a smaller "
+        "the render needs about {}{}, more than the {} available ({}): render a smaller "
         "output matrix or view area (the .scn's view lines), draw only from a line up (-L), "
         "or set the limit with --max-memory GIB",
-        format_bytes(total), listed, format_bytes(limit.bytes), limit.source));
+        format_bytes(total), listed.empty() ? "" : " (" + listed + ")", format_bytes(limit.bytes),
+        limit.source));
 }
 
 std::string format_bytes(std::uint64_t bytes) {
