@@ -181,7 +181,7 @@ std::string format_bytes(std::uint64_t bytes) {
     if (bytes >= 1024) {
         return fmt::format("{:.0f} KiB", kib);
     }
-    return fmt::format("{} bytes", bytes);
+    return fmt::format("{} byte{}", bytes, bytes == 1 ? "" : "s");
 }
 
 }  // namespace rt
