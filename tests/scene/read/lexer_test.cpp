@@ -1,3 +1,10 @@
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <string>
+#include <thread>
+
 #include "rt/scene/read/dollar_lines.h"
 #include "rt/scene/read/item_stream.h"
 #include "rt/scene/read/word_lexer.h"
@@ -5,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "reader_test_support.h"
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace rt::test {
 namespace {
@@ -116,6 +126,29 @@ TEST(SourceText, RefusesNulAndControlBytes) {
     const auto bell = dir.write("bell.scn", "$ 1\x07\n");
     EXPECT_EQ(input_error([&] { read_scene_file(bell); }),
               bell.string() + ":1: unexpected control character 0x07; this is not a text file");
+}
+
+// A binary file is refused at its first bad block, not read whole first (a 300 MB file of zeros
+// took half a gigabyte): a pipe that sends NULs and stays open must not block the reader.
+TEST(SourceText, StopsReadingAtTheFirstBinaryBlock) {
+    TempDir dir;
+    const std::filesystem::path pipe = dir.path() / "zeros.scn";
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    std::promise<void> read_done;
+    std::atomic<bool> closed{false};
+    std::thread writer([&, done = read_done.get_future()] {
+        const int fd = ::open(pipe.c_str(), O_WRONLY);
+        const std::string zeros(1 << 16, '\0');
+        [[maybe_unused]] const ssize_t n = ::write(fd, zeros.data(), zeros.size());
+        done.wait_for(std::chrono::seconds(30));  // open until the reader is done, or gives up
+        closed = true;
+        ::close(fd);
+    });
+    EXPECT_EQ(input_error([&] { read_scene_file(pipe); }),
+              pipe.string() + ":1: unexpected NUL byte; this is not a text file");
+    EXPECT_FALSE(closed) << "the reader waited for the end of the file";
+    read_done.set_value();
+    writer.join();
 }
 
 TEST(SourceText, DropsAFinalCtrlZ) {

@@ -44,7 +44,14 @@ OpenFile open_for_reading(const std::filesystem::path& path, std::string& reason
     return file;
 }
 
-// Reads the bytes, or returns why not.
+bool is_forbidden_control(unsigned char c) {
+    const bool blank = c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+    return (c < 0x20 && !blank) || c == 0x7f;
+}
+
+// Reads the bytes, or returns why not. Reading stops after the first block holding a byte no
+// text file has (a Ctrl-Z apart, allowed at the very end): check_is_text reports it, and a big
+// binary file is not read whole first.
 bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::string& reason) {
     const OpenFile file = open_for_reading(path, reason);
     if (!file) {
@@ -59,6 +66,11 @@ bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::stri
             return false;
         }
         bytes.append(block, got);
+        if (std::any_of(block, block + got, [](char c) {
+                return c != '\x1a' && is_forbidden_control(static_cast<unsigned char>(c));
+            })) {
+            break;
+        }
     }
     if (std::ferror(file.get()) != 0) {
         reason = errno_reason(errno == 0 ? EIO : errno);
@@ -70,11 +82,6 @@ bool read_bytes(const std::filesystem::path& path, std::string& bytes, std::stri
 // Whether the file can be opened, or why not.
 bool can_open(const std::filesystem::path& path, std::string& reason) {
     return open_for_reading(path, reason) != nullptr;
-}
-
-bool is_forbidden_control(unsigned char c) {
-    const bool blank = c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
-    return (c < 0x20 && !blank) || c == 0x7f;
 }
 
 // Binary junk is refused up front, so no reader ever sees a NUL or a stray control byte.
