@@ -151,6 +151,18 @@ TEST(SourceText, StopsReadingAtTheFirstBinaryBlock) {
     writer.join();
 }
 
+// Lone CRs (the classic Mac OS's line ends) end lines as LF does; CRLF stays as it is.
+TEST(SourceText, ReadsLoneCarriageReturnsAsLineEnds) {
+    TempDir dir;
+    const auto mac = dir.write("mac.scn", "heading\r$ 1 2\r$ 3\r\n$ 4\r");
+    const SourceText text = read_scene_file(mac);
+    EXPECT_EQ(text.bytes, "heading\n$ 1 2\n$ 3\r\n$ 4\n");
+    EXPECT_EQ(dollar_words(text), (std::vector<std::string>{"2: 1@3 2@5", "3: 3@3", "4: 4@3"}));
+    const auto bad = dir.write("bad.scn", std::string("$ 1\r$ 2\0\r", 9));
+    EXPECT_EQ(input_error([&] { read_scene_file(bad); }),
+              bad.string() + ":2: unexpected NUL byte; this is not a text file");
+}
+
 TEST(SourceText, DropsAFinalCtrlZ) {
     TempDir dir;
     const auto file = dir.write("dos.scn", "$ 1\r\n\x1a");

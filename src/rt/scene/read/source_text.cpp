@@ -102,6 +102,17 @@ void check_is_text(SourceText& text) {
     throw InputError(text.at(line), "unexpected " + what + "; this is not a text file");
 }
 
+// The classic Mac OS ended lines with a CR alone: each lone CR becomes a line end, so that such
+// a file reads as it reads anywhere else (and its errors name the right lines). CRLF stays.
+void end_lines_at_lone_carriage_returns(SourceText& text) {
+    std::string& b = text.bytes;
+    for (std::size_t i = b.find('\r'); i != std::string::npos; i = b.find('\r', i + 1)) {
+        if (i + 1 == b.size() || b[i + 1] != '\n') {
+            b[i] = '\n';
+        }
+    }
+}
+
 bool oversized(const std::filesystem::path& path) {
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
@@ -122,6 +133,7 @@ SourceText read_scene_file(const std::filesystem::path& path) {
     if (oversized(path) || !read_bytes(path, text.bytes, reason)) {
         throw InputError(SourceLocation{text.name, 0, 0}, "cannot open the scene file: " + reason);
     }
+    end_lines_at_lone_carriage_returns(text);
     check_is_text(text);
     return text;
 }
@@ -134,6 +146,7 @@ SourceText read_named_file(const std::filesystem::path& path, const std::string&
         throw InputError(
             named_at, "cannot open " + kind + " '" + written + "' (" + text.name + "): " + reason);
     }
+    end_lines_at_lone_carriage_returns(text);
     check_is_text(text);
     return text;
 }
