@@ -163,6 +163,21 @@ TEST(AttributesFile, DialectMismatchesNameTheMissingField) {
               "Attributes:4: expected the refraction cone exponent n, found end of line");
 }
 
+// Two numbers more than the dialect's fields: the file was written for another dialect, said at
+// once (with -Dp the manual's lines once read on, their indices taken from a cone exponent, and
+// stopped at "attribute 0 is defined twice").
+TEST(AttributesFile, TwoNumbersTooManyNameTheDialectsThatFit) {
+    ReaderDialect no_power;
+    no_power.no_power_fields = true;
+    EXPECT_EQ(error(manual_attributes, no_power),
+              "Attributes:4: expected 14 numbers, found 16: read the file without -Dp and -Of, for "
+              "pow and tpow, or with -R, for three indices of refraction");
+    const std::string rgb_lines = "$ 1\n$ 1 1 1 2 2 0 0 1 0 0 1.5 1.6 1.7 0 0 0 0 5\n";
+    EXPECT_EQ(error(rgb_lines, {}),
+              "Attributes:2: expected 16 numbers, found 18: read the file with -R, for three "
+              "indices of refraction");
+}
+
 TEST(InlineAttributes, ReadFromTheScnStream) {
     const SourceText text =
         text_file("s.scn",

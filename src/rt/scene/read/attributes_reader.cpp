@@ -65,6 +65,29 @@ void check_attribute(const Attribute& a, Diagnostics& diagnostics) {
     }
 }
 
+// Two numbers more than the dialect has fields: a file with pow and tpow read with -Dp or -Of, or
+// one with three indices of refraction read without -R. Said so at once; the fields would
+// otherwise shift along unnoticed (an index taken from a cone exponent: "defined twice"). Lines
+// short of numbers name their missing field as they are read.
+void check_no_extra_pair(const LineFields& f, const ReaderDialect& dialect) {
+    const std::size_t expected =
+        (dialect.no_power_fields ? 14 : 16) + (dialect.rgb_refraction ? 2 : 0);
+    const std::size_t found = f.numbers_ahead();
+    if (found != expected + 2) {
+        return;
+    }
+    std::string readings;
+    if (dialect.no_power_fields) {
+        readings = "without -Dp and -Of, for pow and tpow";
+    }
+    if (!dialect.rgb_refraction) {
+        readings += std::string(readings.empty() ? "" : ", or ") +
+                    "with -R, for three indices of refraction";
+    }
+    throw expected_found(f.location(), fmt::format("{} numbers", expected),
+                         fmt::format("{}: read the file {}", found, readings));
+}
+
 void trace_attribute(const Attribute& a, Diagnostics& diagnostics) {
     if (!diagnostics.tracing()) {
         return;
@@ -86,6 +109,7 @@ Attribute read_attribute_line(const SourceText& source, const DollarLine& line,
     LineFields f(source, line);
     Attribute a;
     a.where = f.location();
+    check_no_extra_pair(f, dialect);
     a.color.r = f.number_within("the red intensity", kMaxIntensity);
     a.color.g = f.number_within("the green intensity", kMaxIntensity);
     a.color.b = f.number_within("the blue intensity", kMaxIntensity);

@@ -21,6 +21,8 @@ public:
     double number_within(std::string_view what, double limit);
     std::int64_t integer(std::string_view what) { return integer_from(source_, take(what), what); }
     SourceLocation location() const { return source_.at(line_.line); }
+    /// How many numbers follow, one after another, from the next field on.
+    std::size_t numbers_ahead() const;
 
 private:
     Token take(std::string_view what);
