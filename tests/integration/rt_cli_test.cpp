@@ -94,6 +94,16 @@ TEST_F(RtProgram, UnlookupableSceneNamesAreInputErrors) {
     EXPECT_NE(show.exit_code, 0);
 }
 
+// A scene named as given when NAME.scn does not exist: any file but a folder (a pipe from the
+// shell's <(...) is read; a device is refused with that reason, not as a missing NAME.scn).
+TEST_F(RtProgram, ASceneThatExistsIsTakenAsGiven) {
+    const ProgramResult device = rt({"/dev/null", "-n"});
+    EXPECT_EQ(device.exit_code, 1);
+    EXPECT_NE(device.err.find("/dev/null: cannot open the scene file: a device, not a file"),
+              std::string::npos)
+        << device.err;
+}
+
 TEST_F(RtProgram, DashVDrawsTheManualsTextureMappedSurface) {
     write_small_scene("small.scn", "180 320 189 329");  // on the lenses
     const ProgramResult with = rt({"scenes/small", "-V", "-n", "--output", "v.ppm"});

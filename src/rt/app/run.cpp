@@ -347,7 +347,10 @@ std::filesystem::path resolve_scene_path(const std::string& scene_argument) {
     if (std::filesystem::exists(with_suffix, error)) {
         return with_suffix;
     }
-    if (std::filesystem::is_regular_file(scene_argument, error)) {
+    // Anything else that exists (a pipe such as the shell's <(...), a device, refused by the
+    // reader with its reason) is the scene as given.
+    if (std::filesystem::exists(scene_argument, error) &&
+        !std::filesystem::is_directory(scene_argument, error)) {
         return scene_argument;
     }
     return with_suffix;  // the reader's "cannot open" names the usual spelling
