@@ -345,6 +345,10 @@ TEST(ScnReader, HeaderAndViewErrors) {
               "s.scn:12: expected the view area's height in pixels (1 to 16384), found '100000'");
     EXPECT_EQ(with("$ 512 400", "$ 512 400.5"),
               "s.scn:12: expected the view area's height in pixels (1 to 16384), found '400.5'");
+    // Attributes written in the .scn start with their count where the file's name stands.
+    EXPECT_EQ(with("$ Attributes", "$ 13"),
+              "s.scn:16: expected the name of the attributes file, found '13', a number: "
+              "attributes written in the .scn itself, after their count, are read with -Df");
 }
 
 TEST(ScnReader, EntityErrors) {

@@ -1,5 +1,8 @@
 #include "rt/scene/read/scn_reader.h"
 
+#include <filesystem>
+#include <system_error>
+
 #include "rt/core/text.h"
 #include "rt/scene/read/attributes_reader.h"
 #include "rt/scene/read/item_stream.h"
@@ -50,6 +53,19 @@ void read_attributes_item(ItemStream& scn, const ReaderDialect& dialect, ScnFile
         return;
     }
     const Token name = scn.take("the name of the attributes file");
+    // Attributes written in the .scn itself (manual 2.3) start with their count where the file's
+    // name stands; without -Df that count was taken for a name, the attributes read as entities,
+    // and "cannot open the attributes file '13'" came last. A number that names no file says so.
+    std::error_code error;
+    if (parse_double(name.text) &&
+        !std::filesystem::exists(
+            std::filesystem::path(scn.source().name).parent_path() / std::string(name.text),
+            error)) {
+        throw expected_found(location_of(scn.source(), name), "the name of the attributes file",
+                             quote_token(name.text) +
+                                 ", a number: attributes written in the .scn itself, after their "
+                                 "count, are read with -Df");
+    }
     scene.attributes_file = NamedFile{std::string(name.text), location_of(scn.source(), name)};
     scn.end_item();
     trace(scn, diagnostics, "attributes file '" + scene.attributes_file->name + "'");
