@@ -66,18 +66,25 @@ TEST_F(ExtremeNumbers, VertexScaledOutOfRangeIsRefusedAtItsLine) {
         << r.err;
 }
 
-// Once a crash too: a vertex at 1e308 scaled by 2. Its polygon's normal overflows, so the polygon
-// is skipped as degenerate and SEADS builds an empty grid.
-TEST_F(ExtremeNumbers, VertexAt1e308ScaledByTwoDoesNotCrashSeads) {
+// Once a crash too: a vertex at 1e308 scaled by 2. Its polygon's normal overflows, and the
+// polygon, skipped as degenerate, left SEADS an empty grid; now the vertex is refused first.
+TEST_F(ExtremeNumbers, VertexAt1e308ScaledByTwoIsRefusedAtItsLine) {
     dir_.write("huge",
                "4\n0 -1 0 -1\n1 1e308 0 -1\n2 1 0 1\n3 -1 0 1\n4\n0 0 1\n1 1 2\n"
                "2 2 3\n3 3 0\n1\n0 4 0 1 2 3 0 -1 0 0\n");
     const ProgramResult r = rt(
         scene("$ 0 2 8 0 3 .5 2 1", "$ 0 0 -10 0 0 0", "$ 1\n$ 1\n$ 1 1 0 huge 2 0 0 0 0 0 0\n"));
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("huge:12: polygon 0 is degenerate (zero area); skipped"),
-              std::string::npos)
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("huge:3: the vertex (1e+308, 0, -1) is placed at (inf"), std::string::npos)
         << r.err;
+    // A polygon degenerate within the range is still skipped, and SEADS builds an empty grid.
+    dir_.write("flat",
+               "4\n0 -1 0 -1\n1 0 0 0\n2 1 0 1\n3 2 0 2\n4\n0 0 1\n1 1 2\n"
+               "2 2 3\n3 3 0\n1\n0 4 0 1 2 3 0 -1 0 0\n");
+    const ProgramResult flat = rt(
+        scene("$ 0 2 8 0 3 .5 2 1", "$ 0 0 -10 0 0 0", "$ 1\n$ 1\n$ 1 1 0 flat 2 0 0 0 0 0 0\n"));
+    EXPECT_EQ(flat.exit_code, 0) << flat.err;
+    EXPECT_NE(flat.err.find("flat:12: polygon 0 is degenerate"), std::string::npos) << flat.err;
 }
 
 // Once an assertion in Embree ('ray.valid()'): its float rays start no further out than 1.8e18.
