@@ -217,6 +217,7 @@ void warn_of_exploding_tree(const Scene& scene, const ShadingSettings& shading,
 // The .scn, or with --model the scene made around the model, whose header names the octree at
 // the depth suggested for its polygon count (--accel and -od still choose otherwise).
 Scene read_scene(const Options& options, Diagnostics& diagnostics) {
+    const ExitOnInterrupt nothing_to_keep;  // a read may block on a pipe
     if (options.model.empty()) {
         return load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
     }
@@ -224,6 +225,37 @@ Scene read_scene(const Options& options, Diagnostics& diagnostics) {
     scene.header.sptncde = 1;
     scene.header.octr = octree_depth_for(scene);
     return scene;
+}
+
+// -p's report (the method's lines under it), or with -de alone the exit culling's lines.
+void report_profile(const Options& options, const RunConsole& console, const Scene& scene,
+                    const AcceleratorStack& stack, const PhaseTimes& times,
+                    const KindCounters& counters) {
+    if (!console.report) {
+        return;
+    }
+    const Accelerator& accel = stack.top();
+    if (options.profile) {
+        std::string text = profile_report(
+            {accel.name(), scene.polygons.size(), accel.memory_bytes(), times, &counters});
+        for (const std::string& line : stack.report_lines()) {
+            text += "  " + line + "\n";
+        }
+        console.report(text);
+    } else if (options.accel.check_exit_culling) {
+        for (const std::string& line : stack.report_lines()) {
+            console.report(line + "\n");
+        }
+    }
+}
+
+// The intersection method, with exit culling in front unless -De; a signal ends the program at
+// once while it is built (a big build never looks at the flag).
+AcceleratorStack build_accelerator_stack(const Scene& scene, const Options& options,
+                                         const RunConsole& console) {
+    const ExitOnInterrupt nothing_to_keep;
+    return AcceleratorStack(scene, run_accelerator_stack(options),
+                            {console.note, console.warning, console.trace});
 }
 
 // The picture's window, showing the wireframe (manual 1.2.2: "First, the outline (called a
@@ -452,14 +484,12 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
     };
     PhaseTimes times;
     auto phase = Clock::now();
-    std::optional<ExitOnInterrupt> nothing_to_keep(std::in_place);
     Scene scene = read_scene(options, diagnostics);
     const std::string inputs = input_digest(scene);
     times.load_seconds = seconds_since(phase);
 
     const RenderSettings settings = render_settings(scene, options, console, resume, inputs);
     check_resources(scene, options, settings.window, console);
-    nothing_to_keep.reset();  // the window and the inspections wait on the flag themselves
     std::unique_ptr<PictureWindow> shown = open_window(scene, options, settings.window, console);
     if (shown && resume != nullptr) {
         show_finished_rows(*resume, shown->board());  // over the wireframe, as if just drawn
@@ -470,25 +500,11 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
 
     warn_near_plane(scene, console);
     phase = Clock::now();
-    nothing_to_keep.emplace();
-    const AcceleratorStack stack(scene, run_accelerator_stack(options),
-                                 {console.note, console.warning, console.trace});
-    nothing_to_keep.reset();
+    const AcceleratorStack stack = build_accelerator_stack(scene, options, console);
     const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);
     const auto print_profile = [&](const KindCounters& counters) {
-        if (options.profile && console.report) {
-            std::string text = profile_report(
-                {accel->name(), scene.polygons.size(), accel->memory_bytes(), times, &counters});
-            for (const std::string& line : stack.report_lines()) {
-                text += "  " + line + "\n";
-            }
-            console.report(text);
-        } else if (options.accel.check_exit_culling && console.report) {
-            for (const std::string& line : stack.report_lines()) {
-                console.report(line + "\n");
-            }
-        }
+        report_profile(options, console, scene, stack, times, counters);
     };
     if (options.random_rays) {
         // -r: as many random rays as the window has pixels; no picture, so no output file.
