@@ -176,6 +176,12 @@ TEST(AttributesFile, TwoNumbersTooManyNameTheDialectsThatFit) {
     EXPECT_EQ(error(rgb_lines, {}),
               "Attributes:2: expected 16 numbers, found 18: read the file with -R, for three "
               "indices of refraction");
+    // With -R and pow and tpow no dialect has more fields: two more numbers are a description.
+    ReaderDialect rgb;
+    rgb.rgb_refraction = true;
+    Diagnostics d;
+    const std::string long_lines = "$ 1\n$ 1 1 1 2 2 0 0 1 0 0 1.5 1.6 1.7 0 0 0 0 5 6 7\n";
+    EXPECT_EQ(read(long_lines, rgb, d).at(0).index, 5);
 }
 
 TEST(InlineAttributes, ReadFromTheScnStream) {

@@ -84,6 +84,9 @@ void check_no_extra_pair(const LineFields& f, const ReaderDialect& dialect) {
         readings += std::string(readings.empty() ? "" : ", or ") +
                     "with -R, for three indices of refraction";
     }
+    if (readings.empty()) {
+        return;  // -R without -Dp: no dialect has more fields; the two are the description's
+    }
     throw expected_found(f.location(), fmt::format("{} numbers", expected),
                          fmt::format("{}: read the file {}", found, readings));
 }
