@@ -154,6 +154,17 @@ TEST_F(ShowProgram, EveryFormOfAnOptionParsesAlike) {
     EXPECT_EQ(read_png(dir_.path() / "c.png"), to_display(film_, DisplayMapping{0.0, true}));
 }
 
+// A .png or .ppm is a whole picture: every row finished (its window was once drawn all black,
+// as a render not yet begun).
+TEST_F(ShowProgram, APngOrPpmToShowHasEveryRowFinished) {
+    ASSERT_EQ(run("pic --output whole.png --output whole.ppm").code, 0);
+    for (const char* name : {"whole.png", "whole.ppm"}) {
+        const Outcome o = run(name);
+        EXPECT_EQ(o.code, 0) << o.err;
+        EXPECT_NE(o.out.find("rows      4 of 4 finished"), std::string::npos) << name << o.out;
+    }
+}
+
 TEST_F(ShowProgram, NoArgumentsOrHelpPrintUsage) {
     for (const char* args : {"", "--help", "-h", "pic --info --help"}) {
         const Outcome o = run(args);

@@ -27,6 +27,7 @@ Film film_of(const Image8& image) {
                 {image.rgb[at] / 255.0, image.rgb[at + 1] / 255.0, image.rgb[at + 2] / 255.0});
         }
     }
+    film.set_first_finished_row(0);  // a whole picture: the window draws finished rows only
     return film;
 }
 
