@@ -119,6 +119,13 @@ TEST_F(ModelProgram, AMissingOrBrokenModelIsOneLineAndStatus1) {
     const ProgramResult junk = rt({"--model", "junk.obj"});
     EXPECT_EQ(junk.exit_code, 1);
     EXPECT_EQ(junk.err, "junk.obj: the model holds no polygons\n");
+    // Polygons that are all degenerate leave nothing to frame or render either.
+    dir_.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+    const ProgramResult flat = rt({"--model", "flat.obj"});
+    EXPECT_EQ(flat.exit_code, 1);
+    EXPECT_NE(flat.err.find("flat.obj: the model holds no polygons that are not degenerate"),
+              std::string::npos)
+        << flat.err;
 }
 
 }  // namespace

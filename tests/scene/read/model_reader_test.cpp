@@ -213,6 +213,13 @@ TEST_F(ModelReader, BrokenFilesGiveOneClearMessage) {
     EXPECT_EQ(error("m.ply", "ply\nformat ascii 1.0\nend_header\n"),
               "m.ply: cannot read the model: Invalid .ply file: Unable to extract mesh data");
     EXPECT_EQ(error("m.obj", "# nothing but a comment\n"), "m.obj: the model holds no polygons");
+    // A coordinate that is no number, or far out, is named as the file has it.
+    EXPECT_EQ(error("m.obj", "v nan 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"),
+              "m.obj: vertex 0 of mesh 'defaultobject': expected coordinates from -1e+15 to "
+              "1e+15, found (nan, 0, 0)");
+    EXPECT_EQ(error("m.obj", "v 0 0 0\nv 1 2251799813685248 0\nv 1 1 0\nf 1 2 3\n"),
+              "m.obj: vertex 1 of mesh 'defaultobject': expected coordinates from -1e+15 to "
+              "1e+15, found (1, 2251799813685248, 0)");
     EXPECT_EQ(error("m.ply", "\x7f\x45\x4c\x46 binary junk\n"),
               "m.ply: cannot read the model: Invalid .ply file: Incorrect magic number (expected "
               "'ply' or 'PLY').");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <mutex>
@@ -213,7 +214,17 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
     }
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
         const aiVector3D& p = m.mVertices[v];
-        mesh_.vertices.push_back(t.point({p.x, p.y, p.z}));
+        const Vec3 placed = t.point({p.x, p.y, p.z});
+        // NaN, inf or a coordinate far out would wreck the framing's scale, and the range check
+        // after placement would then name some healthy vertex: named here, as the file has it.
+        if (!(std::fabs(placed.x) <= kMaxCoordinate && std::fabs(placed.y) <= kMaxCoordinate &&
+              std::fabs(placed.z) <= kMaxCoordinate)) {
+            throw error(fmt::format(
+                "vertex {} of mesh '{}': expected coordinates from {:g} to "
+                "{:g}, found {}",
+                v, m.mName.C_Str(), -kMaxCoordinate, kMaxCoordinate, show_point(p.x, p.y, p.z)));
+        }
+        mesh_.vertices.push_back(placed);
     }
     const bool normals = m.HasNormals();
     std::vector<std::uint32_t> loop;

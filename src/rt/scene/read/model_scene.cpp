@@ -149,6 +149,11 @@ Scene model_scene(const std::filesystem::path& model, const ReaderDialect& diale
     // Added after the model, the floor copied a million-polygon model's arrays once more.
     builder.reserve_for({&mesh, &floor_mesh, &light_mesh});
     builder.add_surface(model_entry, mesh, 0);
+    if (scene.polygons.empty()) {  // each was degenerate, and skipped with a warning
+        throw InputError({model.string(), 0, 0},
+                         "the model holds no polygons that are not "
+                         "degenerate: there is nothing to render");
+    }
     builder.add_surface(floor, floor_mesh, 1);
     builder.add_surface(light, light_mesh, 2);
     builder.finish(named_at);
