@@ -202,6 +202,35 @@ TEST_F(ModelReader, GltfNodeTransformsPlaceTheMesh) {
     EXPECT_EQ(corner(1, 2), (Vec3{0, 0, 0}));
 }
 
+// The PLY body walked as its header lays it out, before Assimp reserves room for what it claims.
+TEST_F(ModelReader, APlyBodyMustBeWhatItsHeaderSays) {
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n";
+    // A list count a 220-byte file cannot hold: Assimp took 2 GB for it.
+    std::string binary = header;
+    binary.replace(binary.find("ascii"), 5, "binary_little_endian");
+    binary.replace(binary.find("uchar"), 5, "uint");
+    binary += std::string(36, '\0') + std::string("\x00\x00\x00\x10", 4) + std::string(12, '\0');
+    EXPECT_EQ(error("m.ply", binary),
+              "m.ply: face element 0 has a list of 268435456 items: expected 0 to 100000");
+    EXPECT_EQ(error("m.ply", header + "0 0 0\n1 0 0\n0 1 0\n4294967295 0 1 2\n"),
+              "m.ply:13: expected the list count of face element 0 (0 to 100000), found "
+              "'4294967295'");
+    // Fewer elements than promised, and a line short of its properties.
+    EXPECT_EQ(error("m.ply", header + "0.25 0.25 0.25\n1.25 0.25 0.25\n0.25 1.25 0.25\n"),
+              "m.ply:12: the file ends in face element 0 of the 1 its header promises (the file is "
+              "truncated or its header is wrong)");
+    EXPECT_EQ(error("m.ply", header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n"),
+              "m.ply:11: expected 3 numbers in vertex element 1 (as the header lays it out), found "
+              "2");
+    std::string no_x = header;
+    no_x.replace(no_x.find("property float x"), 16, "property float w");
+    EXPECT_EQ(error("m.ply", no_x + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+              "m.ply: the vertex element has no property x");
+}
+
 TEST_F(ModelReader, BrokenFilesGiveOneClearMessage) {
     EXPECT_EQ(error("m.ply",
                     std::string(quad_pentagon_ply).replace(quad_pentagon_ply.rfind('8'), 1, "18")),

@@ -1,5 +1,8 @@
 #include "rt/scene/read/model_header_check.h"
 
+#include <algorithm>
+#include <cctype>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -126,6 +129,252 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
 
 namespace {
 
+// One PLY property as the body walk needs it: a scalar's size, or a list's count and item types.
+struct PlyProperty {
+    std::string name;
+    bool list = false;
+    std::string count_type;  ///< a list's count type
+    std::uintmax_t count_bytes = 0;
+    std::uintmax_t bytes = 0;  ///< a scalar's size, or a list item's
+};
+
+struct PlyLayout {
+    enum class Format { Ascii, LittleEndian, BigEndian } format = Format::Ascii;
+    struct Element {
+        std::string name;
+        std::int64_t count = 0;
+        std::vector<PlyProperty> properties;
+    };
+    std::vector<Element> elements;
+    std::uintmax_t header_bytes = 0;
+    int header_lines = 0;
+};
+
+// The header's layout; false when the file is not PLY or its header is not whole (the header
+// check and Assimp say why).
+bool read_ply_layout(std::istream& in, PlyLayout& layout) {
+    std::string text;
+    if (!std::getline(in, text) || (!text.starts_with("ply") && !text.starts_with("PLY"))) {
+        return false;
+    }
+    layout.header_bytes = text.size() + 1;
+    layout.header_lines = 1;
+    while (std::getline(in, text) && !in.eof()) {
+        layout.header_bytes += text.size() + 1;
+        ++layout.header_lines;
+        const std::vector<std::string> w = words_of(text);
+        if (w.empty()) {
+            continue;
+        }
+        if (w[0] == "end_header") {
+            return true;
+        }
+        if (w[0] == "format" && w.size() >= 2) {
+            layout.format = w[1] == "binary_little_endian" ? PlyLayout::Format::LittleEndian
+                            : w[1] == "binary_big_endian"  ? PlyLayout::Format::BigEndian
+                                                           : PlyLayout::Format::Ascii;
+        } else if (w[0] == "element" && w.size() >= 3) {
+            const std::optional<std::int64_t> count = parse_integer(w[2]);
+            layout.elements.push_back({w[1], count.value_or(0), {}});
+        } else if (w[0] == "property" && w.size() >= 3 && !layout.elements.empty()) {
+            PlyProperty p;
+            p.name = w.back();
+            p.list = w[1] == "list" && w.size() >= 5;
+            p.count_type = p.list ? w[2] : "";
+            p.count_bytes = p.list ? binary_size(w[2]) : 0;
+            p.bytes = binary_size(p.list ? w[3] : w[1]);
+            layout.elements.back().properties.push_back(p);
+        }
+    }
+    return false;
+}
+
+// A list count in a binary PLY: signed or unsigned, either byte order.
+std::int64_t binary_count(const unsigned char* b, const PlyProperty& p, bool big_endian) {
+    if (p.count_bytes == 0 || p.count_bytes > 8) {
+        return -1;  // no count type PLY has (check_ply_body leaves such files to Assimp)
+    }
+    std::uint64_t raw = 0;
+    for (std::uintmax_t i = 0; i < p.count_bytes; ++i) {
+        const std::uintmax_t k = big_endian ? i : p.count_bytes - 1 - i;
+        raw = (raw << 8) | b[k];
+    }
+    const bool is_signed = p.count_type == "char" || p.count_type == "int8" ||
+                           p.count_type == "short" || p.count_type == "int16" ||
+                           p.count_type == "int" || p.count_type == "int32";
+    if (is_signed && p.count_bytes < 8 && (raw >> (8 * p.count_bytes - 1)) != 0) {
+        return -1;  // negative
+    }
+    return static_cast<std::int64_t>(raw);
+}
+
+// Reads a binary file forward in big blocks.
+class ByteWalk {
+public:
+    explicit ByteWalk(std::istream& in) : in_(in) {}
+    /// The next `n` bytes (n <= 8), or null at the end of the file.
+    const unsigned char* take(std::uintmax_t n) {
+        if (!fill(n)) {
+            return nullptr;
+        }
+        const unsigned char* at = buffer_.data() + next_;
+        next_ += n;
+        return at;
+    }
+    /// Skips `n` bytes; false if the file ends first.
+    bool skip(std::uintmax_t n) {
+        const std::uintmax_t here = std::min<std::uintmax_t>(n, buffer_.size() - next_);
+        next_ += here;
+        n -= here;
+        if (n == 0) {
+            return true;
+        }
+        in_.seekg(static_cast<std::streamoff>(n - 1), std::ios::cur);
+        return static_cast<bool>(in_) && in_.get() != std::char_traits<char>::eof();
+    }
+
+private:
+    bool fill(std::uintmax_t n) {
+        if (buffer_.size() - next_ >= n) {
+            return true;
+        }
+        buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(next_));
+        next_ = 0;
+        const std::size_t kept = buffer_.size();
+        buffer_.resize(kept + (std::size_t{1} << 20));
+        in_.read(reinterpret_cast<char*>(buffer_.data() + kept),
+                 static_cast<std::streamsize>(std::size_t{1} << 20));
+        buffer_.resize(kept + static_cast<std::size_t>(in_.gcount()));
+        return buffer_.size() >= n;
+    }
+
+    std::istream& in_;
+    std::vector<unsigned char> buffer_;
+    std::size_t next_ = 0;
+};
+
+std::string ply_list_fault(const PlyLayout::Element& e, std::int64_t index, std::int64_t count) {
+    return fmt::format("{} element {} has a list of {} items: expected 0 to {}", e.name, index,
+                       count, kMaxEdgesPerPolygon);
+}
+
+std::string ply_truncated(const PlyLayout::Element& e, std::int64_t index) {
+    return fmt::format(
+        "the file ends in {} element {} of the {} its header promises (the file "
+        "is truncated or its header is wrong)",
+        e.name, index, e.count);
+}
+
+// One element with lists, its list counts read and checked, the rest skipped.
+void walk_binary_element(ByteWalk& bytes, const PlyLayout::Element& e, std::int64_t i,
+                         bool big_endian, const std::string& name) {
+    for (const PlyProperty& p : e.properties) {
+        std::uintmax_t skip = p.bytes;
+        if (p.list) {
+            const unsigned char* at = bytes.take(p.count_bytes);
+            if (at == nullptr) {
+                throw InputError({name, 0, 0}, ply_truncated(e, i));
+            }
+            const std::int64_t n = binary_count(at, p, big_endian);
+            if (n < 0 || n > kMaxEdgesPerPolygon) {
+                throw InputError({name, 0, 0}, ply_list_fault(e, i, n));
+            }
+            skip = static_cast<std::uintmax_t>(n) * p.bytes;
+        }
+        if (!bytes.skip(skip)) {
+            throw InputError({name, 0, 0}, ply_truncated(e, i));
+        }
+    }
+}
+
+void walk_binary_ply(std::istream& in, const PlyLayout& layout, const std::string& name) {
+    const bool big_endian = layout.format == PlyLayout::Format::BigEndian;
+    ByteWalk bytes(in);
+    for (const PlyLayout::Element& e : layout.elements) {
+        // Elements without lists (the vertices, mostly) have one size: skipped whole.
+        std::uintmax_t record = 0;
+        bool lists = false;
+        for (const PlyProperty& p : e.properties) {
+            record += p.bytes;
+            lists = lists || p.list;
+        }
+        if (!lists && !bytes.skip(static_cast<std::uintmax_t>(e.count) * record)) {
+            throw InputError({name, 0, 0}, ply_truncated(e, e.count - 1));
+        }
+        for (std::int64_t i = 0; lists && i < e.count; ++i) {
+            walk_binary_element(bytes, e, i, big_endian, name);
+        }
+    }
+}
+
+// The words of a line, as views into it (the body walk splits millions of lines).
+void split_words(std::string_view text, std::vector<std::string_view>& words) {
+    words.clear();
+    std::size_t at = 0;
+    while (at < text.size()) {
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) {
+            ++at;
+        }
+        const std::size_t start = at;
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) == 0) {
+            ++at;
+        }
+        if (at > start) {
+            words.push_back(text.substr(start, at - start));
+        }
+    }
+}
+
+// The words element `i` of `e` takes on its line: each scalar one, each list its count and as many
+// items; an error at the line for a count out of range.
+std::size_t ascii_element_words(const std::vector<std::string_view>& w, const PlyLayout::Element& e,
+                                std::int64_t i, const SourceLocation& at) {
+    std::size_t next = 0;
+    for (const PlyProperty& p : e.properties) {
+        std::int64_t items = 1;
+        if (p.list && next < w.size()) {
+            const std::optional<std::int64_t> n = parse_integer(w[next++]);
+            if (!n || *n < 0 || *n > kMaxEdgesPerPolygon) {
+                throw expected_found(at,
+                                     fmt::format("the list count of {} element {} (0 to {})",
+                                                 e.name, i, kMaxEdgesPerPolygon),
+                                     quote_token(w[next - 1]));
+            }
+            items = *n;
+        }
+        next += static_cast<std::size_t>(items);
+    }
+    return next;
+}
+
+// In ASCII each element is one line (blank lines apart): its words must be exactly its properties,
+// a list's count followed by as many items.
+void walk_ascii_ply(std::istream& in, const PlyLayout& layout, const std::string& name) {
+    int line = layout.header_lines;
+    std::string text;
+    std::vector<std::string_view> w;
+    for (const PlyLayout::Element& e : layout.elements) {
+        for (std::int64_t i = 0; i < e.count; ++i) {
+            w.clear();
+            while (w.empty()) {
+                if (!std::getline(in, text)) {
+                    throw InputError({name, line, 0}, ply_truncated(e, i));
+                }
+                ++line;
+                split_words(text, w);
+            }
+            const std::size_t needed = ascii_element_words(w, e, i, {name, line, 0});
+            if (needed != w.size()) {
+                throw expected_found({name, line, 0},
+                                     fmt::format("{} numbers in {} element {} (as the header "
+                                                 "lays it out)",
+                                                 needed, e.name, i),
+                                     std::to_string(w.size()));
+            }
+        }
+    }
+}
+
 // The face lines in the bytes given (the file's start): each must start with its corner count, a
 // whole number from 1, followed by as many whole numbers (the vertices). A few lines that are not
 // faces make Assimp 5.2's OFF reader read past its faces (a crash found by fuzzing,
@@ -164,6 +413,39 @@ void check_off_faces(std::istream& in, int line, std::int64_t vertices, std::int
 }
 
 }  // namespace
+
+void check_ply_body(const std::filesystem::path& path, const std::string& name) {
+    std::ifstream in(path, std::ios::binary);
+    PlyLayout layout;
+    if (!in || !read_ply_layout(in, layout)) {
+        return;
+    }
+    for (const PlyLayout::Element& e : layout.elements) {
+        for (const PlyProperty& p : e.properties) {
+            if (layout.format != PlyLayout::Format::Ascii &&
+                (p.bytes == 0 || (p.list && p.count_bytes == 0))) {
+                return;  // a type PLY does not have: Assimp refuses the header
+            }
+        }
+    }
+    for (const PlyLayout::Element& e : layout.elements) {
+        if (e.name != "vertex") {
+            continue;
+        }
+        for (const char* axis : {"x", "y", "z"}) {
+            if (std::none_of(e.properties.begin(), e.properties.end(),
+                             [&](const PlyProperty& p) { return p.name == axis && !p.list; })) {
+                throw InputError({name, 0, 0},
+                                 fmt::format("the vertex element has no property {}", axis));
+            }
+        }
+    }
+    if (layout.format == PlyLayout::Format::Ascii) {
+        walk_ascii_ply(in, layout, name);
+    } else {
+        walk_binary_ply(in, layout, name);
+    }
+}
 
 void check_off_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name) {
     std::istringstream in{std::string(bytes)};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -15,6 +16,13 @@ namespace rt {
 /// break (Assimp 5.2 never returns from such a file). Other faults of the header are left to Assimp
 /// to refuse.
 void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name);
+
+/// Walks a PLY file's elements as its header lays them out, without keeping them: throws
+/// InputError naming the element when a list's count is negative or above kMaxEdgesPerPolygon
+/// (Assimp reserves room for it first: a 220-byte file took 2 GB), or when the data ends before
+/// the elements the header promises (Assimp then reads on, or makes up the rest). Run after
+/// check_ply_header has accepted the header; a file that is not PLY is left alone.
+void check_ply_body(const std::filesystem::path& path, const std::string& name);
 
 /// The same for an OFF file: the vertex and face counts after the optional OFF keyword.
 void check_off_header(std::string_view bytes, std::uintmax_t file_size, const std::string& name);

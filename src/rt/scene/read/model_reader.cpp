@@ -105,6 +105,7 @@ void check_header(const std::filesystem::path& path, const std::string& ext,
     const std::uintmax_t size = std::filesystem::file_size(path);
     if (ext == ".ply") {
         check_ply_header(head, size, name);
+        check_ply_body(path, name);
     } else {
         check_off_header(head, size, name);
     }
