@@ -107,6 +107,10 @@ TEST(SwitchParser, LongOptionValues) {
               "--output: expected a file name after --output, found nothing");
     EXPECT_EQ(usage_error({"s", "--output", "-n"}),
               "--output: expected a file name after --output, found '-n'");
+    EXPECT_EQ(usage_error({"s", "--tile", "-1/3"}),
+              "--tile: expected I/N after --tile, found '-1/3'");
+    EXPECT_EQ(usage_error({"s", "--accel", "-p"}),
+              "--accel: expected NAME after --accel, found '-p'");
     EXPECT_EQ(usage_error({"s", "--seed", "x"}),
               "--seed: expected a whole number after --seed, found 'x'");
     EXPECT_EQ(usage_error({"s", "--threads", "-1"}),

@@ -127,9 +127,10 @@ SwitchArgument read_pair(const SwitchSpec& spec, std::string_view text) {
 }
 
 SwitchArgument read_text(const SwitchSpec& spec, std::string_view text) {
-    // A value that looks like a switch is almost surely a forgotten value, not a file name.
+    // A value that looks like a switch is almost surely a forgotten value, not a file name (or
+    // the I/N of --tile, the NAME of --accel: named as the help names them).
     if (text.empty() || text.starts_with("-")) {
-        expected(spec, "a file name", text);
+        expected(spec, spec.first.name.starts_with("FILE") ? "a file name" : spec.first.name, text);
     }
     SwitchArgument argument;
     argument.text = std::string(text);
