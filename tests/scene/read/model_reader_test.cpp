@@ -295,16 +295,31 @@ TEST_F(ModelReader, AHeaderPromisingMoreThanTheFileHoldsIsRefusedBeforeReading) 
 // of them make it read past its faces (fuzz/regressions/model/assimp-off-face-without-count).
 TEST_F(ModelReader, AnOffFaceWithoutItsCornerCountIsRefusedBeforeAssimp) {
     EXPECT_EQ(error("m.off", "OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\nv 0 0 0\nv 1 0 0\n"),
-              "m.off:7: expected face 1: a corner count from 1, then as many vertex numbers; "
-              "found 'v 0 0 0'");
+              "m.off:7: expected face 1: a corner count from 1, then as many vertex numbers (0 "
+              "to 2); found 'v 0 0 0'");
     EXPECT_EQ(error("m.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
-              "m.off:6: expected face 0: a corner count from 1, then as many vertex numbers; "
-              "found '3 0 1'");
+              "m.off:6: expected face 0: a corner count from 1, then as many vertex numbers (0 "
+              "to 2); found '3 0 1'");
+    // A vertex the file does not have (Assimp clamps it), and fewer faces than promised (Assimp
+    // renders what there is).
+    EXPECT_EQ(error("m.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 9\n"),
+              "m.off:7: expected face 0: a corner count from 1, then as many vertex numbers (0 "
+              "to 3); found '4 0 1 2 9'");
+    EXPECT_EQ(error("m.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"),
+              "m.off:7: the file ends after 1 of the 2 faces its header promises (the file is "
+              "truncated or its header is wrong)");
 }
 
 TEST_F(ModelReader, WhatAssimpRepairsIsWarnedAbout) {
-    // Assimp's OFF reader clamps an index out of range instead of refusing it.
-    read("m.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 9\n");
+    // Past the first 64 KB the face lines are Assimp's alone: its OFF reader clamps an index out
+    // of range instead of refusing it.
+    std::string off = "OFF\n4000 1 0\n";
+    for (int v = 0; v < 4000; ++v) {
+        off += "0.000000 0.000000 " + std::to_string(v) + ".000000\n";
+    }
+    off += "3 0 1 9999\n";
+    ASSERT_GT(off.size(), std::size_t{64} * 1024);
+    read("m.off", off);
     const std::vector<std::string> w = warnings();
     EXPECT_NE(std::find(w.begin(), w.end(), "m.off: OFF: Vertex index is out of range"), w.end());
 }

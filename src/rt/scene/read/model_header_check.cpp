@@ -376,17 +376,19 @@ void walk_ascii_ply(std::istream& in, const PlyLayout& layout, const std::string
 }
 
 // The face lines in the bytes given (the file's start): each must start with its corner count, a
-// whole number from 1, followed by as many whole numbers (the vertices). A few lines that are not
-// faces make Assimp 5.2's OFF reader read past its faces (a crash found by fuzzing,
-// docs/lab/fuzz-2026-12-02.md).
+// whole number from 1, followed by as many vertex numbers, each one the file has. A few lines that
+// are not faces make Assimp 5.2's OFF reader read past its faces (a crash found by fuzzing,
+// docs/lab/fuzz-2026-12-02.md); a number out of range it clamps. When the bytes are the whole
+// file (`whole`), it must hold the vertices and faces its header promises: Assimp makes up the
+// rest with a warning.
 void check_off_faces(std::istream& in, int line, std::int64_t vertices, std::int64_t faces,
-                     const std::string& name) {
+                     bool whole, const std::string& name) {
     std::int64_t vertex_lines = 0;
     std::int64_t face_lines = 0;
     for (std::string text; face_lines < faces && std::getline(in, text);) {
         ++line;
-        if (in.eof()) {
-            return;  // a last line cut off at the end of the bytes given, or of the file
+        if (in.eof() && !whole) {
+            return;  // a last line cut off at the end of the bytes given
         }
         const std::vector<std::string> words = words_of(text.substr(0, text.find('#')));
         if (words.empty()) {
@@ -401,14 +403,23 @@ void check_off_faces(std::istream& in, int line, std::int64_t vertices, std::int
         bool good = corners && *corners >= 1 && static_cast<std::uint64_t>(*corners) < words.size();
         for (std::size_t i = 1; good && i <= static_cast<std::size_t>(*corners); ++i) {
             const std::optional<std::int64_t> v = parse_integer(words[i]);
-            good = v.has_value();  // one out of range Assimp clamps, with a warning
+            good = v && *v >= 0 && *v < vertices;
         }
         if (!good) {
             throw InputError({name, line, 0},
-                             "expected face " + std::to_string(face_lines - 1) +
-                                 ": a corner count from 1, then as many vertex numbers; found '" +
-                                 text + "'");
+                             fmt::format("expected face {}: a corner count from 1, then as many "
+                                         "vertex numbers (0 to {}); found '{}'",
+                                         face_lines - 1, vertices - 1, text));
         }
+    }
+    if (whole && face_lines < faces) {
+        const bool short_of_vertices = vertex_lines < vertices;
+        throw InputError({name, std::max(line, 1), 0},
+                         fmt::format("the file ends after {} of the {} {} its header promises (the "
+                                     "file is truncated or its header is wrong)",
+                                     short_of_vertices ? vertex_lines : face_lines,
+                                     short_of_vertices ? vertices : faces,
+                                     short_of_vertices ? "vertices" : "faces"));
     }
 }
 
@@ -477,7 +488,7 @@ void check_off_header(std::string_view bytes, std::uintmax_t file_size, const st
     check_count(name, counts_line, "vertices", *vertices, 6, file_size);
     check_count(name, counts_line, "faces", *faces, 2,
                 file_size - std::min(file_size, static_cast<std::uintmax_t>(*vertices) * 6));
-    check_off_faces(in, line, *vertices, *faces, name);
+    check_off_faces(in, line, *vertices, *faces, bytes.size() >= file_size, name);
 }
 
 }  // namespace rt
