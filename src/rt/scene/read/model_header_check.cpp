@@ -16,13 +16,29 @@ namespace rt {
 
 namespace {
 
-std::vector<std::string> words_of(const std::string& line) {
-    std::istringstream in(line);
-    std::vector<std::string> words;
-    for (std::string w; in >> w;) {
-        words.push_back(w);
+// The words of a line, as views into it (the body walk splits millions of lines).
+void split_words(std::string_view text, std::vector<std::string_view>& words) {
+    words.clear();
+    std::size_t at = 0;
+    while (at < text.size()) {
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) {
+            ++at;
+        }
+        const std::size_t start = at;
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) == 0) {
+            ++at;
+        }
+        if (at > start) {
+            words.push_back(text.substr(start, at - start));
+        }
     }
-    return words;
+}
+
+// The same as strings, for the header's few lines.
+std::vector<std::string> words_of(std::string_view line) {
+    std::vector<std::string_view> views;
+    split_words(line, views);
+    return {views.begin(), views.end()};
 }
 
 // Bytes of one binary PLY scalar; 0 for a type name PLY does not have.
@@ -303,24 +319,6 @@ void walk_binary_ply(std::istream& in, const PlyLayout& layout, const std::strin
         }
         for (std::int64_t i = 0; lists && i < e.count; ++i) {
             walk_binary_element(bytes, e, i, big_endian, name);
-        }
-    }
-}
-
-// The words of a line, as views into it (the body walk splits millions of lines).
-void split_words(std::string_view text, std::vector<std::string_view>& words) {
-    words.clear();
-    std::size_t at = 0;
-    while (at < text.size()) {
-        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) {
-            ++at;
-        }
-        const std::size_t start = at;
-        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) == 0) {
-            ++at;
-        }
-        if (at > start) {
-            words.push_back(text.substr(start, at - start));
         }
     }
 }
