@@ -2,6 +2,12 @@
 // the maximum, and its limits (-ol) and build settings (-ss, -op).
 #include "rt/accel/octree/octree.h"
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <vector>
+
+#include "rt/accel/octree/octree_ddda.h"
 #include "rt/core/diagnostics.h"
 #include "rt/core/error.h"
 #include "rt/scene/read/load_scene.h"
@@ -66,6 +72,104 @@ TEST(Octree, PolygonsInVoxelFacesAndRaysAlongThemMatchBruteForce) {
         const Octree accel(scene, octree(depth));
         ASSERT_EQ(accel.tree().world.lo, bare.world.lo);
         expect_same_as_brute_force(scene, accel, lattice_rays(lattice, divisions, 12000, 3));
+    }
+}
+
+// Every leaf of `tree` with its box, from the lattice as the walk computes it.
+struct LeafBox {
+    const OctreeNode* node;
+    Box3 box;
+};
+
+void collect_leaves(const OctreeTree& tree, std::uint32_t n, const std::int64_t origin[3],
+                    std::int64_t size, std::vector<LeafBox>& leaves) {
+    const OctreeNode& node = tree.nodes[n];
+    if (node.is_leaf()) {
+        Box3 box;
+        for (int a = 0; a < 3; ++a) {
+            box.lo[a] = tree.lattice(a, origin[a]);
+            box.hi[a] = tree.lattice(a, origin[a] + size);
+        }
+        leaves.push_back({&node, box});
+        return;
+    }
+    for (std::uint32_t child = 0; child < 8; ++child) {
+        const std::int64_t half = size / 2;
+        const std::int64_t at[3] = {origin[0] + ((child & 1u) != 0 ? half : 0),
+                                    origin[1] + ((child & 2u) != 0 ? half : 0),
+                                    origin[2] + ((child & 4u) != 0 ? half : 0)};
+        collect_leaves(tree, node.first + child, at, half, leaves);
+    }
+}
+
+// Where the ray's line is inside `box` within `t`, by the slab method: {entry, exit}, entry >
+// exit when it never is.
+Interval line_inside(const Ray& ray, const Box3& box, Interval t) {
+    for (int a = 0; a < 3; ++a) {
+        if (ray.direction[a] == 0.0) {
+            if (ray.origin[a] < box.lo[a] || ray.origin[a] > box.hi[a]) {
+                return {1.0, 0.0};
+            }
+            continue;
+        }
+        const double t0 = (box.lo[a] - ray.origin[a]) / ray.direction[a];
+        const double t1 = (box.hi[a] - ray.origin[a]) / ray.direction[a];
+        t.min = std::max(t.min, std::min(t0, t1));
+        t.max = std::min(t.max, std::max(t0, t1));
+    }
+    return t;
+}
+
+// The walk against the leaves' boxes themselves, on a tree whose leaves range from the finest
+// lattice step to large empty cubes: each leaf the line crosses for more than a sliver is
+// visited, each leaf at most once, in the order the line enters them, and none that the line
+// misses by more than a sliver.
+TEST(Octree, WalkVisitsTheLeavesTheRayCrossesInOrder) {
+    const Scene sphere = make_sphere({0.1, 0.2, 0.3}, 2.0, 24, 32, true);
+    for (const int depth : {4, 7}) {
+        const OctreeTree tree = build_octree_depth_first(sphere, at_depth(depth));
+        std::vector<LeafBox> leaves;
+        const std::int64_t root[3] = {0, 0, 0};
+        collect_leaves(tree, 0, root, std::int64_t{1} << depth, leaves);
+        ASSERT_GT(leaves.size(), 100u);
+        const Vec3 extent = tree.world.extent();
+        const double sliver = 1e-9 * std::max({extent.x, extent.y, extent.z});
+        int crossings = 0;
+        for (const RayCase& c : random_rays(tree.world, 3000, 17)) {
+            std::vector<const OctreeNode*> walked;
+            walk_octree(tree, c.ray, c.t, [&](auto, double, const OctreeLeafAt& leaf) {
+                walked.push_back(leaf.node);
+                return false;
+            });
+            const double speed = length(c.ray.direction);
+            std::vector<std::pair<double, const OctreeNode*>> crossed;
+            for (const LeafBox& leaf : leaves) {
+                const Interval in = line_inside(c.ray, leaf.box, c.t);
+                if ((in.max - in.min) * speed > sliver) {
+                    crossed.emplace_back(in.min, leaf.node);
+                }
+                if (std::find(walked.begin(), walked.end(), leaf.node) != walked.end()) {
+                    EXPECT_GE((in.max - in.min) * speed, -sliver)
+                        << "visited a leaf the line misses: " << describe(c);
+                }
+            }
+            std::sort(crossed.begin(), crossed.end());
+            crossings += static_cast<int>(crossed.size());
+            EXPECT_EQ(std::set<const OctreeNode*>(walked.begin(), walked.end()).size(),
+                      walked.size())
+                << "a leaf visited twice: " << describe(c);
+            // The crossed leaves appear in the walk in the order the line enters them.
+            std::size_t next = 0;
+            for (const auto& [entry, node] : crossed) {
+                const auto found =
+                    std::find(walked.begin() + static_cast<long>(next), walked.end(), node);
+                ASSERT_NE(found, walked.end())
+                    << "depth " << depth << ": missed or out of order a leaf entered at t " << entry
+                    << ": " << describe(c);
+                next = static_cast<std::size_t>(found - walked.begin()) + 1;
+            }
+        }
+        EXPECT_GT(crossings, 3000) << "depth " << depth;
     }
 }
 

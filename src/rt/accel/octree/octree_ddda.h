@@ -166,7 +166,8 @@ void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const O
         if (more) {
             // Within the face, and never back against the ray's direction: every coordinate
             // then only moves forward, so the walk cannot revisit a leaf whatever the rounding.
-            for (int a = 0; a < 3; ++a) {
+            // A leaf one lattice step wide leaves the other coordinates nowhere else to go.
+            for (int a = 0; a < 3 && leaf.size > 1; ++a) {
                 if (a != axis && step[a] > 0) {
                     at[a] = lattice_cell(a, t_exit, at[a], leaf.origin[a] + leaf.size - 1);
                 } else if (a != axis && step[a] < 0) {
