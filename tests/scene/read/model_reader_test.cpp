@@ -231,11 +231,42 @@ TEST_F(ModelReader, APlyBodyMustBeWhatItsHeaderSays) {
               "m.ply: the vertex element has no property x");
 }
 
+// Assimp reads a face's vertex numbers as unsigned: -5 was named as vertex 4294967291.
+TEST_F(ModelReader, APlyFaceMustReferToVerticesTheFileHas) {
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 2\n"
+        "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    EXPECT_EQ(error("m.ply", header + "3 0 -5 2\n"),
+              "m.ply:14: face element 1 refers to vertex -5: expected 0 to 2");
+    EXPECT_EQ(error("m.ply", header + "3 0 3 2\n"),
+              "m.ply:14: face element 1 refers to vertex 3: expected 0 to 2");
+    EXPECT_EQ(error("m.ply", header + "3 0 one 2\n"),
+              "m.ply:14: face element 1 refers to vertex 'one': expected 0 to 2");
+    // The same in binary, read as the list's item type says (signed int, unsigned short).
+    std::string binary = header.substr(0, header.find("0 0 0\n"));
+    binary.replace(binary.find("ascii"), 5, "binary_little_endian");
+    binary.replace(binary.find("face 2"), 6, "face 1");
+    std::string vertices;
+    for (const float c : {0.F, 0.F, 0.F, 1.F, 0.F, 0.F, 0.F, 1.F, 0.F}) {
+        vertices.append(reinterpret_cast<const char*>(&c), sizeof c);  // a little-endian host
+    }
+    EXPECT_EQ(error("m.ply",
+                    binary + vertices + std::string("\x03\0\0\0\0\x01\0\0\0\xfb\xff\xff\xff", 13)),
+              "m.ply: face element 0 refers to vertex -5: expected 0 to 2");
+    std::string ushort = binary;
+    ushort.replace(ushort.find("uchar int"), 9, "uchar ushort");
+    EXPECT_EQ(error("m.ply", ushort + vertices + std::string("\x03\0\0\x01\0\x07\0", 7)),
+              "m.ply: face element 0 refers to vertex 7: expected 0 to 2");
+    EXPECT_EQ(
+        read("m.ply", ushort + vertices + std::string("\x03\0\0\x01\0\x02\0", 7)).polygons.size(),
+        1u);
+}
+
 TEST_F(ModelReader, BrokenFilesGiveOneClearMessage) {
     EXPECT_EQ(error("m.ply",
                     std::string(quad_pentagon_ply).replace(quad_pentagon_ply.rfind('8'), 1, "18")),
-              "m.ply: polygon 1 refers to vertex 18, but its mesh has 9 vertices (numbered from "
-              "0)");
+              "m.ply:21: face element 1 refers to vertex 18: expected 0 to 8");
     EXPECT_EQ(error("m.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 7\n"),
               "m.obj: cannot read the model: OBJ: vertex index out of range");
     EXPECT_EQ(error("m.ply", ""), "m.ply: cannot read the model: File m.ply is empty.");

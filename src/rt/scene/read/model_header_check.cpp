@@ -151,7 +151,9 @@ struct PlyProperty {
     bool list = false;
     std::string count_type;  ///< a list's count type
     std::uintmax_t count_bytes = 0;
-    std::uintmax_t bytes = 0;  ///< a scalar's size, or a list item's
+    std::string type;             ///< a scalar's type, or a list item's
+    std::uintmax_t bytes = 0;     ///< a scalar's size, or a list item's
+    bool vertex_numbers = false;  ///< a face's list of vertex numbers, as Assimp reads it
 };
 
 struct PlyLayout {
@@ -162,6 +164,7 @@ struct PlyLayout {
         std::vector<PlyProperty> properties;
     };
     std::vector<Element> elements;
+    std::int64_t vertices = -1;  ///< the vertex element's count; -1 without one
     std::uintmax_t header_bytes = 0;
     int header_lines = 0;
 };
@@ -183,6 +186,9 @@ bool read_ply_layout(std::istream& in, PlyLayout& layout) {
             continue;
         }
         if (w[0] == "end_header") {
+            for (const PlyLayout::Element& e : layout.elements) {
+                layout.vertices = e.name == "vertex" ? e.count : layout.vertices;
+            }
             return true;
         }
         if (w[0] == "format" && w.size() >= 2) {
@@ -198,28 +204,37 @@ bool read_ply_layout(std::istream& in, PlyLayout& layout) {
             p.list = w[1] == "list" && w.size() >= 5;
             p.count_type = p.list ? w[2] : "";
             p.count_bytes = p.list ? binary_size(w[2]) : 0;
-            p.bytes = binary_size(p.list ? w[3] : w[1]);
+            p.type = p.list ? w[3] : w[1];
+            p.bytes = binary_size(p.type);
+            // The face list Assimp takes the polygons' corners from (its PLY parser's names).
+            p.vertex_numbers = p.list && layout.elements.back().name == "face" &&
+                               (p.name == "vertex_indices" || p.name == "vertex_index");
             layout.elements.back().properties.push_back(p);
         }
     }
     return false;
 }
 
-// A list count in a binary PLY: signed or unsigned, either byte order.
-std::int64_t binary_count(const unsigned char* b, const PlyProperty& p, bool big_endian) {
-    if (p.count_bytes == 0 || p.count_bytes > 8) {
-        return -1;  // no count type PLY has (check_ply_body leaves such files to Assimp)
-    }
+bool is_integer_type(const std::string& type) {
+    return type != "float" && type != "float32" && type != "double" && type != "float64";
+}
+
+bool is_signed_type(const std::string& type) {
+    return type == "char" || type == "int8" || type == "short" || type == "int16" ||
+           type == "int" || type == "int32";
+}
+
+// An integer of a binary PLY (a list count, or a vertex number): `bytes` long (1 to 8), signed or
+// unsigned as `type` says, in either byte order.
+std::int64_t binary_integer(const unsigned char* b, std::uintmax_t bytes, const std::string& type,
+                            bool big_endian) {
     std::uint64_t raw = 0;
-    for (std::uintmax_t i = 0; i < p.count_bytes; ++i) {
-        const std::uintmax_t k = big_endian ? i : p.count_bytes - 1 - i;
+    for (std::uintmax_t i = 0; i < bytes; ++i) {
+        const std::uintmax_t k = big_endian ? i : bytes - 1 - i;
         raw = (raw << 8) | b[k];
     }
-    const bool is_signed = p.count_type == "char" || p.count_type == "int8" ||
-                           p.count_type == "short" || p.count_type == "int16" ||
-                           p.count_type == "int" || p.count_type == "int32";
-    if (is_signed && p.count_bytes < 8 && (raw >> (8 * p.count_bytes - 1)) != 0) {
-        return -1;  // negative
+    if (is_signed_type(type) && bytes > 0 && bytes < 8 && (raw >> (8 * bytes - 1)) != 0) {
+        return static_cast<std::int64_t>(raw) - (std::int64_t{1} << (8 * bytes));
     }
     return static_cast<std::int64_t>(raw);
 }
@@ -274,6 +289,16 @@ std::string ply_list_fault(const PlyLayout::Element& e, std::int64_t index, std:
                        count, kMaxEdgesPerPolygon);
 }
 
+// Assimp reads a face's vertex numbers as unsigned: -5 would be named as vertex 4294967291.
+std::string ply_vertex_fault(std::int64_t face, std::string_view vertex, std::int64_t vertices) {
+    if (vertices == 0) {
+        return fmt::format("face element {} refers to vertex {}, but the file has no vertices",
+                           face, vertex);
+    }
+    return fmt::format("face element {} refers to vertex {}: expected 0 to {}", face, vertex,
+                       vertices - 1);
+}
+
 std::string ply_truncated(const PlyLayout::Element& e, std::int64_t index) {
     return fmt::format(
         "the file ends in {} element {} of the {} its header promises (the file "
@@ -281,9 +306,30 @@ std::string ply_truncated(const PlyLayout::Element& e, std::int64_t index) {
         e.name, index, e.count);
 }
 
-// One element with lists, its list counts read and checked, the rest skipped.
+// A face's `n` vertex numbers, read as their type says; false if the file ends first.
+bool walk_binary_vertex_numbers(ByteWalk& bytes, const PlyProperty& p, std::int64_t n,
+                                std::int64_t face, const PlyLayout& layout,
+                                const std::string& name) {
+    const bool big_endian = layout.format == PlyLayout::Format::BigEndian;
+    for (std::int64_t k = 0; k < n; ++k) {
+        const unsigned char* at = bytes.take(p.bytes);
+        if (at == nullptr) {
+            return false;
+        }
+        const std::int64_t v = binary_integer(at, p.bytes, p.type, big_endian);
+        if (v < 0 || v >= layout.vertices) {
+            throw InputError({name, 0, 0},
+                             ply_vertex_fault(face, std::to_string(v), layout.vertices));
+        }
+    }
+    return true;
+}
+
+// One element with lists, its list counts (and a face's vertex numbers) read and checked, the rest
+// skipped.
 void walk_binary_element(ByteWalk& bytes, const PlyLayout::Element& e, std::int64_t i,
-                         bool big_endian, const std::string& name) {
+                         const PlyLayout& layout, const std::string& name) {
+    const bool big_endian = layout.format == PlyLayout::Format::BigEndian;
     for (const PlyProperty& p : e.properties) {
         std::uintmax_t skip = p.bytes;
         if (p.list) {
@@ -291,11 +337,18 @@ void walk_binary_element(ByteWalk& bytes, const PlyLayout::Element& e, std::int6
             if (at == nullptr) {
                 throw InputError({name, 0, 0}, ply_truncated(e, i));
             }
-            const std::int64_t n = binary_count(at, p, big_endian);
+            const std::int64_t n = binary_integer(at, p.count_bytes, p.count_type, big_endian);
             if (n < 0 || n > kMaxEdgesPerPolygon) {
                 throw InputError({name, 0, 0}, ply_list_fault(e, i, n));
             }
             skip = static_cast<std::uintmax_t>(n) * p.bytes;
+            // (A float type's numbers Assimp rounds: left to it.)
+            if (p.vertex_numbers && layout.vertices >= 0 && is_integer_type(p.type)) {
+                if (!walk_binary_vertex_numbers(bytes, p, n, i, layout, name)) {
+                    throw InputError({name, 0, 0}, ply_truncated(e, i));
+                }
+                skip = 0;
+            }
         }
         if (!bytes.skip(skip)) {
             throw InputError({name, 0, 0}, ply_truncated(e, i));
@@ -304,7 +357,6 @@ void walk_binary_element(ByteWalk& bytes, const PlyLayout::Element& e, std::int6
 }
 
 void walk_binary_ply(std::istream& in, const PlyLayout& layout, const std::string& name) {
-    const bool big_endian = layout.format == PlyLayout::Format::BigEndian;
     ByteWalk bytes(in);
     for (const PlyLayout::Element& e : layout.elements) {
         // Elements without lists (the vertices, mostly) have one size: skipped whole.
@@ -318,15 +370,29 @@ void walk_binary_ply(std::istream& in, const PlyLayout& layout, const std::strin
             throw InputError({name, 0, 0}, ply_truncated(e, e.count - 1));
         }
         for (std::int64_t i = 0; lists && i < e.count; ++i) {
-            walk_binary_element(bytes, e, i, big_endian, name);
+            walk_binary_element(bytes, e, i, layout, name);
+        }
+    }
+}
+
+// A face's vertex numbers on its line (the words from `first`, as many as there are up to `n`).
+void check_ascii_vertex_numbers(const std::vector<std::string_view>& w, std::size_t first,
+                                std::int64_t n, std::int64_t face, std::int64_t vertices,
+                                const SourceLocation& at) {
+    const std::size_t end = std::min(w.size(), first + static_cast<std::size_t>(n));
+    for (std::size_t k = first; k < end; ++k) {
+        const std::optional<std::int64_t> v = parse_integer(w[k]);
+        if (!v || *v < 0 || *v >= vertices) {
+            throw InputError(at, ply_vertex_fault(face, v ? w[k] : quote_token(w[k]), vertices));
         }
     }
 }
 
 // The words element `i` of `e` takes on its line: each scalar one, each list its count and as many
-// items; an error at the line for a count out of range.
+// items; an error at the line for a count out of range, or a face's vertex number the file does
+// not have.
 std::size_t ascii_element_words(const std::vector<std::string_view>& w, const PlyLayout::Element& e,
-                                std::int64_t i, const SourceLocation& at) {
+                                std::int64_t i, std::int64_t vertices, const SourceLocation& at) {
     std::size_t next = 0;
     for (const PlyProperty& p : e.properties) {
         std::int64_t items = 1;
@@ -339,6 +405,9 @@ std::size_t ascii_element_words(const std::vector<std::string_view>& w, const Pl
                                      quote_token(w[next - 1]));
             }
             items = *n;
+            if (p.vertex_numbers && vertices >= 0) {
+                check_ascii_vertex_numbers(w, next, items, i, vertices, at);
+            }
         }
         next += static_cast<std::size_t>(items);
     }
@@ -361,7 +430,8 @@ void walk_ascii_ply(std::istream& in, const PlyLayout& layout, const std::string
                 ++line;
                 split_words(text, w);
             }
-            const std::size_t needed = ascii_element_words(w, e, i, {name, line, 0});
+            const std::size_t needed =
+                ascii_element_words(w, e, i, layout.vertices, {name, line, 0});
             if (needed != w.size()) {
                 throw expected_found({name, line, 0},
                                      fmt::format("{} numbers in {} element {} (as the header "
