@@ -1,6 +1,8 @@
 // Small model files for the filetype-3 tests, written as their tools would write them.
 #pragma once
 
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 namespace rt::test {
@@ -66,5 +68,56 @@ f 4//4 8//4 7//4 3//4
 f 1//5 5//5 8//5 4//5
 f 2//6 3//6 7//6 6//6
 )";
+
+/// A tetrahedron (corners at the origin and the three unit points) as ASCII STL.
+inline const std::string tetra_stl = R"(solid tetra
+facet normal 0 0 -1
+outer loop
+vertex 0 0 0
+vertex 0 1 0
+vertex 1 0 0
+endloop
+endfacet
+facet normal 0 -1 0
+outer loop
+vertex 0 0 0
+vertex 1 0 0
+vertex 0 0 1
+endloop
+endfacet
+facet normal -1 0 0
+outer loop
+vertex 0 0 0
+vertex 0 0 1
+vertex 0 1 0
+endloop
+endfacet
+facet normal 1 1 1
+outer loop
+vertex 1 0 0
+vertex 0 1 0
+vertex 0 0 1
+endloop
+endfacet
+endsolid tetra
+)";
+
+/// The same tetrahedron as binary STL: `header` padded to 80 bytes, the count, 4 facets of 50
+/// bytes (a little-endian host).
+inline std::string binary_tetra_stl(const std::string& header) {
+    const float facets[4][12] = {{0, 0, -1, 0, 0, 0, 0, 1, 0, 1, 0, 0},
+                                 {0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1},
+                                 {-1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0},
+                                 {1, 1, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    std::string out = header;
+    out.resize(80, ' ');
+    const std::uint32_t count = 4;
+    out.append(reinterpret_cast<const char*>(&count), 4);
+    for (const auto& facet : facets) {
+        out.append(reinterpret_cast<const char*>(facet), sizeof facet);
+        out.append(2, '\0');  // the attribute byte count
+    }
+    return out;
+}
 
 }  // namespace rt::test

@@ -1,13 +1,13 @@
 #include "rt/scene/read/model_header_check.h"
 
 #include <algorithm>
-#include <cctype>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
 #include "rt/core/error.h"
 #include "rt/core/text.h"
+#include "rt/scene/read/line_words.h"
 #include "rt/scene/read/reader_limits.h"
 
 #include <fmt/format.h>
@@ -16,25 +16,7 @@ namespace rt {
 
 namespace {
 
-// The words of a line, as views into it (the body walk splits millions of lines).
-void split_words(std::string_view text, std::vector<std::string_view>& words) {
-    words.clear();
-    std::size_t at = 0;
-    while (at < text.size()) {
-        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) {
-            ++at;
-        }
-        const std::size_t start = at;
-        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) == 0) {
-            ++at;
-        }
-        if (at > start) {
-            words.push_back(text.substr(start, at - start));
-        }
-    }
-}
-
-// The same as strings, for the header's few lines.
+// The words of one of the header's few lines, as strings.
 std::vector<std::string> words_of(std::string_view line) {
     std::vector<std::string_view> views;
     split_words(line, views);

@@ -14,6 +14,7 @@
 #include "rt/scene/read/node_transform.h"
 #include "rt/scene/read/reader_limits.h"
 #include "rt/scene/read/source_text.h"
+#include "rt/scene/read/stl_check.h"
 
 #include <fmt/format.h>
 
@@ -92,9 +93,13 @@ std::string lower_extension(const std::filesystem::path& path) {
     return ext;
 }
 
-// PLY and OFF headers are checked before Assimp trusts their counts.
+// PLY and OFF headers are checked before Assimp trusts their counts; STL files before Assimp
+// fails to tell binary from ASCII, or reads a file cut short.
 void check_header(const std::filesystem::path& path, const std::string& ext,
                   const std::string& name) {
+    if (ext == ".stl") {
+        check_stl(path, name);
+    }
     if (ext != ".ply" && ext != ".off") {
         return;
     }
