@@ -1,6 +1,7 @@
 // Optical surface filetype 3: a model file through Assimp. The input's first word picks the
 // format, as a file's extension would: "ply" a PLY file, "OFF" an OFF file, "solid" an ASCII STL
-// file, anything else an OBJ file. Model formats have no line numbers in our messages.
+// file, "{" a glTF file, "glTF" a binary glTF file, anything else an OBJ file. Not every model
+// message names a line (binary files have none).
 #include "rt/core/diagnostics.h"
 #include "rt/scene/read/model_reader.h"
 
@@ -17,6 +18,12 @@ std::string_view extension_for(std::string_view text) {
     }
     if (text.starts_with("solid")) {
         return ".stl";
+    }
+    if (text.starts_with("{")) {
+        return ".gltf";
+    }
+    if (text.starts_with("glTF")) {
+        return ".glb";
     }
     return ".obj";
 }

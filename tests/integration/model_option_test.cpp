@@ -119,6 +119,19 @@ TEST_F(ModelProgram, AMissingOrBrokenModelIsOneLineAndStatus1) {
     const ProgramResult junk = rt({"--model", "junk.obj"});
     EXPECT_EQ(junk.exit_code, 1);
     EXPECT_EQ(junk.err, "junk.obj: the model holds no polygons\n");
+    // A glTF cut short, and a binary STL cut short: what Assimp did not say, at the line if any.
+    dir_.write("cut.gltf", "{\"asset\": {\"version\": \"2.0\"},\n\"scene\": 0\n");
+    const ProgramResult gltf = rt({"--model", "cut.gltf"});
+    EXPECT_EQ(gltf.exit_code, 1);
+    EXPECT_EQ(gltf.err, "cut.gltf:2: expected ',' or '}' in an object, found end of file\n");
+    std::string stl(80, ' ');
+    stl += std::string("\x0c\0\0\0", 4) + std::string(516, '\0');
+    dir_.write("cut.stl", stl);
+    const ProgramResult binary = rt({"--model", "cut.stl"});
+    EXPECT_EQ(binary.exit_code, 1);
+    EXPECT_EQ(binary.err,
+              "cut.stl: a binary STL of 12 triangles needs 684 bytes (80-byte header, 4-byte "
+              "count, 50 bytes a triangle), found 600\n");
     // Polygons that are all degenerate leave nothing to frame or render either.
     dir_.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
     const ProgramResult flat = rt({"--model", "flat.obj"});

@@ -120,4 +120,37 @@ inline std::string binary_tetra_stl(const std::string& header) {
     return out;
 }
 
+/// One triangle as glTF, its positions in the JSON (base64), one member a line.
+inline const std::string triangle_gltf = R"({
+"asset": {"version": "2.0"},
+"scene": 0,
+"scenes": [{"nodes": [0]}],
+"nodes": [{"mesh": 0}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+"buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+"bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}]
+}
+)";
+
+/// A little-endian 32-bit number as 4 bytes (a little-endian host).
+inline std::string le32(std::uint32_t n) {
+    return {reinterpret_cast<const char*>(&n), 4};
+}
+
+/// The same triangle as binary glTF: the JSON chunk (padded with blanks), then the BIN chunk of
+/// its positions.
+inline std::string triangle_glb() {
+    std::string json = triangle_gltf;
+    json.replace(json.find(", \"uri\""),
+                 json.find("}]", json.find("\"uri\"")) - json.find(", \"uri\""), "");
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
+    const std::string chunks = le32(static_cast<std::uint32_t>(json.size())) + "JSON" + json +
+                               le32(static_cast<std::uint32_t>(bin.size())) +
+                               std::string("BIN\0", 4) + bin;
+    return "glTF" + le32(2) + le32(static_cast<std::uint32_t>(12 + chunks.size())) + chunks;
+}
+
 }  // namespace rt::test

@@ -9,6 +9,7 @@
 
 #include "rt/scene/read/assimp_functions.h"
 #include "rt/scene/read/field_reader.h"
+#include "rt/scene/read/gltf_check.h"
 #include "rt/scene/read/model_header_check.h"
 #include "rt/scene/read/model_mesh_check.h"
 #include "rt/scene/read/node_transform.h"
@@ -94,11 +95,16 @@ std::string lower_extension(const std::filesystem::path& path) {
 }
 
 // PLY and OFF headers are checked before Assimp trusts their counts; STL files before Assimp
-// fails to tell binary from ASCII, or reads a file cut short.
+// fails to tell binary from ASCII, or reads a file cut short; glTF files before Assimp fails to
+// parse their JSON ("No suitable reader found").
 void check_header(const std::filesystem::path& path, const std::string& ext,
                   const std::string& name) {
     if (ext == ".stl") {
         check_stl(path, name);
+    } else if (ext == ".gltf") {
+        check_gltf(path, name);
+    } else if (ext == ".glb") {
+        check_glb(path, name);
     }
     if (ext != ".ply" && ext != ".off") {
         return;
