@@ -58,6 +58,21 @@ TEST_F(ModelReader, GltfJsonCutShortOrNotJsonIsRefusedAtItsLine) {
               "ending in .glb)");
 }
 
+// RapidJSON refuses what a double cannot hold, and a lone UTF-16 high surrogate; Assimp said "No
+// suitable reader found".
+TEST_F(ModelReader, GltfNumbersBeyondADoubleAndHalfSurrogatesAreRefused) {
+    EXPECT_EQ(error("m.gltf", "{\"asset\": {\"version\": \"2.0\"},\n\"extras\": [1, -1e400]}"),
+              "m.gltf:2: expected a number within a double's range, found '-1e400'");
+    EXPECT_EQ(
+        error("m.gltf", "{\"asset\": {\"version\": \"2.0\", \"generator\": \"\\ud83d\"}}"),
+        "m.gltf:1: expected '\\u' and a low surrogate (DC00 to DFFF) after a high one (D800 to "
+        "DBFF), found '\"'");
+    std::string largest = triangle_gltf;
+    largest.insert(largest.find("\"scene\""),
+                   "\"extras\": [1.7976931348623157e308, 1e-400, \"\\ud83d\\ude00\"],\n");
+    EXPECT_EQ(read("m.gltf", largest).polygons.size(), 1u);
+}
+
 // Assimp's recursive parser crashed on arrays nested 300,000 deep (a 600 KB file).
 TEST_F(ModelReader, GltfJsonNestedDeeperThan1000IsRefused) {
     std::string deep = triangle_gltf;
