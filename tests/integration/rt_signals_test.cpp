@@ -9,12 +9,19 @@
 
 #include "rt/image/gro_format.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "support/run_program.h"
 #include "support/temp_dir.h"
 #include "support/x_display.h"
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace rt::test {
 namespace {
@@ -88,6 +95,83 @@ TEST(RtSignals, TheFirstSignalEndsARunStillReadingItsScene) {
     rt.signal(SIGTERM);
     EXPECT_EQ(rt.wait_for_exit(seconds(10)).value_or(-1), 143);
     EXPECT_NE(rt.errors().find("rt: interrupted"), std::string::npos) << rt.errors();
+}
+
+// A display that takes the connection and never answers (a stuck X server, a dead tunnel) blocks
+// the window's opening. Nothing is rendered yet: the first signal ends rt there, at once.
+TEST(RtSignals, TheFirstSignalEndsARunWaitingForItsDisplay) {
+    const TempDir dir;
+    std::filesystem::create_directories("/tmp/.X11-unix");
+    int number = 700 + static_cast<int>(::getpid() % 200);
+    while (std::filesystem::exists(fmt::format("/tmp/.X11-unix/X{}", number))) {
+        ++number;
+    }
+    const std::string socket_path = fmt::format("/tmp/.X11-unix/X{}", number);
+    const int server = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    ASSERT_GE(server, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    socket_path.copy(address.sun_path, sizeof address.sun_path - 1);
+    ASSERT_EQ(::bind(server, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::listen(server, 4), 0);  // connections wait in the queue, never answered
+    {
+        SpawnedProgram rt("rt",
+                          {(source_dir() / "scenes" / "twocubes").string(), "-n", "--quiet",
+                           "--threads", "1", "--output", "out.gro"},
+                          dir.path(), {fmt::format(":{}", number), false});
+        std::this_thread::sleep_for(stretched(milliseconds(1000)));  // well into the opening
+        ASSERT_FALSE(rt.wait_for_exit(milliseconds(0))) << rt.errors();
+        rt.signal(SIGTERM);
+        EXPECT_EQ(rt.wait_for_exit(seconds(10)).value_or(-1), 143) << rt.errors();
+        EXPECT_NE(rt.errors().find("rt: interrupted"), std::string::npos) << rt.errors();
+    }
+    ::close(server);
+    std::filesystem::remove(socket_path);
+}
+
+// Whoever reads rt's messages may stop before rt does (`rt ... 2>&1 | head -1`). The messages
+// after that are lost; the render is not.
+TEST(RtSignals, AClosedPipeOnStandardErrorDoesNotEndTheRender) {
+    const TempDir dir;
+    int pipe_ends[2];
+    ASSERT_EQ(::pipe(pipe_ends), 0);
+    ::close(pipe_ends[0]);  // nobody reads: the first message rt writes meets a closed pipe
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_adddup2(&files, pipe_ends[1], STDERR_FILENO);
+    posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGPIPE);  // as a shell starts it, whatever this test process does
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+    const std::string program = (bin_dir() / "rt").string();
+    // twocubes4 warns about its texture lines while it is read, before the render.
+    std::vector<std::string> args = {program,
+                                     (source_dir() / "scenes" / "twocubes4").string(),
+                                     "-n",
+                                     "--no-window",
+                                     "-p",
+                                     "--output",
+                                     (dir.path() / "out.png").string()};
+    std::vector<char*> argv;
+    for (std::string& a : args) {
+        argv.push_back(a.data());
+    }
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    ASSERT_EQ(::posix_spawn(&pid, program.c_str(), &files, &attributes, argv.data(), environ), 0);
+    ::close(pipe_ends[1]);
+    posix_spawn_file_actions_destroy(&files);
+    posix_spawnattr_destroy(&attributes);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out.png"));
 }
 
 }  // namespace

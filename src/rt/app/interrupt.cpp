@@ -34,6 +34,9 @@ extern "C" void on_interrupt(int signal) {
 void install_interrupt_handler() {
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
+    // A reader of the messages that goes away (`rt ... 2>&1 | head -1`) must not end the render:
+    // the messages after it are lost (a write then fails with EPIPE), the picture is not.
+    std::signal(SIGPIPE, SIG_IGN);
 }
 
 bool interrupt_requested() {

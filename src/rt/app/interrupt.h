@@ -6,6 +6,7 @@
 
 namespace rt {
 
+/// Also ignores SIGPIPE: a closed pipe on standard error must not lose a render.
 void install_interrupt_handler();
 bool interrupt_requested();
 /// The flag the first signal sets, for a render to poll cheaply wherever it is.

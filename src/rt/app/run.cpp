@@ -266,13 +266,18 @@ std::unique_ptr<PictureWindow> open_window(const Scene& scene, const Options& op
     if (!console.open_window || options.debug_octree_interactive || options.random_rays) {
         return nullptr;
     }
-    std::unique_ptr<PictureWindow> shown =
-        console.open_window({"rt: " + (options.model.empty() ? options.scene : options.model),
-                             scene.view.width,
-                             scene.view.height,
-                             options.display,
-                             false,
-                             {}});
+    std::unique_ptr<PictureWindow> shown;
+    {
+        // A display that takes the connection and never answers blocks the opening for good.
+        const ExitOnInterrupt nothing_to_keep;
+        shown =
+            console.open_window({"rt: " + (options.model.empty() ? options.scene : options.model),
+                                 scene.view.width,
+                                 scene.view.height,
+                                 options.display,
+                                 false,
+                                 {}});
+    }
     if (shown && !options.wireframe_only) {  // -w shows the one it writes
         shown->board().show_film(wireframe_picture(scene, options, window, console));
     }
