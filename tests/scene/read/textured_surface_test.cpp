@@ -158,6 +158,16 @@ TEST_F(TexturedScene, ADegenerateCellIsSkippedWithAWarning) {
               "skipped");
 }
 
+// A point far out of range can round its cell's area away: it is refused, not skipped with the
+// cell as degenerate.
+TEST_F(TexturedScene, AFarPointIsAnErrorEvenWhenItsCellLooksDegenerate) {
+    std::string grid = kGrid;
+    grid.replace(grid.find("0 0 0\n"), 6, "0 0 1e16\n");
+    EXPECT_EQ(error_with("grid", grid),
+              "grid:3: expected a grid point within the coordinate range -1e+15 to 1e+15, found "
+              "(0, 0, 1e+16)");
+}
+
 TEST_F(TexturedScene, ACellOutOfItsPlaneIsAnError) {
     std::string grid = kGrid;
     // Point (1, 2) lifted: cell (0, 1), which starts at point (0, 1) on line 4, twists, its

@@ -9,6 +9,7 @@
 #include "rt/scene/polygon_geometry.h"
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/grid_file_reader.h"
+#include "rt/scene/read/reader_limits.h"
 #include "rt/scene/read/surface_transform.h"
 #include "rt/scene/read/texture_map_reader.h"
 
@@ -55,6 +56,20 @@ void check_flat(const SourceText& source, const PolygonGrid& grid, std::int64_t 
     }
 }
 
+// A grid point beyond the coordinate range, refused at its line (polygons placed from the grid
+// are checked again where they are placed; this catches a point whose cell is skipped first).
+void check_point_in_range(const SourceText& source, const PolygonGrid& grid, std::uint32_t k) {
+    const Vec3& p = grid.points[k];
+    if (std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+        std::fabs(p.z) <= kMaxCoordinate) {
+        return;
+    }
+    throw expected_found(source.at(grid.lines[k]),
+                         fmt::format("a grid point within the coordinate range {:g} to {:g}",
+                                     -kMaxCoordinate, kMaxCoordinate),
+                         show_point(p.x, p.y, p.z));
+}
+
 // The grid as a mesh of quads, each tagged with its texture cell (first_cell + its number).
 SurfaceMesh grid_mesh(const SourceText& source, const PolygonGrid& grid, std::int32_t first_cell,
                       Diagnostics& diagnostics) {
@@ -69,6 +84,11 @@ SurfaceMesh grid_mesh(const SourceText& source, const PolygonGrid& grid, std::in
             const Vec3 newell = newell_normal(loop, mesh.vertices);
             if (const std::string_view why = degeneracy(loop, mesh.vertices, newell);
                 !why.empty()) {
+                // As for polygons (scene_builder.cpp): a point out of range is the real mistake,
+                // as one far corner alone can make the area vanish in the rounding.
+                for (const std::uint32_t k : loop) {
+                    check_point_in_range(source, grid, k);
+                }
                 diagnostics.warn(fmt::format("{}: {} is degenerate ({}); skipped",
                                              source.at(line).to_string(), cell_name(row, column),
                                              why));
