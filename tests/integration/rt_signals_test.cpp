@@ -97,6 +97,36 @@ TEST(RtSignals, TheFirstSignalEndsARunStillReadingItsScene) {
     EXPECT_NE(rt.errors().find("rt: interrupted"), std::string::npos) << rt.errors();
 }
 
+// Stopped before its first line was finished, a render writes nothing, and says so once: not
+// also that the finished lines are kept.
+TEST(RtSignals, AnInterruptBeforeTheFirstLineSaysNothingWasKept) {
+    const TempDir dir;
+    // twocubes4 at a sample resolution of 64, every sample traced: seconds a line.
+    std::string scene = read_text(source_dir() / "scenes" / "twocubes4.scn");
+    const std::size_t at = scene.find("sample resolution x,y\n$ 4\n");
+    ASSERT_NE(at, std::string::npos);
+    scene.replace(at, 26, "sample resolution x,y\n$ 64\n");
+    dir.write("slow.scn", scene);
+    for (const char* name : {"Attributes", "cube", "checker8", "square"}) {
+        std::filesystem::copy_file(source_dir() / "scenes" / name, dir.path() / name);
+    }
+    SpawnedProgram rt("rt",
+                      {"slow", "-n", "--output", "out.gro", "--threads", "1", "-Dx", "-dc",
+                       "--no-window", "--quiet"},
+                      dir.path(), {std::nullopt, false});
+    for (int k = 0; k < 6000 && lines_begun(rt.errors()) < 1; ++k) {
+        std::this_thread::sleep_for(milliseconds(10));
+    }
+    ASSERT_EQ(lines_begun(rt.errors()), 1) << rt.errors().substr(0, 2000);
+    rt.signal(SIGINT);
+    EXPECT_EQ(rt.wait_for_exit(seconds(60)).value_or(-1), 130);
+    const std::string errors = rt.errors();
+    EXPECT_NE(errors.find("no file was written"), std::string::npos) << errors.substr(0, 2000);
+    EXPECT_NE(errors.find("rt: interrupted\n"), std::string::npos);
+    EXPECT_EQ(errors.find("the finished lines are kept"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.gro"));
+}
+
 // A display that takes the connection and never answers (a stuck X server, a dead tunnel) blocks
 // the window's opening. Nothing is rendered yet: the first signal ends rt there, at once.
 TEST(RtSignals, TheFirstSignalEndsARunWaitingForItsDisplay) {

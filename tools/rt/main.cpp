@@ -138,8 +138,10 @@ int run(int argc, char** argv) {
 #else
     const rt::RunOutcome outcome = rt::run(options, console);
 #endif
-    if (outcome == rt::RunOutcome::Interrupted) {
-        console.trace("rt: interrupted; the finished lines are kept");  // printed as is
+    if (outcome != rt::RunOutcome::Finished) {
+        console.trace(outcome == rt::RunOutcome::Interrupted  // printed as is
+                          ? "rt: interrupted; the finished lines are kept"
+                          : "rt: interrupted");
         // The shell's convention: 128 + the signal (130 for Ctrl-C, 143 for SIGTERM); a window
         // closed by the user counts as Ctrl-C.
         const int signal = rt::interrupt_signal();

@@ -164,13 +164,14 @@ std::filesystem::path partial_path(const std::filesystem::path& path) {
 // are reported together, one line each, as one IoError. An unfinished picture (Ctrl-C) never
 // replaces an existing file: it goes beside it, and a picture without one finished line is not
 // written at all. The file being resumed is the exception: it is the partial picture itself.
-void write_outputs(const Film& film, const Options& options, const RunConsole& console) {
+// Returns false when nothing was written for that reason.
+bool write_outputs(const Film& film, const Options& options, const RunConsole& console) {
     const bool unfinished = !film.complete();
     if (unfinished && options.resume.empty() && film.first_finished_row() > film.window().bottom) {
         if (console.warning) {
             console.warning("stopped before the first line was finished: no file was written");
         }
-        return;
+        return false;
     }
     std::string failures;
     for (std::filesystem::path path : output_paths(options)) {
@@ -193,6 +194,7 @@ void write_outputs(const Film& film, const Options& options, const RunConsole& c
     if (!failures.empty()) {
         throw IoError(failures);
     }
+    return true;
 }
 
 // Where maxdepth and surfaces that both reflect and transmit (or distribute their rays) let the
@@ -543,11 +545,14 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
         print_colors(film, console);
     }
     phase = Clock::now();
-    write_outputs(film, options, console);
+    const bool kept = write_outputs(film, options, console);
     times.write_seconds = seconds_since(phase);
     print_profile(statistics.by_kind);
     close_window(std::move(shown), console);
-    return statistics.interrupted ? RunOutcome::Interrupted : RunOutcome::Finished;
+    if (!statistics.interrupted) {
+        return RunOutcome::Finished;
+    }
+    return kept ? RunOutcome::Interrupted : RunOutcome::InterruptedWithNothingKept;
 }
 
 }  // namespace

@@ -44,7 +44,9 @@ struct RunConsole {
     std::function<void(const PictureWindow&)> keep_window_open;
 };
 
-enum class RunOutcome { Finished, Interrupted };
+/// How a run ended: Interrupted keeps the finished lines; a render stopped before its first line
+/// was finished wrote nothing (InterruptedWithNothingKept).
+enum class RunOutcome { Finished, Interrupted, InterruptedWithNothingKept };
 
 /// The scene file a SCENE argument names: SCENE itself if it ends in ".scn", else SCENE.scn if
 /// that exists, else SCENE if it is a file, else SCENE.scn (so that "cannot open" names it).
