@@ -165,6 +165,20 @@ TEST_F(ShowProgram, APngOrPpmToShowHasEveryRowFinished) {
     }
 }
 
+// What show draws from a .png or .ppm it also describes and converts: --info and --output read
+// it as the window does, and a .png converted to a .png is the same picture.
+TEST_F(ShowProgram, APngOrPpmConvertsAndDescribesAsItShows) {
+    ASSERT_EQ(run("pic --output whole.png --output whole.ppm").code, 0);
+    for (const char* name : {"whole.png", "whole.ppm"}) {
+        const Outcome info = run(std::string(name) + " --info");
+        EXPECT_EQ(info.code, 0) << info.err;
+        EXPECT_NE(info.out.find("rows      4 of 4 finished"), std::string::npos) << info.out;
+        const Outcome converted = run(std::string(name) + " --output again.png");
+        ASSERT_EQ(converted.code, 0) << converted.err;
+        EXPECT_EQ(read_png(dir_.path() / "again.png"), read_png(dir_.path() / "whole.png"));
+    }
+}
+
 TEST_F(ShowProgram, NoArgumentsOrHelpPrintUsage) {
     for (const char* args : {"", "--help", "-h", "pic --info --help"}) {
         const Outcome o = run(args);

@@ -78,7 +78,7 @@ int run(const ShowArgs& s) {
         std::cout << rt::header_summary(header);
         return kOk;
     }
-    rt::Film film = in_window ? rt::show::picture_for_window(path) : rt::read_linear_image(path);
+    rt::Film film = rt::show::read_shown_picture(path);
     film.mapping.multiplier = s.multiplier.value_or(film.mapping.multiplier);
     film.mapping.clip = film.mapping.clip && !s.no_clip;
     if (in_window) {
@@ -100,10 +100,10 @@ int main(int argc, char** argv) {
         "show",
         [&] {
             CLI::App app(
-                "Looks at a .gro picture written by rt (manual 1.2), or an .exr: shows it in a\n"
-                "window (also a .png or .ppm; keys + and - change the exposure, 0 restores it,\n"
-                "Esc or Enter closes it), prints what it holds, or converts it to PNG, PPM,\n"
-                ".gro or .exr. Without a display, \"show NAME\" prints what --info prints.\n"
+                "Looks at a .gro picture written by rt (manual 1.2), or an .exr, .png or .ppm:\n"
+                "shows it in a window (keys + and - change the exposure, 0 restores it, Esc or\n"
+                "Enter closes it), prints what it holds, or converts it to PNG, PPM, .gro or\n"
+                ".exr. Without a display, \"show NAME\" prints what --info prints.\n"
                 "Exit codes: 0 ok, 1 bad picture, 2 usage, 3 I/O, 4 internal.",
                 "show");
             rt::cli::configure(app);

@@ -33,7 +33,7 @@ Film film_of(const Image8& image) {
 
 }  // namespace
 
-Film picture_for_window(const std::filesystem::path& path) {
+Film read_shown_picture(const std::filesystem::path& path) {
     if (path.extension() == ".png") {
         return film_of(read_png(path));
     }

@@ -8,9 +8,9 @@
 
 namespace rt::show {
 
-/// The picture a window shows: a .gro or .exr as read, a .png or .ppm as intensities v / 255 (so
-/// that at -m1 it looks as the file does).
-Film picture_for_window(const std::filesystem::path& path);
+/// The picture show reads, for its window, --info or --output: a .gro or .exr as read, a .png or
+/// .ppm as intensities v / 255 (so that at -m1 it looks, and converts, as the file does).
+Film read_shown_picture(const std::filesystem::path& path);
 
 /// Shows the film until the window is closed (Esc too) or, on a terminal, Enter is pressed. +
 /// and - change the exposure, 0 restores it; the title gives the value under the cursor. Without
