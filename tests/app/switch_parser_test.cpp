@@ -113,6 +113,11 @@ TEST(SwitchParser, LongOptionValues) {
               "--accel: expected NAME after --accel, found '-p'");
     EXPECT_EQ(usage_error({"s", "--seed", "x"}),
               "--seed: expected a whole number after --seed, found 'x'");
+    // A whole number beyond 64 bits is one: its range is what is wrong.
+    EXPECT_EQ(usage_error({"s", "--seed", "99999999999999999999"}),
+              "--seed: N must be at most 9223372036854775807, found '99999999999999999999'");
+    EXPECT_EQ(usage_error({"s", "-ol", "99999999999999999999"}),
+              "-ol: the power of 2 must be from 1 to 30, found '99999999999999999999'");
     EXPECT_EQ(usage_error({"s", "--threads", "-1"}),
               "--threads: N must be from 0 to 1024, found '-1'");
     EXPECT_EQ(usage_error({"s", "--quiet=1"}), "--quiet takes no value");

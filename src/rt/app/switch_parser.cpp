@@ -1,7 +1,9 @@
 #include "rt/app/switch_parser.h"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
+#include <string>
 
 #include "rt/core/error.h"
 #include "rt/core/text.h"
@@ -101,8 +103,30 @@ double read_number(const SwitchSpec& spec, std::string_view text) {
     return *value;
 }
 
+// Digits, after an optional sign: a whole number, however large.
+bool written_as_whole_number(std::string_view text) {
+    if (!text.empty() && (text.front() == '-' || text.front() == '+')) {
+        text.remove_prefix(1);
+    }
+    return !text.empty() &&
+           std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 std::int64_t read_integer(const SwitchSpec& spec, std::string_view text) {
     const std::optional<std::int64_t> value = parse_integer(text);
+    if (!value && written_as_whole_number(text)) {
+        // A whole number beyond 64 bits: its range, not its form, is what is wrong.
+        const std::optional<double> approximately = parse_double(text);
+        if (approximately) {
+            check_range(spec, spec.first, *approximately, text);
+        }
+        const bool negative = text.front() == '-';
+        throw UsageError(cat({spec.spelling, ": ", spec.first.name, " must be ",
+                              negative ? "at least " : "at most ",
+                              std::to_string(negative ? std::numeric_limits<std::int64_t>::min()
+                                                      : std::numeric_limits<std::int64_t>::max()),
+                              ", found ", quote_token(text)}));
+    }
     if (!value) {
         expected(spec, "a whole number", text);
     }
