@@ -38,10 +38,11 @@ TEST(MemoryEstimate, A16384SquareViewCountsItsFilmWindowAndPng) {
     options.outputs = {"picture.png"};
     const PixelRect window{0, 0, 16383, 16383};
     const std::vector<MemoryPart> parts = estimate_render_memory(b.scene(), options, window, true);
-    // 2^28 pixels: 3 floats each in the film, 3 floats and a 4-byte texel in the window, and
-    // the PNG's 8-bit picture and its encoding.
+    // 2^28 pixels: 3 floats each in the film, twice 3 floats and twice a 4-byte texel in the
+    // window (its picture, the wireframe's, the texture and the renderer's copy), and the PNG's
+    // 8-bit picture and its encoding.
     EXPECT_EQ(part_bytes(parts, "the film"), 3 * kGiB);
-    EXPECT_EQ(part_bytes(parts, "the window"), 4 * kGiB);
+    EXPECT_EQ(part_bytes(parts, "the window"), 8 * kGiB);
     EXPECT_EQ(part_bytes(parts, "the PNG"), 3 * kGiB / 2);
     // Only the window asked for is filmed: -L 16000 leaves 384 rows.
     const std::vector<MemoryPart> rows =
@@ -63,8 +64,18 @@ TEST(MemoryEstimate, ARefusalNamesTheFiguresAndTheWaysOut) {
             << text;
         EXPECT_NE(text.find("-L"), std::string::npos) << text;
         EXPECT_NE(text.find("--max-memory GIB"), std::string::npos) << text;
+        EXPECT_EQ(text.find("--no-window"), std::string::npos) << text;  // no window to leave
     }
     EXPECT_NO_THROW(check_memory(parts, {4 * kGiB, "--max-memory"}));
+    // Where the window takes a part, rendering without it is one more way out.
+    try {
+        check_memory({{"the film", kGiB}, {"the window", 4 * kGiB}}, {2 * kGiB, "--max-memory"});
+        FAIL() << "5 GiB fitted in 2";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("render without the window (--no-window)"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(MemoryEstimate, LinuxSaysHowMuchIsAvailable) {

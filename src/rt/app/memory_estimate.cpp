@@ -117,9 +117,12 @@ std::vector<MemoryPart> estimate_render_memory(const Scene& scene, const Options
         parts.push_back(largest_writer(options, window));
     }
     if (window_opens) {
-        // The window keeps the whole view's linear picture and a 4-byte texture of it.
+        // The window keeps the whole view's linear picture, and the wireframe drawn into it
+        // is a whole view's film too; the 4-byte texture has a copy in the renderer. 32 bytes
+        // a pixel, as measured: rt's peak memory grows 31 bytes a pixel from a 2048 x 2048 to
+        // a 4096 x 4096 view, with the window open on Xvfb.
         parts.push_back({"the window", pixels(scene.view.width, scene.view.height) *
-                                           (kFloatRgb + sizeof(std::uint32_t))});
+                                           (2 * kFloatRgb + 2 * sizeof(std::uint32_t))});
     }
     if (options.accel.zbuffer_first_hits) {
         parts.push_back(
@@ -161,13 +164,16 @@ void check_memory(const std::vector<MemoryPart>& parts, const MemoryLimit& limit
     if (total <= limit.bytes) {
         return;
     }
+    const bool with_window = std::any_of(parts.begin(), parts.end(), [](const MemoryPart& p) {
+        return p.what == "the window" && p.bytes > 0;
+    });
     // With no part of a MiB or more (a limit set very low) there is nothing worth listing.
     throw UsageError(fmt::format(
         "the render needs about {}{}, more than the {} available ({}): render a smaller "
         "output matrix or view area (the .scn's view lines), draw only from a line up (-L), "
-        "or set the limit with --max-memory GIB",
+        "{}or set the limit with --max-memory GIB",
         format_bytes(total), listed.empty() ? "" : " (" + listed + ")", format_bytes(limit.bytes),
-        limit.source));
+        limit.source, with_window ? "render without the window (--no-window), " : ""));
 }
 
 std::string format_bytes(std::uint64_t bytes) {
