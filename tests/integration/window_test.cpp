@@ -281,6 +281,12 @@ TEST(Window, NeverWaitsWithoutADisplayOrATerminal) {
         SCOPED_TRACE("a display that cannot be reached");
         SpawnedProgram rt("rt", args, dir.path(), {":99999", true});
         EXPECT_EQ(rt.wait_for_exit(seconds(30)), 0) << rt.errors();
+        // Its warning names the display tried, so that a mistyped DISPLAY shows.
+        SpawnedProgram told("rt", {scene, "-n", "--output", "c.ppm"}, dir.path(),
+                            {":99999", false});
+        EXPECT_EQ(told.wait_for_exit(seconds(30)), 0) << told.errors();
+        EXPECT_NE(told.errors().find("no window on X display ':99999': "), std::string::npos)
+            << told.errors();
     }
 }
 

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <future>
 #include <numbers>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -44,6 +45,20 @@ const char* driver_named() {
         return set("DISPLAY") ? "wayland,x11" : "wayland";
     }
     return set("DISPLAY") ? "x11" : "";
+}
+
+// Why SDL could not open a window, naming the display it tried (a mistyped DISPLAY shows).
+std::string no_window_on_display(const char* why) {
+    const char* display = std::getenv("DISPLAY");  // NOLINT(concurrency-mt-unsafe): read only
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");  // NOLINT(concurrency-mt-unsafe)
+    std::string where;
+    if (wayland != nullptr && *wayland != '\0') {
+        where = fmt::format(" on Wayland display '{}'", wayland);
+    }
+    if (display != nullptr && *display != '\0') {
+        where += fmt::format("{} X display '{}'", where.empty() ? " on" : " or", display);
+    }
+    return fmt::format("no window{}: {}", where, why);
 }
 
 constexpr std::uint32_t kFrameMilliseconds = 16;  // about 60 redraws a second, at most
@@ -110,7 +125,7 @@ private:
         // KMS) that show nothing to anyone.
         sdl_.SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
         if (sdl_.SDL_Init(SDL_INIT_VIDEO) != 0) {
-            opened.set_value(fmt::format("no window: {}", sdl_.SDL_GetError()));
+            opened.set_value(no_window_on_display(sdl_.SDL_GetError()));
             sdl_.SDL_Quit();  // what SDL_Init set up before it failed, so that a retry starts clean
             return;
         }
