@@ -78,6 +78,31 @@ TEST(MemoryEstimate, ARefusalNamesTheFiguresAndTheWaysOut) {
     }
 }
 
+TEST(MemoryEstimate, TexturePicturesCountAndARefusalNamesThem) {
+    test::SceneBuilder b;
+    b.add_polygon({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}}, {0, 0, -1});
+    b.scene().view.width = 16;
+    b.scene().view.height = 16;
+    // The size is all the estimate reads of a picture: no pixels are needed.
+    b.scene().texture_images.push_back({16384, 16384, {}, "pmax.png"});
+    Options options;
+    const std::vector<MemoryPart> parts =
+        estimate_render_memory(b.scene(), options, {0, 0, 15, 15}, false);
+    EXPECT_EQ(part_bytes(parts, "the 16384 x 16384 texture picture 'pmax.png'"), 3 * kGiB / 4);
+    try {
+        check_memory(parts, {kGiB / 10, "--max-memory"});
+        FAIL() << "768 MiB fitted in 102";
+    } catch (const UsageError& e) {
+        const std::string text = e.what();
+        EXPECT_NE(text.find("(the 16384 x 16384 texture picture 'pmax.png' 768 MiB), more than "
+                            "the 102 MiB available (--max-memory): use smaller texture pictures, "
+                            "or set the limit with --max-memory GIB"),
+                  std::string::npos)
+            << text;
+        EXPECT_EQ(text.find("-L"), std::string::npos) << text;  // no way out for a picture
+    }
+}
+
 TEST(MemoryEstimate, LinuxSaysHowMuchIsAvailable) {
     if (!fs::exists("/proc/meminfo")) {
         GTEST_SKIP() << "no /proc/meminfo";

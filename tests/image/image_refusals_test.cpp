@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -190,6 +191,48 @@ TEST(PngReader, RefusesAPictureWiderThanTheLimitBeforeAllocatingIt) {
             std::string(e.what()),
             path.string() + ": expected a PNG of at most 16384 pixels a side, found 20000 x 1");
     }
+}
+
+TEST(PngReader, RefusesAHeaderItsCompressedDataCannotHoldBeforeAllocating) {
+    // 1 x 1 pixel data under a 16384 x 16384 header: 768 MiB claimed from a few bytes of IDAT.
+    std::vector<std::uint8_t> bytes = encode_png(Image8{1, 1, {1, 2, 3}});
+    put_big_endian(bytes, 16, 16384);
+    put_big_endian(bytes, 20, 16384);
+    put_big_endian(bytes, 29, crc32(&bytes[12], 17));
+    const test::TempDir dir;
+    const fs::path path = dir.write("claim.png", std::string(bytes.begin(), bytes.end()));
+    const std::string text(bytes.begin(), bytes.end());
+    const std::size_t at = text.find("IDAT") - 4;  // the one IDAT chunk's length
+    const std::string idat = std::to_string((bytes[at + 2] << 8) | bytes[at + 3]);
+    const std::string want = path.string() + ": expected a PNG picture whose compressed data (" +
+                             idat +
+                             " bytes) can hold its 16384 x 16384 pixels, found 805306368 bytes "
+                             "of pixel rows to unpack from them (deflate unpacks at most 1032 "
+                             "bytes from each)";
+    for (const auto& read : {std::function<void()>([&] { read_png_header(path); }),
+                             std::function<void()>([&] { read_png(path); })}) {
+        try {
+            read();
+            FAIL() << "a 16384 x 16384 claim was taken from " << idat << " bytes";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), want);
+        }
+    }
+}
+
+TEST(PngReader, AHeaderGivesTheSizeAndAPictureAsCompressedAsDeflateAllowsStillReads) {
+    const test::TempDir dir;
+    // A black picture compresses about as far as deflate goes, and is no bomb.
+    const Image8 black{1000, 1000, std::vector<std::uint8_t>(3000000, 0)};
+    const fs::path path = dir.path() / "black.png";
+    write_png(black, path);
+    const PngHeader header = read_png_header(path);
+    EXPECT_EQ(header.width, 1000);
+    EXPECT_EQ(header.height, 1000);
+    EXPECT_EQ(header.decoded_bytes(), 3000000u);
+    EXPECT_GT(header.compressed_bytes * kMaxDeflateRatio, 3000000u);
+    EXPECT_LT(header.compressed_bytes, fs::file_size(path));
+    EXPECT_EQ(read_png(path), black);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ namespace {
 
 // Two pixels side by side over two rows: black and white on top, red and blue below.
 TextureImage two_by_two() {
-    return {2, 2, {0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0, 255}};
+    return {2, 2, {0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0, 255}, ""};
 }
 
 void expect_near(const Rgb& got, const Rgb& want) {
@@ -38,7 +38,7 @@ TEST(TextureImage, BeyondTheBorderPixelsTheBorderStays) {
     expect_near(sample_bilinear(image, 0.0, 0.0), {0, 0, 0});
     expect_near(sample_bilinear(image, 2.0, 0.2), {1, 1, 1});
     expect_near(sample_bilinear(image, -5.0, 9.0), {1, 0, 0});
-    const TextureImage one{1, 1, {51, 102, 204}};
+    const TextureImage one{1, 1, {51, 102, 204}, ""};
     expect_near(sample_bilinear(one, 0.9, 0.1), {0.2, 0.4, 0.8});
 }
 

@@ -75,7 +75,7 @@ TEST(TexturedPoint, AColourMapTintsByWhereThePointIsOnTheGrid) {
     // (2, 5) under pixel (5, 2), its neighbour to the right under pixel (6, 2).
     Trapezoid cell;
     Scene& scene = cell.builder.scene();
-    TextureImage picture{8, 4, std::vector<std::uint8_t>(8 * 4 * 3, 0)};
+    TextureImage picture{8, 4, std::vector<std::uint8_t>(8 * 4 * 3, 0), ""};
     const auto set = [&](int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
         const std::size_t at = 3 * static_cast<std::size_t>(y * 8 + x);
         picture.rgb[at] = r;

@@ -181,8 +181,8 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
         // The estimate before the render (--max-memory) missed something, or memory went away.
         print_line(
-            "rt: out of memory: ask for less (a smaller view area or output matrix), or "
-            "close other programs");
+            "rt: out of memory: ask for less (a smaller view area or output matrix, smaller "
+            "texture pictures), or close other programs");
         return kInternal;
     } catch (const std::exception& e) {
         print_line(std::string("rt: internal error: ") + e.what());

@@ -109,6 +109,11 @@ void take_lower(std::optional<MemoryLimit>& limit, std::uint64_t bytes, const st
 
 }  // namespace
 
+MemoryPart texture_picture_part(const std::string& name, int width, int height) {
+    return {fmt::format("the {} x {} texture picture '{}'", width, height, name),
+            pixels(width, height) * kByteRgb, true};
+}
+
 std::vector<MemoryPart> estimate_render_memory(const Scene& scene, const Options& options,
                                                const PixelRect& window, bool window_opens) {
     std::vector<MemoryPart> parts;
@@ -129,6 +134,9 @@ std::vector<MemoryPart> estimate_render_memory(const Scene& scene, const Options
             {"the z-buffer", pixels(scene.view.width, scene.view.height) * kZBufferBytesPerPixel});
     }
     parts.push_back(intersection_method(scene, options));
+    for (const TextureImage& picture : scene.texture_images) {
+        parts.push_back(texture_picture_part(picture.name, picture.width, picture.height));
+    }
     return parts;
 }
 
@@ -155,25 +163,40 @@ std::optional<MemoryLimit> available_memory() {
 void check_memory(const std::vector<MemoryPart>& parts, const MemoryLimit& limit) {
     std::uint64_t total = 0;
     std::string listed;
+    bool pictures = false;
+    bool others = false;
     for (const MemoryPart& part : parts) {
         total += part.bytes;
         if (part.bytes >= (std::uint64_t{1} << 20)) {  // the parts that matter
             listed += (listed.empty() ? "" : ", ") + part.what + " " + format_bytes(part.bytes);
+            (part.picture ? pictures : others) = true;
         }
     }
     if (total <= limit.bytes) {
         return;
     }
+    // The ways out of the parts that are large; with none (a limit set very low), all of them.
+    std::string ways;
+    if (others || !pictures) {
+        ways =
+            "render a smaller output matrix or view area (the .scn's view lines), draw only "
+            "from a line up (-L), ";
+    }
+    if (pictures) {
+        ways += "use smaller texture pictures, ";
+    }
     const bool with_window = std::any_of(parts.begin(), parts.end(), [](const MemoryPart& p) {
         return p.what == "the window" && p.bytes > 0;
     });
+    if (with_window) {
+        ways += "render without the window (--no-window), ";
+    }
     // With no part of a MiB or more (a limit set very low) there is nothing worth listing.
     throw UsageError(fmt::format(
-        "the render needs about {}{}, more than the {} available ({}): render a smaller "
-        "output matrix or view area (the .scn's view lines), draw only from a line up (-L), "
-        "{}or set the limit with --max-memory GIB",
+        "the render needs about {}{}, more than the {} available ({}): {}or set the limit with "
+        "--max-memory GIB",
         format_bytes(total), listed.empty() ? "" : " (" + listed + ")", format_bytes(limit.bytes),
-        limit.source, with_window ? "render without the window (--no-window), " : ""));
+        limit.source, ways));
 }
 
 std::string format_bytes(std::uint64_t bytes) {

@@ -16,12 +16,17 @@ namespace rt {
 struct MemoryPart {
     std::string what;  ///< "the film", "the PNG"
     std::uint64_t bytes = 0;
+    bool picture = false;  ///< a texture picture: smaller pictures are the way out
 };
+
+/// A texture picture decoded (three bytes a pixel): "the 16384 x 16384 texture picture 'a.png'".
+MemoryPart texture_picture_part(const std::string& name, int width, int height);
 
 /// The big allocations of a render of `window` of the scene: the film (3 floats a pixel), the
 /// window's picture (3 floats a view pixel) when one opens, each output's writing buffers, the
-/// z-buffer, and the intersection method from the polygon count (SEADS from its voxels too).
-/// The scene itself is in memory already and is not counted.
+/// z-buffer, the intersection method from the polygon count (SEADS from its voxels too), and the
+/// scene's texture pictures (counted when each is read, before it is decoded, and here with the
+/// rest). The rest of the scene is in memory already and is not counted.
 std::vector<MemoryPart> estimate_render_memory(const Scene& scene, const Options& options,
                                                const PixelRect& window, bool window_opens);
 

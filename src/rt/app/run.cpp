@@ -216,12 +216,44 @@ void warn_of_exploding_tree(const Scene& scene, const ShadingSettings& shading,
     }
 }
 
+// The memory the run may take: --max-memory's, or what the system has left now.
+std::optional<MemoryLimit> memory_limit(const Options& options) {
+    if (options.max_memory_gib) {
+        return MemoryLimit{
+            static_cast<std::uint64_t>(std::min(*options.max_memory_gib * 1073741824.0, 1.8e19)),
+            "--max-memory"};
+    }
+    return available_memory();
+}
+
+// Refuses a texture picture that would not fit in memory, with those read before it, before it is
+// decoded; the refusal names the texture map's line.
+PictureCheck picture_check(const Options& options) {
+    std::optional<MemoryLimit> limit = memory_limit(options);
+    if (!limit || options.debug_octree_interactive) {
+        return {};
+    }
+    return [limit = *limit](const std::vector<TexturePicture>& pictures) {
+        std::vector<MemoryPart> parts;
+        parts.reserve(pictures.size());
+        for (const TexturePicture& picture : pictures) {
+            parts.push_back(texture_picture_part(picture.name, picture.width, picture.height));
+        }
+        try {
+            check_memory(parts, limit);
+        } catch (const UsageError& e) {
+            throw UsageError(pictures.back().where.to_string() + ": " + e.what());
+        }
+    };
+}
+
 // The .scn, or with --model the scene made around the model, whose header names the octree at
 // the depth suggested for its polygon count (--accel and -od still choose otherwise).
 Scene read_scene(const Options& options, Diagnostics& diagnostics) {
     const ExitOnInterrupt nothing_to_keep;  // a read may block on a pipe
     if (options.model.empty()) {
-        return load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics);
+        return load_scene(resolve_scene_path(options.scene), options.dialect, diagnostics,
+                          options.dialect.textures ? picture_check(options) : PictureCheck{});
     }
     Scene scene = model_scene(options.model, options.dialect, diagnostics);
     scene.header.sptncde = 1;
@@ -363,11 +395,14 @@ void check_resources(const Scene& scene, const Options& options, const PixelRect
         }
     }
     const bool window_opens = console.open_window && !options.random_rays;
-    const std::optional<MemoryLimit> limit =
-        options.max_memory_gib ? MemoryLimit{static_cast<std::uint64_t>(std::min(
-                                                 *options.max_memory_gib * 1073741824.0, 1.8e19)),
-                                             "--max-memory"}
-                               : available_memory();
+    std::optional<MemoryLimit> limit = memory_limit(options);
+    if (limit && !options.max_memory_gib) {
+        // Measured now, what the system has left is short of the texture pictures read already;
+        // the estimate counts them with the rest.
+        for (const TextureImage& picture : scene.texture_images) {
+            limit->bytes += picture.rgb.size();
+        }
+    }
     if (limit) {
         check_memory(estimate_render_memory(scene, options, window, window_opens), *limit);
     }

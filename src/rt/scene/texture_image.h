@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "rt/core/rgb.h"
@@ -14,6 +15,7 @@ struct TextureImage {
     int width = 0;
     int height = 0;
     std::vector<std::uint8_t> rgb;
+    std::string name;  ///< the file, as the texture map names it
 };
 
 /// The picture at (x, y), in pixels from its top left corner (pixel (i, j) covers [i, i + 1) x

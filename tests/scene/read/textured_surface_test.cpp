@@ -302,6 +302,82 @@ TEST_F(TexturedScene, PictureLinesAreCheckedToo) {
               std::string::npos);
 }
 
+TEST_F(TexturedScene, EachPictureIsCheckedBeforeItIsDecodedAndAFileIsDecodedOnce) {
+    write_png(Image8{3, 2, std::vector<std::uint8_t>(18, 200)}, dir_.path() / "tint.png");
+    std::string map = kMap;
+    map.insert(map.find("0 0.5"), "colour_map tint.png\nnormal_map ./tint.png\n");
+    dir_.write("map", map);
+    std::vector<std::vector<TexturePicture>> seen;
+    ReaderDialect v;
+    v.textures = true;
+    const Scene scene =
+        load_scene(dir_.write("s.scn", scn(line())), v, diagnostics_,
+                   [&](const std::vector<TexturePicture>& pictures) { seen.push_back(pictures); });
+    // One file under two names: decoded once, checked once, shared by both maps.
+    ASSERT_EQ(seen.size(), 1u);
+    ASSERT_EQ(seen[0].size(), 1u);
+    EXPECT_EQ(seen[0][0].name, "tint.png");
+    EXPECT_EQ(seen[0][0].where.to_string(), (dir_.path() / "map").string() + ":3");
+    EXPECT_EQ(seen[0][0].bytes, 18u);
+    ASSERT_EQ(scene.texture_images.size(), 1u);
+    EXPECT_EQ(scene.texture_images[0].name, "tint.png");
+    EXPECT_EQ(scene.texture_grids[0].colour_map, scene.texture_grids[0].normal_map);
+
+    // A refusal stops the load before the picture is decoded: no pixel of it is read.
+    const auto refuse = [](const std::vector<TexturePicture>& pictures) {
+        throw UsageError("refused " + pictures.back().name);
+    };
+    try {
+        load_scene(dir_.path() / "s.scn", v, diagnostics_, refuse);
+        FAIL() << "the check was not called";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()), "refused tint.png");
+    }
+}
+
+TEST_F(TexturedScene, APictureClaimingMoreThanItsDataCanHoldIsRefusedUnread) {
+    // A 1 x 1 PNG whose header says 16384 x 16384: its IHDR's width at 16, height at 20, the
+    // chunk's CRC at 29 over bytes 12 to 28 (libpng checks it).
+    std::vector<std::uint8_t> bytes = encode_png(Image8{1, 1, {1, 2, 3}});
+    for (const std::size_t at : {std::size_t{16}, std::size_t{20}}) {
+        bytes[at + 1] = 0;
+        bytes[at + 2] = 0x40;
+        bytes[at + 3] = 0;
+    }
+    std::uint32_t crc = 0xffffffffU;
+    for (std::size_t i = 12; i < 29; ++i) {
+        crc ^= bytes[i];
+        for (int bit = 0; bit < 8; ++bit) {
+            crc = (crc >> 1) ^ (0xedb88320U & (0U - (crc & 1U)));
+        }
+    }
+    crc ^= 0xffffffffU;
+    for (int i = 0; i < 4; ++i) {
+        bytes[29 + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(crc >> (24 - 8 * i));
+    }
+    dir_.write("huge.png", std::string(bytes.begin(), bytes.end()));
+    std::string map = kMap;
+    map.insert(map.find("0 0.5"), "colour_map huge.png\n");
+    dir_.write("map", map);
+    bool checked = false;
+    ReaderDialect v;
+    v.textures = true;
+    const std::string message =
+        without(input_error([&] {
+                    load_scene(dir_.write("s.scn", scn(line())), v, diagnostics_,
+                               [&](const auto&) { checked = true; });
+                }),
+                dir_.path().string() + "/");
+    EXPECT_FALSE(checked);
+    EXPECT_EQ(message.substr(0, message.find('(')),
+              "huge.png: expected a PNG picture whose compressed data ");
+    EXPECT_NE(message.find("bytes) can hold its 16384 x 16384 pixels, found 805306368 bytes of "
+                           "pixel rows to unpack from them (deflate unpacks at most 1032 bytes "
+                           "from each)"),
+              std::string::npos)
+        << message;
+}
+
 TEST_F(TexturedScene, MissingFilesAndAttributesAreNamedAtTheScnLine) {
     EXPECT_EQ(error(scn("$ 1\n$ 2 nogrid map 1 0 0 0 0 0 0 2 3\n")),
               "s.scn:14: cannot open polygon file 'nogrid' (nogrid): No such file or directory");

@@ -78,8 +78,10 @@ private:
 };
 
 void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path& folder,
-                  const ReaderDialect& dialect, Diagnostics& diagnostics) {
+                  const ReaderDialect& dialect, const PictureCheck& check_pictures,
+                  Diagnostics& diagnostics) {
     SceneBuilder builder(scene, diagnostics);
+    TexturePictures pictures{check_pictures, {}, {}};
     MeshCache cache(scn.surfaces, folder);
     FileTable files(scene);
     for (const ScnSurface& entry : scn.surfaces) {
@@ -105,7 +107,7 @@ void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path&
         add_textured_surface(
             builder, scene, entry,
             read_named_file(folder / grid.name, "polygon file", grid.name, grid.where),
-            read_named_file(folder / map.name, "texture map", map.name, map.where), file,
+            read_named_file(folder / map.name, "texture map", map.name, map.where), file, pictures,
             diagnostics);
     }
     builder.finish(scn.eye_at);
@@ -114,7 +116,7 @@ void add_surfaces(Scene& scene, const ScnFile& scn, const std::filesystem::path&
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dialect,
-                 Diagnostics& diagnostics) {
+                 Diagnostics& diagnostics, const PictureCheck& check_pictures) {
     const SourceText scn_text = read_scene_file(scn_file);
     ScnFile scn = read_scn(scn_text, dialect, diagnostics);
     const std::filesystem::path folder = scn_file.parent_path();
@@ -136,7 +138,7 @@ Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dia
     }
     // The scene's big arrays are already in memory advised for huge pages: SceneBuilder reserves
     // them so (reserve_more), and copying them again (move_to_huge_pages) would only cost time.
-    add_surfaces(scene, scn, folder, dialect, diagnostics);
+    add_surfaces(scene, scn, folder, dialect, check_pictures, diagnostics);
     return scene;
 }
 

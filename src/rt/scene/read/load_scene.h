@@ -6,14 +6,16 @@
 
 #include "rt/core/diagnostics.h"
 #include "rt/scene/read/dialect.h"
+#include "rt/scene/read/textured_surface.h"
 #include "rt/scene/scene.h"
 
 namespace rt {
 
 /// Reads the scene. File names in it are relative to the .scn file's folder. Malformed input
 /// throws InputError ("file:line: message"); warnings, notes (auto-centering) and -df traces go
-/// to `diagnostics`.
+/// to `diagnostics`. `check_pictures` sees each texture picture's size before it is decoded (a
+/// file named by several maps is decoded once).
 Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dialect,
-                 Diagnostics& diagnostics);
+                 Diagnostics& diagnostics, const PictureCheck& check_pictures = {});
 
 }  // namespace rt

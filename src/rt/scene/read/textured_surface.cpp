@@ -139,37 +139,50 @@ void set_frame(const Scene& scene, const Polygon& p, TextureCell& cell) {
                                               : normalize(cross(p.normal, cell.tangent_u));
 }
 
-// Reads a picture the texture map names (relative to the map's folder) into Scene::texture_images.
+// Reads a picture the texture map names (relative to the map's folder) into Scene::texture_images,
+// once a file: its header first, for the check, then its pixels.
 std::int32_t read_picture(Scene& scene, const SourceText& map_file, const MapPicture& picture,
-                          const char* kind) {
+                          const char* kind, TexturePictures& pictures) {
     const std::filesystem::path path =
         std::filesystem::path(map_file.name).parent_path() / picture.name;
-    Image8 image;
-    try {
-        image = read_png(path);
-    } catch (const IoError& e) {
-        throw InputError(map_file.at(picture.line),
-                         fmt::format("{} '{}': {}", kind, picture.name, e.what()));
+    if (const auto known = pictures.index.find(path.lexically_normal().string());
+        known != pictures.index.end()) {
+        return known->second;
     }
     if (scene.texture_images.size() >=
         static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
         throw InputError(map_file.at(picture.line), "the scene has too many pictures");
     }
-    scene.texture_images.push_back({image.width, image.height, std::move(image.rgb)});
-    return static_cast<std::int32_t>(scene.texture_images.size() - 1);
+    Image8 image;
+    try {
+        const PngHeader header = read_png_header(path);
+        pictures.held.push_back({picture.name, map_file.at(picture.line), header.width,
+                                 header.height, header.decoded_bytes()});
+        if (pictures.check) {
+            pictures.check(pictures.held);
+        }
+        image = read_png(path);
+    } catch (const IoError& e) {
+        throw InputError(map_file.at(picture.line),
+                         fmt::format("{} '{}': {}", kind, picture.name, e.what()));
+    }
+    scene.texture_images.push_back({image.width, image.height, std::move(image.rgb), picture.name});
+    const auto index = static_cast<std::int32_t>(scene.texture_images.size() - 1);
+    pictures.index.emplace(path.lexically_normal().string(), index);
+    return index;
 }
 
 // The grid's entry in Scene::texture_grids, with the pictures its map names.
 std::uint32_t add_grid(Scene& scene, const ScnTexturedSurface& entry, const TextureMap& map,
-                       const SourceText& map_file) {
+                       const SourceText& map_file, TexturePictures& pictures) {
     TextureGrid grid;
     grid.rows = static_cast<std::uint32_t>(entry.rows);
     grid.columns = static_cast<std::uint32_t>(entry.columns);
     if (map.colour_map) {
-        grid.colour_map = read_picture(scene, map_file, *map.colour_map, "colour map");
+        grid.colour_map = read_picture(scene, map_file, *map.colour_map, "colour map", pictures);
     }
     if (map.normal_map) {
-        grid.normal_map = read_picture(scene, map_file, *map.normal_map, "normal map");
+        grid.normal_map = read_picture(scene, map_file, *map.normal_map, "normal map", pictures);
     }
     scene.texture_grids.push_back(grid);
     return static_cast<std::uint32_t>(scene.texture_grids.size() - 1);
@@ -179,7 +192,7 @@ std::uint32_t add_grid(Scene& scene, const ScnTexturedSurface& entry, const Text
 
 void add_textured_surface(SceneBuilder& builder, Scene& scene, const ScnTexturedSurface& entry,
                           const SourceText& grid_file, const SourceText& texture_map_file,
-                          std::uint32_t file, Diagnostics& diagnostics) {
+                          std::uint32_t file, TexturePictures& pictures, Diagnostics& diagnostics) {
     const PolygonGrid grid =
         read_grid_file(grid_file, entry.rows, entry.columns, entry.where, diagnostics);
     const TextureMap map =
@@ -188,7 +201,7 @@ void add_textured_surface(SceneBuilder& builder, Scene& scene, const ScnTextured
     if (std::ssize(scene.texture_cells) + cells > std::numeric_limits<std::int32_t>::max()) {
         throw InputError(entry.where, "the scene has too many texture-mapped cells");
     }
-    const std::uint32_t grid_index = add_grid(scene, entry, map, texture_map_file);
+    const std::uint32_t grid_index = add_grid(scene, entry, map, texture_map_file, pictures);
     const auto first_cell = static_cast<std::int32_t>(scene.texture_cells.size());
     scene.texture_cells.resize(scene.texture_cells.size() + static_cast<std::size_t>(cells));
     const SurfaceMesh mesh = grid_mesh(grid_file, grid, first_cell, diagnostics);
