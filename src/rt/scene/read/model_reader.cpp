@@ -229,8 +229,7 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
         const Vec3 placed = t.point({p.x, p.y, p.z});
         // NaN, inf or a coordinate far out would wreck the framing's scale, and the range check
         // after placement would then name some healthy vertex: named here, as the file has it.
-        if (!(std::fabs(placed.x) <= kMaxCoordinate && std::fabs(placed.y) <= kMaxCoordinate &&
-              std::fabs(placed.z) <= kMaxCoordinate)) {
+        if (!within_coordinate_range(placed)) {
             throw error(fmt::format(
                 "vertex {} of mesh '{}': expected coordinates from {:g} to "
                 "{:g}, found {}",

@@ -1,7 +1,10 @@
 // Sane limits every scene reader checks before it trusts a count or allocates (docs/formats.md).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+
+#include "rt/core/vec3.h"
 
 namespace rt {
 
@@ -31,6 +34,11 @@ inline constexpr int kMaxOctreeDepth = 20;
 /// the largest screen distance and shape radius: the world's extent, voxel sizes and Embree's float
 /// rays stay finite and keep a useful precision.
 inline constexpr double kMaxCoordinate = 1e15;
+/// Whether every coordinate of `p` is within kMaxCoordinate (NaN is not).
+inline bool within_coordinate_range(const Vec3& p) {
+    return std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+           std::fabs(p.z) <= kMaxCoordinate;
+}
 /// The screen distance must be more than this times the eye point's largest |coordinate| (or 1
 /// when that is smaller): eye rays start on the screen, aimed away from the eye.
 inline constexpr double kLeastScreenDistance = 1e-6;

@@ -43,13 +43,6 @@ void check_shape_use(const Shape& s, PolygonMark mark, const SourceLocation& use
     }
 }
 
-// Every placed coordinate stays within kMaxCoordinate (NaN fails too), so that the world's extent,
-// the voxel sizes and Embree's float rays stay finite.
-bool within_range(const Vec3& p) {
-    return std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
-           std::fabs(p.z) <= kMaxCoordinate;
-}
-
 // Room for `more` elements beyond v's size, growing at least geometrically: reserving exactly what
 // each surface adds would copy the arrays once per surface. The room is advised for huge pages
 // (core/huge_pages.h) as it is reserved, so that a big scene's arrays, which every intersection
@@ -237,7 +230,7 @@ std::int32_t SceneBuilder::shape_index(Placing& placing, const MeshPolygon& poly
     const SurfaceTransform& t = placing.transform;
     for (Vec3* p : {&shape.first, &shape.second}) {
         const Vec3 placed = t.point(*p);
-        if (!within_range(placed)) {
+        if (!within_coordinate_range(placed)) {
             throw InputError(shape.where, out_of_range(fmt::format("shape {}'s point", shape.index),
                                                        *p, placed));
         }
@@ -273,7 +266,9 @@ Vec3 SceneBuilder::placed_within_range(const Placing& placing, const MeshPolygon
                                        std::uint32_t vertex) const {
     const Vec3& p = placing.mesh.vertices[vertex];
     const Vec3 placed = placing.transform.point(p);
-    if (!within_range(placed)) {
+    // Every placed coordinate stays within range, so that the world's extent, the voxel sizes
+    // and Embree's float rays stay finite.
+    if (!within_coordinate_range(placed)) {
         const std::vector<int>& lines = placing.mesh.vertex_lines;
         const SourceLocation at =
             vertex < lines.size()

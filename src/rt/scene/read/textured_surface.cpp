@@ -60,8 +60,7 @@ void check_flat(const SourceText& source, const PolygonGrid& grid, std::int64_t 
 // are checked again where they are placed; this catches a point whose cell is skipped first).
 void check_point_in_range(const SourceText& source, const PolygonGrid& grid, std::uint32_t k) {
     const Vec3& p = grid.points[k];
-    if (std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
-        std::fabs(p.z) <= kMaxCoordinate) {
+    if (within_coordinate_range(p)) {
         return;
     }
     throw expected_found(source.at(grid.lines[k]),
