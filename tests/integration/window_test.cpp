@@ -388,5 +388,68 @@ TEST(Window, EscapeStopsARenderDeepInTheRayTree) {
     EXPECT_LE(part.first_finished_row(), 19);
 }
 
+// The X server going away under the window (it crashed, or the session closed) loses the window,
+// not the render: rt says so and renders on to the end, and writes the whole picture. Xlib's own
+// handler would end rt at once (status 1), losing everything.
+TEST(Window, TheRenderGoesOnWhenTheDisplayGoesAway) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    const std::string scene = slow_twocubes(dir);
+    std::optional<SpawnedProgram> rt;
+    std::string earlier_errors;
+    const Image8 shown = start_and_shoot(
+        rt, {"rt", {scene, "-n", "--output", "whole.gro", "--threads", "1"}, dir.path(),
+             {x.name(), false}},
+        [&] { return screenshot(x.name(), "rt: " + scene); }, seconds(20),
+        [](const Image8& s) { return s.width == 512; },
+        [](SpawnedProgram& p) { return p.errors().find("no window") != std::string::npos; },
+        earlier_errors);
+    ASSERT_EQ(shown.width, 512) << "rt opened no window: " << earlier_errors << rt->errors();
+    x.stop();
+    ASSERT_EQ(rt->wait_for_exit(seconds(120)), 0) << rt->errors();
+    EXPECT_NE(rt->errors().find("lost the window: X display '" + x.name() +
+                                "' closed the connection; rt goes on without it"),
+              std::string::npos)
+        << rt->errors();
+    EXPECT_TRUE(read_gro(dir.path() / "whole.gro").complete()) << rt->errors();
+}
+
+// show has nothing left to do without its window: it says why and ends with status 1.
+TEST(Window, ShowEndsWhenTheDisplayGoesAway) {
+    SKIP_WITHOUT_DISPLAY_TOOLS();
+    if (std::system("command -v xdotool >/dev/null") != 0) {  // NOLINT(concurrency-mt-unsafe)
+        GTEST_SKIP() << "xdotool is not installed (scripts/install-deps installs it)";
+    }
+    XDisplay x;
+    ASSERT_TRUE(x.running());
+    const TempDir dir;
+    ASSERT_EQ(run_program("rt", {scene_path("twocubes"), "-n", "--output", "pic.gro"}, dir.path())
+                  .exit_code,
+              0);
+    std::optional<SpawnedProgram> show;
+    std::string earlier_errors;
+    const Image8 shown = start_and_shoot(
+        show, {"show", {"pic.gro"}, dir.path(), {x.name(), false}},
+        [&] {  // its title changes with the pointer: it is found by the title's start
+            const unsigned long id =
+                std::strtoul(xdotool(x, "search --name '^show: pic.gro'").c_str(), nullptr, 10);
+            return id == 0 ? Image8{} : screenshot_of(x.name(), id);
+        },
+        seconds(20),
+        [](const Image8& s) { return s.width == 512; },
+        [](SpawnedProgram& p) { return p.wait_for_exit(milliseconds(0)).has_value(); },
+        earlier_errors);
+    ASSERT_EQ(shown.width, 512) << "show opened no window: " << earlier_errors << show->errors();
+    const std::string name = x.name();
+    x.stop();
+    EXPECT_EQ(show->wait_for_exit(seconds(20)), 1) << show->errors();
+    EXPECT_NE(show->errors().find("show: lost the window: X display '" + name +
+                                  "' closed the connection"),
+              std::string::npos)
+        << show->errors();
+}
+
 }  // namespace
 }  // namespace rt::test

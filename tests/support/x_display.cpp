@@ -125,9 +125,14 @@ XDisplay::XDisplay() {
 }
 
 XDisplay::~XDisplay() {
+    stop();
+}
+
+void XDisplay::stop() {
     if (pid_ > 0) {
         ::kill(pid_, SIGTERM);
         ::waitpid(pid_, nullptr, 0);
+        pid_ = -1;
     }
 }
 

@@ -26,6 +26,8 @@ public:
 
     const std::string& name() const { return name_; }  ///< ":N"
     bool running() const { return pid_ > 0; }
+    /// Ends the server now, as a crash or a closed session would for its clients.
+    void stop();
 
 private:
     int pid_ = -1;

@@ -91,6 +91,10 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
             std::string why_not;
             rt::WindowRequest stopping = request;
             stopping.on_close = rt::request_interrupt;  // closing it stops the render at once
+            // The finished lines are the render's, not the window's: they stay, and so does rt.
+            stopping.on_lost = [warn](const std::string& why) {
+                warn(why + "; rt goes on without it");
+            };
             std::unique_ptr<rt::PictureWindow> window = rt::open_picture_window(stopping, why_not);
             if (!window && std::getenv("DISPLAY") != nullptr) {  // NOLINT(concurrency-mt-unsafe)
                 // A display was named but cannot be reached: the user expected a window, so this

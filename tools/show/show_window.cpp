@@ -45,8 +45,10 @@ Film read_shown_picture(const std::filesystem::path& path) {
 
 int show_in_window(const Film& film, const std::string& name) {
     std::string why_not;
-    const std::unique_ptr<PictureWindow> window = open_picture_window(
-        {"show: " + name, film.view_width(), film.view_height(), film.mapping, true, {}}, why_not);
+    WindowRequest request{"show: " + name, film.view_width(), film.view_height(), film.mapping,
+                          true, {}, {}};
+    request.on_lost = [](const std::string& why) { std::cerr << "show: " << why << '\n'; };
+    const std::unique_ptr<PictureWindow> window = open_picture_window(request, why_not);
     if (!window) {
         // Nothing to look at here: say what the picture is, and how to see it elsewhere.
         std::cout << film_summary(film);
@@ -56,7 +58,7 @@ int show_in_window(const Film& film, const std::string& name) {
     window->board().show_film(film);
     // On a terminal Enter ends it too; otherwise only closing the window (or a signal) does.
     wait_for_enter_or_close(*window, ::isatty(STDIN_FILENO) != 0 ? STDIN_FILENO : -1, {});
-    return 0;
+    return window->lost() ? 1 : 0;  // the picture was to be seen, and no one could see it
 }
 
 }  // namespace rt::show

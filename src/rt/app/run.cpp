@@ -310,6 +310,7 @@ std::unique_ptr<PictureWindow> open_window(const Scene& scene, const Options& op
                                  scene.view.height,
                                  options.display,
                                  false,
+                                 {},
                                  {}});
     }
     if (shown && !options.wireframe_only) {  // -w shows the one it writes
@@ -331,7 +332,7 @@ void show_finished_rows(const Film& film, PictureBoard& board) {
 
 // The outputs are written: the window stays until the viewer is done with it.
 void close_window(std::unique_ptr<PictureWindow> window, const RunConsole& console) {
-    if (window && !window->closed() && console.keep_window_open) {
+    if (window && !window->closed() && !window->lost() && console.keep_window_open) {
         console.keep_window_open(*window);
     }
 }

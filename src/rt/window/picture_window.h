@@ -23,6 +23,10 @@ struct WindowRequest {
     /// Called (on the window's own thread) when the viewer closes it: rt stops the render there
     /// as Ctrl-C does, inside the ray tree. May be empty.
     std::function<void()> on_close;
+    /// Called (on the window's own thread) when the display goes away under the window: the X
+    /// server ended or dropped the connection. Says so ("lost the window: X display ':0'
+    /// closed the connection"). rt renders on without the window. May be empty.
+    std::function<void(const std::string& why)> on_lost;
 };
 
 class PictureWindow {
@@ -35,6 +39,8 @@ public:
     virtual PictureBoard& board() = 0;
     /// The viewer closed the window or pressed Esc or Ctrl-C in it.
     virtual bool closed() const = 0;
+    /// The display went away: nothing is shown any more (WindowRequest::on_lost).
+    virtual bool lost() const = 0;
 };
 
 /// True when this build can open windows (SDL2 was found: RT_WITH_WINDOW).
@@ -46,7 +52,7 @@ std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
                                                    std::string& why_not);
 
 /// Returns when a line is read from file descriptor `fd` (the viewer pressed Enter, or the input
-/// ended), the window is closed, or `stop` says so (Ctrl-C).
+/// ended), the window is closed or lost, or `stop` says so (Ctrl-C).
 void wait_for_enter_or_close(const PictureWindow& window, int fd,
                              const std::function<bool()>& stop);
 

@@ -10,7 +10,7 @@ namespace rt {
 void wait_for_enter_or_close(const PictureWindow& window, int fd,
                              const std::function<bool()>& stop) {
     constexpr int kPollMilliseconds = 50;  // how soon a closed window or Ctrl-C is noticed
-    while (!window.closed() && !(stop && stop())) {
+    while (!window.closed() && !window.lost() && !(stop && stop())) {
         pollfd input{fd, POLLIN, 0};
         if (::poll(&input, 1, kPollMilliseconds) <= 0) {
             continue;  // timeout, or a signal (checked above)

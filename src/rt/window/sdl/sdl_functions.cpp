@@ -14,6 +14,7 @@ SdlFunctions find_functions(const SharedLibrary& library) {
     RT_FIND(SDL_CreateWindow);
     RT_FIND(SDL_DestroyWindow);
     RT_FIND(SDL_FreeSurface);
+    RT_FIND(SDL_GetCurrentVideoDriver);
     RT_FIND(SDL_GetError);
     RT_FIND(SDL_GetTicks);
     RT_FIND(SDL_GetWindowSurface);

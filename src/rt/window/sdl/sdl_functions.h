@@ -13,6 +13,7 @@ struct SdlFunctions {
     decltype(&::SDL_CreateWindow) SDL_CreateWindow = nullptr;
     decltype(&::SDL_DestroyWindow) SDL_DestroyWindow = nullptr;
     decltype(&::SDL_FreeSurface) SDL_FreeSurface = nullptr;
+    decltype(&::SDL_GetCurrentVideoDriver) SDL_GetCurrentVideoDriver = nullptr;
     decltype(&::SDL_GetError) SDL_GetError = nullptr;
     decltype(&::SDL_GetTicks) SDL_GetTicks = nullptr;
     decltype(&::SDL_GetWindowSurface) SDL_GetWindowSurface = nullptr;

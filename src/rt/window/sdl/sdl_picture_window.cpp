@@ -3,8 +3,11 @@
 // functions come from sdl_functions(), which loads libSDL2 only when a window is wanted.
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdlib>
+#include <cstring>
 #include <future>
+#include <mutex>
 #include <numbers>
 #include <string>
 #include <thread>
@@ -13,6 +16,7 @@
 #include "rt/core/error.h"
 #include "rt/window/picture_window.h"
 #include "rt/window/sdl/sdl_functions.h"
+#include "rt/window/sdl/x_connection_watch.h"
 
 #include <fmt/format.h>
 
@@ -81,8 +85,16 @@ public:
 
     ~SdlPictureWindow() override {
         stopping_ = true;
-        if (thread_.joinable()) {
+        if (!thread_.joinable()) {
+            return;
+        }
+        std::unique_lock lock(thread_state_mutex_);
+        thread_state_changed_.wait(lock, [this] { return thread_done_ || lost_; });
+        if (thread_done_) {
+            lock.unlock();
             thread_.join();
+        } else {
+            thread_.detach();  // it stays in Xlib's error handler for good (x_connection_watch.h)
         }
     }
 
@@ -90,12 +102,18 @@ public:
     std::string start() {
         std::promise<std::string> opened;
         std::future<std::string> answer = opened.get_future();
-        thread_ = std::thread([this, &opened] { run(opened); });
+        thread_ = std::thread([this, &opened] {
+            run(opened);
+            const std::lock_guard lock(thread_state_mutex_);
+            thread_done_ = true;
+            thread_state_changed_.notify_all();
+        });
         return answer.get();
     }
 
     PictureBoard& board() override { return board_; }
     bool closed() const override { return closed_; }
+    bool lost() const override { return lost_; }
 
 private:
     // SDL, and the dbus and X11 libraries it loads (and unloads in SDL_Quit), leave a few small
@@ -124,22 +142,51 @@ private:
         // Only the display named; SDL would otherwise fall back to other drivers (offscreen,
         // KMS) that show nothing to anyone.
         sdl_.SDL_SetHint(SDL_HINT_VIDEODRIVER, driver_named());
+        // SDL would draw the window's surface through OpenGL (on a display without a GPU, Mesa's
+        // llvmpipe, with threads of its own), for pictures rt only copies. X's own images do it;
+        // and OpenGL's exit code waits for a display lock that a broken connection never frees.
+        sdl_.SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
         if (sdl_.SDL_Init(SDL_INIT_VIDEO) != 0) {
             opened.set_value(no_window_on_display(sdl_.SDL_GetError()));
             sdl_.SDL_Quit();  // what SDL_Init set up before it failed, so that a retry starts clean
             return;
         }
+        const char* driver = sdl_.SDL_GetCurrentVideoDriver();
+        if (driver != nullptr && std::strcmp(driver, "x11") == 0) {
+            opening_ = &opened;
+            watch_x_connection([this] { connection_lost(); });
+        }
         window_ = sdl_.SDL_CreateWindow(request_.title.c_str(), 0, 0, request_.width,
                                         request_.height, SDL_WINDOW_SHOWN);
         if (window_ == nullptr) {
+            opening_ = nullptr;
             opened.set_value(fmt::format("no window: {}", sdl_.SDL_GetError()));
             sdl_.SDL_Quit();
+            stop_watching_x_connection();
             return;
         }
+        opening_ = nullptr;
         opened.set_value("");
         loop();
         sdl_.SDL_DestroyWindow(window_);
         sdl_.SDL_Quit();
+        stop_watching_x_connection();
+    }
+
+    // The X server went away (on this thread, in an SDL call; x_connection_watch.h): the window
+    // says so, or the opening fails, and this thread never returns.
+    void connection_lost() {
+        if (opening_ != nullptr) {
+            opening_->set_value(no_window_on_display("the X server closed the connection"));
+            opening_ = nullptr;
+        } else if (request_.on_lost) {
+            const char* display = std::getenv("DISPLAY");  // NOLINT(concurrency-mt-unsafe)
+            request_.on_lost(fmt::format("lost the window: X display '{}' closed the connection",
+                                         display != nullptr ? display : ""));
+        }
+        const std::lock_guard lock(thread_state_mutex_);
+        lost_ = true;
+        thread_state_changed_.notify_all();
     }
 
     void loop() {
@@ -268,6 +315,13 @@ private:
     SDL_Window* window_ = nullptr;
     std::atomic<bool> stopping_{false};
     std::atomic<bool> closed_{false};
+    std::promise<std::string>* opening_ = nullptr;  // until the opening is answered
+    // The thread ends (thread_done_) or stays in Xlib's error handler for good (lost_): the
+    // destructor joins it, or lets it go.
+    std::mutex thread_state_mutex_;
+    std::condition_variable thread_state_changed_;
+    bool thread_done_ = false;
+    std::atomic<bool> lost_{false};
     int cursor_x_ = -1;
     int cursor_y_ = -1;
 };
@@ -303,7 +357,7 @@ std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
         if (why_not.empty()) {
             return window;
         }
-        if (attempt == kAttempts) {
+        if (attempt == kAttempts || window->lost()) {  // a server gone is not asked again
             return nullptr;
         }
         std::this_thread::sleep_for(kPause);
