@@ -400,8 +400,11 @@ TEST(Window, TheRenderGoesOnWhenTheDisplayGoesAway) {
     std::optional<SpawnedProgram> rt;
     std::string earlier_errors;
     const Image8 shown = start_and_shoot(
-        rt, {"rt", {scene, "-n", "--output", "whole.gro", "--threads", "1"}, dir.path(),
-             {x.name(), false}},
+        rt,
+        {"rt",
+         {scene, "-n", "--output", "whole.gro", "--threads", "1"},
+         dir.path(),
+         {x.name(), false}},
         [&] { return screenshot(x.name(), "rt: " + scene); }, seconds(20),
         [](const Image8& s) { return s.width == 512; },
         [](SpawnedProgram& p) { return p.errors().find("no window") != std::string::npos; },
@@ -437,8 +440,7 @@ TEST(Window, ShowEndsWhenTheDisplayGoesAway) {
                 std::strtoul(xdotool(x, "search --name '^show: pic.gro'").c_str(), nullptr, 10);
             return id == 0 ? Image8{} : screenshot_of(x.name(), id);
         },
-        seconds(20),
-        [](const Image8& s) { return s.width == 512; },
+        seconds(20), [](const Image8& s) { return s.width == 512; },
         [](SpawnedProgram& p) { return p.wait_for_exit(milliseconds(0)).has_value(); },
         earlier_errors);
     ASSERT_EQ(shown.width, 512) << "show opened no window: " << earlier_errors << show->errors();

@@ -45,8 +45,8 @@ Film read_shown_picture(const std::filesystem::path& path) {
 
 int show_in_window(const Film& film, const std::string& name) {
     std::string why_not;
-    WindowRequest request{"show: " + name, film.view_width(), film.view_height(), film.mapping,
-                          true, {}, {}};
+    WindowRequest request{
+        "show: " + name, film.view_width(), film.view_height(), film.mapping, true, {}, {}};
     request.on_lost = [](const std::string& why) { std::cerr << "show: " << why << '\n'; };
     const std::unique_ptr<PictureWindow> window = open_picture_window(request, why_not);
     if (!window) {

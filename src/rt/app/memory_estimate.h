@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rt/app/options.h"
+#include "rt/core/available_memory.h"
 #include "rt/core/bounds.h"
 #include "rt/scene/scene.h"
 
@@ -30,20 +31,8 @@ MemoryPart texture_picture_part(const std::string& name, int width, int height);
 std::vector<MemoryPart> estimate_render_memory(const Scene& scene, const Options& options,
                                                const PixelRect& window, bool window_opens);
 
-/// The memory this process may still take: the least of MemAvailable (/proc/meminfo), the cgroup's
-/// memory.max less its memory.current, and RLIMIT_AS less the address space in use. Empty when
-/// none can be read.
-struct MemoryLimit {
-    std::uint64_t bytes = 0;
-    std::string source;  ///< "MemAvailable in /proc/meminfo", "--max-memory"
-};
-std::optional<MemoryLimit> available_memory();
-
 /// Throws UsageError when the parts add up to more than the limit, naming the figures and the
 /// ways to proceed.
 void check_memory(const std::vector<MemoryPart>& parts, const MemoryLimit& limit);
-
-/// "3.2 GiB", "512 MiB".
-std::string format_bytes(std::uint64_t bytes);
 
 }  // namespace rt

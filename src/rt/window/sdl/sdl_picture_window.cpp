@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "rt/core/available_memory.h"
 #include "rt/core/error.h"
 #include "rt/window/picture_window.h"
 #include "rt/window/sdl/sdl_functions.h"
@@ -337,6 +338,10 @@ std::unique_ptr<PictureWindow> open_picture_window(const WindowRequest& request,
     if (*driver_named() == '\0') {
         why_not = "no display (DISPLAY is not set)";
         return nullptr;
+    }
+    why_not = window_memory_refusal(request.width, request.height, available_memory());
+    if (!why_not.empty()) {
+        return nullptr;  // before the board takes any of it
     }
     const SdlFunctions* sdl = nullptr;
     try {
