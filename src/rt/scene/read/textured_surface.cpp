@@ -164,6 +164,10 @@ std::int32_t read_picture(Scene& scene, const SourceText& map_file, const MapPic
     } catch (const IoError& e) {
         throw InputError(map_file.at(picture.line),
                          fmt::format("{} '{}': {}", kind, picture.name, e.what()));
+    } catch (const InputError& e) {
+        // A picture has no lines: the map's line that names it says which one is meant.
+        throw InputError(map_file.at(picture.line),
+                         fmt::format("{} '{}': {}", kind, picture.name, e.message()));
     }
     scene.texture_images.push_back({image.width, image.height, std::move(image.rgb), picture.name});
     const auto index = static_cast<std::int32_t>(scene.texture_images.size() - 1);
