@@ -150,6 +150,26 @@ TEST_F(ModelScene, ObjAndPlyOfOneModelMakeTheSameScene) {
     }
 }
 
+TEST_F(ModelScene, ManyDegenerateFacesAreNamedTenAndCounted) {
+    std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 0 0\nf 1 2 3\n";
+    for (int i = 0; i < 1000; ++i) {
+        obj += "f 1 2 4\n";
+    }
+    dir_.write("m.obj", obj);
+    const Scene scene = load("1 0 3 m.obj 1 0 0 0 0 0 0");
+    EXPECT_EQ(scene.polygons.size(), 1u);
+    std::vector<std::string> degenerate;
+    for (const std::string& w : diagnostics_.warnings()) {
+        if (w.find("degenerate") != std::string::npos) {
+            degenerate.push_back(without(w, dir_.path().string() + "/"));
+        }
+    }
+    ASSERT_EQ(degenerate.size(), 11u);
+    EXPECT_EQ(degenerate[0], "m.obj: polygon 1 is degenerate (zero area); skipped");
+    EXPECT_EQ(degenerate[10],
+              "990 more degenerate polygons in m.obj skipped (the first 10 are named above)");
+}
+
 TEST_F(ModelScene, ADegenerateFaceIsSkippedWithAWarningNamingTheFile) {
     dir_.write("m.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n");
     const Scene scene = load("1 0 3 m.obj 1 0 0 0 0 0 0");

@@ -139,6 +139,7 @@ Scene load_scene(const std::filesystem::path& scn_file, const ReaderDialect& dia
     // The scene's big arrays are already in memory advised for huge pages: SceneBuilder reserves
     // them so (reserve_more), and copying them again (move_to_huge_pages) would only cost time.
     add_surfaces(scene, scn, folder, dialect, check_pictures, diagnostics);
+    diagnostics.finish_repeats();
     return scene;
 }
 

@@ -190,8 +190,10 @@ void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diag
         }
         drop_repeats(loop, normals);
         if (visits_a_corner_twice(loop)) {
-            diagnostics.warn(fmt::format("{}: polygon {} passes through one corner twice; skipped",
-                                         name, p.number));
+            diagnostics.warn_repeated(
+                fmt::format("polygons through one corner twice in {}", name),
+                fmt::format("{}: polygon {} passes through one corner twice; skipped", name,
+                            p.number));
             continue;
         }
         out.add_polygon(p, loop);

@@ -149,6 +149,7 @@ Scene model_scene(const std::filesystem::path& model, const ReaderDialect& diale
     // Added after the model, the floor copied a million-polygon model's arrays once more.
     builder.reserve_for({&mesh, &floor_mesh, &light_mesh});
     builder.add_surface(model_entry, mesh, 0);
+    diagnostics.finish_repeats();
     if (scene.polygons.empty()) {  // each was degenerate, and skipped with a warning
         throw InputError({model.string(), 0, 0},
                          "the model holds no polygons that are not "

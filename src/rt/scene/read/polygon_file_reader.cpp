@@ -162,8 +162,9 @@ void PolygonFileReader::read_polygon(std::int64_t ordinal, std::int64_t count,
     // Fewer than three edges cannot close a loop: skipped with a warning, like the polygons the
     // assembly finds degenerate, rather than stopping the whole scene.
     if (n < 3) {
-        diagnostics_.warn(fmt::format("{}: {} is degenerate (fewer than 3 edges); skipped",
-                                      at.to_string(), name));
+        diagnostics_.warn_repeated(fmt::format("degenerate polygons in {}", at.file),
+                                   fmt::format("{}: {} is degenerate (fewer than 3 edges); skipped",
+                                               at.to_string(), name));
         return;
     }
     const std::vector<std::uint32_t> loop = chain_edges(own);

@@ -129,9 +129,10 @@ void SceneBuilder::add_polygon(Placing& placing, const MeshPolygon& polygon) {
         for (const std::uint32_t vertex : loop) {
             placed_within_range(placing, polygon, vertex);
         }
-        diagnostics_.warn(fmt::format("{}: polygon {} is degenerate ({}); skipped",
-                                      polygon_location(placing, polygon).to_string(),
-                                      polygon.number, why));
+        const SourceLocation at = polygon_location(placing, polygon);
+        diagnostics_.warn_repeated(fmt::format("degenerate polygons in {}", at.file),
+                                   fmt::format("{}: polygon {} is degenerate ({}); skipped",
+                                               at.to_string(), polygon.number, why));
         return;
     }
     // The file's outward direction decides the side; without one (zero, or in the plane) the

@@ -88,9 +88,10 @@ SurfaceMesh grid_mesh(const SourceText& source, const PolygonGrid& grid, std::in
                 for (const std::uint32_t k : loop) {
                     check_point_in_range(source, grid, k);
                 }
-                diagnostics.warn(fmt::format("{}: {} is degenerate ({}); skipped",
-                                             source.at(line).to_string(), cell_name(row, column),
-                                             why));
+                diagnostics.warn_repeated(
+                    fmt::format("degenerate cells in {}", source.name),
+                    fmt::format("{}: {} is degenerate ({}); skipped", source.at(line).to_string(),
+                                cell_name(row, column), why));
                 continue;
             }
             check_flat(source, grid, row, column, loop, newell);
