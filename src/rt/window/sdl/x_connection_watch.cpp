@@ -27,19 +27,35 @@ Watch& the_watch() {
     return *watch;
 }
 
-// XSetIOErrorHandler from libX11 as SDL loaded it; null when it cannot be found. SDL unloads
-// libX11 in SDL_Quit: the handle kept here keeps it (and the handler rt sets in it) in place for
-// the rest of the run.
-decltype(&::XSetIOErrorHandler) x11_set_handler() {
-    static const auto set_handler = []() -> decltype(&::XSetIOErrorHandler) {
+// Xlib's two handler setters from libX11 as SDL loaded it; null when they cannot be found. SDL
+// unloads libX11 in SDL_Quit: the handle kept here keeps it (and the handlers rt sets in it) in
+// place for the rest of the run.
+struct HandlerSetters {
+    decltype(&::XSetIOErrorHandler) io = nullptr;
+    decltype(&::XSetErrorHandler) protocol = nullptr;
+};
+const HandlerSetters& x11_handler_setters() {
+    static const HandlerSetters setters = [] {
         try {
             static const SharedLibrary* const x11 = new SharedLibrary("libX11.so.6");
-            return x11->function<decltype(::XSetIOErrorHandler)>("XSetIOErrorHandler");
+            return HandlerSetters{
+                x11->function<decltype(::XSetIOErrorHandler)>("XSetIOErrorHandler"),
+                x11->function<decltype(::XSetErrorHandler)>("XSetErrorHandler")};
         } catch (const Error&) {
-            return nullptr;
+            return HandlerSetters{};
         }
     }();
-    return set_handler;
+    return setters;
+}
+
+// A request the server refused (an X protocol error). Xlib's default handler prints it and ends
+// the process; SDL's chains to it. The ones SDL's requests can meet are SDL's own races, and SDL
+// says there is nothing to do about them: its wake-up message goes to the window on a second
+// connection, and reaches the server after the window is destroyed when the viewer closes it at
+// that moment (BadWindow on X_SendEvent, seen ending show with status 1). A window is worth no
+// render: the error is dropped.
+int on_request_refused(Display* /*display*/, XErrorEvent* /*error*/) {
+    return 0;
 }
 
 int on_connection_broken(Display* display) {
@@ -66,16 +82,17 @@ int on_connection_broken(Display* display) {
 }  // namespace
 
 bool watch_x_connection(std::function<void()> on_lost) {
-    const auto set_handler = x11_set_handler();
-    if (set_handler == nullptr) {
+    const HandlerSetters& set = x11_handler_setters();
+    if (set.io == nullptr || set.protocol == nullptr) {
         return false;
     }
     Watch& watch = the_watch();
     const std::lock_guard lock(watch.mutex);
     if (!watch.installed) {
-        watch.previous = set_handler(on_connection_broken);
+        watch.previous = set.io(on_connection_broken);
         watch.installed = true;
     }
+    set.protocol(on_request_refused);  // after SDL_Init, which sets its own each time
     watch.thread = std::this_thread::get_id();
     watch.on_lost = std::move(on_lost);
     return true;

@@ -12,7 +12,8 @@ namespace rt {
 /// Watches the X connection SDL's x11 driver opened, from the thread that calls this (the one
 /// that makes every SDL call). When the connection breaks in a call on that thread, `on_lost` runs
 /// there, once, and the thread then waits for good: its owner must not wait for it to end. A
-/// broken connection on any other thread ends the process as Xlib's default does. False when
+/// broken connection on any other thread ends the process as Xlib's default does. Requests the
+/// server refuses (X protocol errors) are dropped rather than ending the process. False when
 /// libX11 is not loaded (SDL uses another driver): nothing is watched.
 bool watch_x_connection(std::function<void()> on_lost);
 
