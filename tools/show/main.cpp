@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
                 "shows it in a window (keys + and - change the exposure, 0 restores it, Esc or\n"
                 "Enter closes it), prints what it holds, or converts it to PNG, PPM, .gro or\n"
                 ".exr. Without a display, \"show NAME\" prints what --info prints.\n"
-                "Exit codes: 0 ok, 1 bad picture, 2 usage, 3 I/O, 4 internal.",
+                "Exit codes: 0 ok, 1 bad picture (or the window's display went away),\n"
+                "2 usage, 3 I/O, 4 internal.",
                 "show");
             rt::cli::configure(app);
             ShowArgs args;
