@@ -52,8 +52,8 @@ const HandlerSetters& x11_handler_setters() {
 // the process; SDL's chains to it. The ones SDL's requests can meet are SDL's own races, and SDL
 // says there is nothing to do about them: its wake-up message goes to the window on a second
 // connection, and reaches the server after the window is destroyed when the viewer closes it at
-// that moment (BadWindow on X_SendEvent, seen ending show with status 1). A window is worth no
-// render: the error is dropped.
+// that moment (BadWindow on X_SendEvent, seen ending show with status 1). No window is worth
+// ending a render for: the error is dropped.
 int on_request_refused(Display* /*display*/, XErrorEvent* /*error*/) {
     return 0;
 }
