@@ -71,6 +71,41 @@ TEST(CellPackets, OneLanePerFanTriangleAndBoundsInFront) {
     EXPECT_EQ(packets.scale(), 3.0);
 }
 
+// A triangle's lane carries its corners' position indices in the polygon's own loop order, so that
+// its exact test (lane_exact_hit.h) sees the same polygon as Scene::polygon_view; a lane of a
+// larger polygon, and an unused lane, say kNotTriangle and leave the test to the scene.
+TEST(CellPackets, TriangleLanesCarryTheirCornersInLoopOrder) {
+    test::SceneBuilder b;
+    b.add_polygon({{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}});  // 0: a quad, 2 lanes
+    b.add_polygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});             // 1: a triangle
+    b.add_polygon({{1e39, 0, 0}, {1e39, 1, 0}, {1e39, 0, 1}});    // 2: always tested
+    b.add_polygon({{0, 0, 3}, {1, 0, 3}, {0, 1, 3}});             // 3: a triangle
+    Scene scene = std::move(b.scene());
+    // Corners out of step with positions, as a shared-vertex model has them.
+    std::swap(scene.corners[scene.polygons[1].first_corner],
+              scene.corners[scene.polygons[1].first_corner + 2]);
+    const std::vector<std::uint32_t> ids = {0, 1, 2, 3};
+    const CellPackets packets(scene, 1, 0, [&](std::size_t) { return std::span(ids); });
+    const std::span<const CellPacket> cell = packets.cell(0).packets;
+    ASSERT_EQ(cell.size(), 2u);  // 5 lanes, then 3 unused
+    int triangles = 0;
+    for (const CellPacket& packet : cell) {
+        for (int lane = 0; lane < 4; ++lane) {
+            const std::uint32_t id = packet.polygon[lane] & ~kAlwaysTestBit;
+            if (packet.polygon[lane] == kUnusedLane || scene.polygons[id].corner_count != 3) {
+                EXPECT_EQ(packet.position[0][lane], kNotTriangle) << "lane " << lane;
+                continue;
+            }
+            ++triangles;
+            const PolygonView view = scene.polygon_view(id);
+            for (std::uint32_t v = 0; v < 3; ++v) {
+                EXPECT_EQ(packet.position[v][lane], view.corner_ids[v]) << "polygon " << id;
+            }
+        }
+    }
+    EXPECT_EQ(triangles, 3);
+}
+
 // Triangles, quads and pentagons (regular, in random planes) of many sizes, some far off.
 Scene random_polygons(std::mt19937& rng, int count) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);

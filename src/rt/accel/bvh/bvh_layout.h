@@ -41,9 +41,6 @@ static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float) &&
               "BoxRay's plane offsets count on hi following lo");
 static_assert(sizeof(Node) == 128 && sizeof(WideNode) == 256);
 
-/// In TrianglePacket::position, lane not a triangle polygon: the exact test reads the Scene.
-constexpr std::uint32_t kNotTriangle = 0xffffffffu;
-
 /// 208 bytes on a 16-byte boundary: four fan triangles (v0, v_i, v_i+1) of the leaf's polygons;
 /// unused lanes repeat the last triangle, so they add no candidate the exact test would not
 /// already see.
@@ -52,7 +49,7 @@ struct alignas(16) TrianglePacket {
     std::uint32_t polygon[4];  ///< the scene polygon each lane belongs to (| kLastPacketBit)
     /// [vertex][lane]: a triangle polygon's corners as indices into Scene::positions, in its
     /// Scene::corners order, so the exact test need not read Scene::corners; position[0][lane]
-    /// is kNotTriangle for a lane of a polygon of more corners.
+    /// is kNotTriangle (lane_exact_hit.h) for a lane of a polygon of more corners.
     std::uint32_t position[3][4];
 };
 

@@ -15,10 +15,10 @@
 #include <optional>
 
 #include "rt/accel/bvh/bvh.h"
-#include "rt/accel/bvh/leaf_exact_hit.h"
 #include "rt/accel/bvh/packet_setup.h"
 #include "rt/accel/bvh/single_ray_walk.h"
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/core/prefetch.h"
 #include "rt/geometry/ray_polygon.h"
 
@@ -128,15 +128,13 @@ void fill_inactive_lanes(PacketValues& v, std::uint32_t active) {
     }
 }
 
-using bvh::exact_hit;  // leaf_exact_hit.h
-
 // Asks for what the exact tests of a packet's triangles read (the polygon records and the
 // triangles' corners) while the pre-filter runs: they are scattered through the scene, and the
 // exact test otherwise waits for them.
 void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) {
     for (int t = 0; t < 4; ++t) {
         prefetch(&scene.polygons[packet.polygon[t] & ~kLastPacketBit]);
-        if (packet.position[0][t] != bvh::kNotTriangle) {
+        if (packet.position[0][t] != kNotTriangle) {
             for (int c = 0; c < 3; ++c) {
                 prefetch(&scene.positions[packet.position[c][t]]);
             }
@@ -289,8 +287,8 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
                 [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id) {
                     Lane& l = lanes[lane];
                     ++counters.polygon_tests;
-                    const std::optional<double> hit =
-                        exact_hit(l.space(), scene, packet, t, id, l.best().search_interval());
+                    const std::optional<double> hit = lane_exact_hit(
+                        l.space(), scene, packet.position, t, id, l.best().search_interval());
                     if (hit) {
                         l.best().offer(*hit, id);
                     }
@@ -348,7 +346,8 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
                         return;
                     }
                     ++counters.polygon_tests;
-                    if (exact_hit(l.space(), scene, p, t, id, packet.t[lane]).has_value()) {
+                    if (lane_exact_hit(l.space(), scene, p.position, t, id, packet.t[lane])
+                            .has_value()) {
                         open &= ~(1u << lane);
                         leaf_rays &= ~(1u << lane);
                     }

@@ -11,10 +11,10 @@
 
 #include "rt/accel/bvh/box_test.h"
 #include "rt/accel/bvh/bvh.h"
-#include "rt/accel/bvh/leaf_exact_hit.h"
 #include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/bvh/single_ray_walk.h"
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/core/prefetch.h"
 #include "rt/geometry/ray_polygon.h"
 
@@ -33,8 +33,6 @@ struct StackEntry {
     float entry;  ///< where the ray's line enters the child's box, scaled t
 };
 
-using bvh::exact_hit;  // leaf_exact_hit.h
-
 // The nearest hit so far, in brute force's order (hit.h). The ray's exact RaySpace is prepared on
 // the first exact test: most rays never need one.
 class NearestHit {
@@ -52,7 +50,7 @@ public:
         }
         const Interval search = best_.search_interval();
         const std::optional<double> hit =
-            packet != nullptr ? exact_hit(*space_, scene, *packet, lane, id, search)
+            packet != nullptr ? lane_exact_hit(*space_, scene, packet->position, lane, id, search)
                               : intersect_polygon(*space_, scene.polygon_view(id), search);
         if (hit) {
             best_.offer(*hit, id);
@@ -236,8 +234,8 @@ public:
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
                TraceCounters& counters) {
         ++counters.polygon_tests;
-        if (const std::optional<double> hit =
-                exact_hit(space_, scene, *packet, lane, id, best_.search_interval())) {
+        if (const std::optional<double> hit = lane_exact_hit(space_, scene, packet->position, lane,
+                                                             id, best_.search_interval())) {
             best_.offer(*hit, id);
         }
     }
@@ -429,7 +427,7 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         if (!space) {
             space.emplace(ray);
         }
-        return exact_hit(*space, scene_, packet, lane, id, t).has_value();
+        return lane_exact_hit(*space, scene_, packet.position, lane, id, t).has_value();
     };
 #ifdef RT_BVH_AVX2
     if (cpu_has_avx2) {

@@ -1,5 +1,6 @@
 #include "rt/accel/bvh/leaf_packets.h"
 
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/core/prefetch.h"
 
 namespace rt::bvh {

@@ -33,16 +33,20 @@ class PacketWriter {
 public:
     explicit PacketWriter(unsigned char* out) : out_(out) {}
 
-    void add(const Vec3 (&corners)[3], std::uint32_t polygon, double& scale) {
+    /// `triangle`: the polygon's three corner indices if it is a triangle, else null.
+    void add(const Vec3 (&corners)[3], std::uint32_t polygon, const std::uint32_t* triangle,
+             double& scale) {
         if (lane_ == 4) {
             flush();
             std::fill(packet_.polygon, packet_.polygon + 4, kUnusedLane);
+            std::fill(&packet_.position[0][0], &packet_.position[0][0] + 12, kNotTriangle);
             std::fill(&packet_.corner[0][0][0], &packet_.corner[0][0][0] + 36,
                       std::numeric_limits<float>::quiet_NaN());
             lane_ = 0;
         }
         double size = 0.0;
         for (int v = 0; v < 3; ++v) {
+            packet_.position[v][lane_] = triangle != nullptr ? triangle[v] : kNotTriangle;
             for (int a = 0; a < 3; ++a) {
                 const auto f = static_cast<float>(corners[v][a]);
                 packet_.corner[v][a][lane_] = f;
@@ -127,12 +131,14 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
             PacketWriter writer(out);
             for (const std::uint32_t id : ids) {
                 const Polygon& p = scene.polygons[id];
+                const std::uint32_t* triangle =
+                    p.corner_count == 3 ? scene.corners.data() + p.first_corner : nullptr;
                 Vec3 fan[3];
                 fan[0] = scene.corner_position(p, 0);
                 for (std::uint32_t k = 1; k + 1 < p.corner_count; ++k) {
                     fan[1] = scene.corner_position(p, k);
                     fan[2] = scene.corner_position(p, k + 1);
-                    writer.add(fan, id, scale);
+                    writer.add(fan, id, triangle, scale);
                 }
             }
             writer.flush();

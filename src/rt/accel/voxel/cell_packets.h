@@ -20,6 +20,7 @@
 
 #include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/core/prefetch.h"
 #include "rt/scene/scene.h"
 
@@ -29,10 +30,14 @@ namespace rt {
 inline constexpr std::uint32_t kAlwaysTestBit = 0x80000000u;
 /// CellPacket::polygon of an unused lane (the always bit clear).
 inline constexpr std::uint32_t kUnusedLane = 0x7fffffffu;
-/// 160 bytes on a 16-byte boundary: four fan triangles of a voxel's polygons.
+/// 208 bytes on a 16-byte boundary: four fan triangles of a voxel's polygons.
 struct alignas(16) CellPacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest; NaN in unused lanes
     std::uint32_t polygon[4];  ///< the scene polygon of each lane, | kAlwaysTestBit
+    /// [vertex][lane]: a triangle polygon's corners as indices into Scene::positions, in its
+    /// Scene::corners order, for its exact test (lane_exact_hit.h); position[0][lane] is
+    /// kNotTriangle for a lane of a polygon of more corners and for an unused lane.
+    std::uint32_t position[3][4];
 };
 
 /// Bit k set: lane k holds a fan triangle.

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "rt/accel/accelerator.h"
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/accel/voxel/cell_packets.h"
 #include "rt/accel/voxel/cell_pair_test.h"
 #include "rt/accel/voxel/polygon_boxes.h"
@@ -76,10 +77,10 @@ public:
     const LineProbe& line() const { return line_; }
 
 protected:
-    /// Calls test(id) for each polygon of a voxel's packets that passes the sieve, counting the
-    /// test, until test returns true; returns whether one did. The float test rejects four fan
-    /// triangles at a time; a polygon with a lane left is tested once (and, for a lane marked
-    /// "always", or a ray the float test cannot serve, after its box look).
+    /// Calls test(id, packet.position, lane) for each polygon of a voxel's packets that passes
+    /// the sieve, counting the test, until test returns true; returns whether one did. The float
+    /// test rejects four fan triangles at a time; a polygon with a lane left is tested once (and,
+    /// for a lane marked "always", or a ray the float test cannot serve, after its box look).
     template <class Test>
     bool test_packets(std::span<const CellPacket> packets, Test&& test) {
         const FloatRay& ray = triangle_.get();
@@ -144,14 +145,15 @@ private:
     [[gnu::always_inline]] bool test_lanes(const CellPacket& packet, unsigned lanes, Test& test) {
         const bool usable = triangle_.get().usable;
         for (; lanes != 0; lanes &= lanes - 1) {
-            const std::uint32_t word = packet.polygon[__builtin_ctz(lanes)];
+            const int lane = __builtin_ctz(lanes);
+            const std::uint32_t word = packet.polygon[lane];
             const std::uint32_t id = word & ~kAlwaysTestBit;
             const bool needs_box = (word & kAlwaysTestBit) != 0 || !usable;
             if (tested_.seen(id) || (needs_box && !boxes_.line_may_meet(line_, id))) {
                 continue;
             }
             ++counters_.polygon_tests;
-            if (test(id)) {
+            if (test(id, packet.position, lane)) {
                 return true;
             }
         }
@@ -174,9 +176,9 @@ private:
     // The exact test of one polygon, offering its hit. Polygons arrive in voxel order, not id
     // order: the tie rule picks among equal t.
     auto offer_to_nearest() {
-        return [this](std::uint32_t id) {
-            if (const std::optional<double> t = intersect_polygon(space(), scene_.polygon_view(id),
-                                                                  nearest_.search_interval())) {
+        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane) {
+            if (const std::optional<double> t = lane_exact_hit(space(), scene_, position, lane, id,
+                                                               nearest_.search_interval())) {
                 nearest_.offer(*t, id);
             }
             return false;
@@ -198,8 +200,8 @@ public:
 
 private:
     auto hit_within() {
-        return [this](std::uint32_t id) {
-            return intersect_polygon(space(), scene_.polygon_view(id), t_).has_value();
+        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane) {
+            return lane_exact_hit(space(), scene_, position, lane, id, t_).has_value();
         };
     }
 
