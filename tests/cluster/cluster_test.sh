@@ -5,7 +5,8 @@
 #      killed-rank: a rank killed mid-render fails the run and leaves the outputs as they were;
 #      failing-rank: a rank that cannot read the scene is named by rank 0, nothing is written;
 #      other-picture: a rank started with other switches is refused;
-#      other-inputs: a rank that read other scene files (same names, other bytes) is refused.
+#      other-inputs: a rank that read other scene files (same names, other bytes) is refused;
+#      said-once: a bad command line, --help and --version are answered by rank 0 alone.
 set -u
 # Under AddressSanitizer (scripts/build-and-test-sanitized): OpenMPI's plugins, loaded with dlopen
 # and unloaded at MPI_Finalize, and hwloc leave their allocations at exit; the stacks end in
@@ -162,6 +163,20 @@ other-inputs)
     [ "$status" -ne 0 ] || fail "mpirun exited 0 though rank 2 read other files"
     grep -q "^rt: rank 2 read other scene files (inputs fnv1a64:" err.txt ||
         fail "rank 0 does not name rank 2's other files"
+    [ ! -e small.gro ] || fail "a picture was written"
+    ;;
+said-once)
+    "${mpi[@]}" -n 3 "$bin/rt" scenes/small --threads 1 --no-such-switch > out.txt 2> err.txt
+    status=$?
+    cat err.txt
+    [ "$status" -ne 0 ] || fail "mpirun exited 0 on a bad switch"
+    [ "$(grep -c "^rt: unknown switch '--no-such-switch'" err.txt)" -eq 1 ] ||
+        fail "the bad switch is not reported exactly once"
+    "${mpi[@]}" -n 3 "$bin/rt" --version > out.txt 2> err.txt || fail "mpirun rt --version failed"
+    [ "$(grep -c '^rt ' out.txt)" -eq 1 ] || fail "the version is not printed exactly once"
+    "${mpi[@]}" -n 3 "$bin/rt" --help > out.txt 2> err.txt || fail "mpirun rt --help failed"
+    "$bin/rt" --help > single.txt
+    cmp out.txt single.txt || fail "the help under mpirun is not the single process's, once"
     [ ! -e small.gro ] || fail "a picture was written"
     ;;
 *)

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,35 @@ constexpr int kInternal = 4;
 constexpr int kClusterFailure = 5;  // a rank of an MPI job failed or was stopped
 constexpr int kInterrupted = 130;
 
+// Set once the command line has turned out to be one that rank 0 of the same MPI job reports.
+bool quiet_failure = false;
+
 void print_line(const std::string& line) {
-    std::cerr << line << '\n';
+    if (!quiet_failure) {
+        std::cerr << line << '\n';
+    }
+}
+
+// Under mpirun every rank reads the same command line before MPI starts: rank 0 alone reports
+// what is wrong with it, or prints the help, so that a job of 64 ranks says it once
+// (docs/distributed.md). Later failures are a rank's own, and go to rank 0 through MPI.
+bool another_rank_speaks() {
+#ifdef RT_WITH_MPI
+    const std::optional<int> rank = rt::cluster::launcher_rank();
+    return rank.has_value() && *rank != 0;
+#else
+    return false;
+#endif
+}
+
+// The command line, or the exception that says what is wrong with it, said by rank 0 alone.
+rt::Options read_command_line(int argc, char** argv) {
+    try {
+        return rt::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (...) {
+        quiet_failure = another_rank_speaks();
+        throw;
+    }
 }
 
 double steady_seconds() {
@@ -116,18 +144,18 @@ rt::RunConsole make_console(const rt::Options& options, rt::ProgressReport* prog
 }
 
 int run(int argc, char** argv) {
-    const rt::Options options =
-        rt::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
-    if (options.show_usage) {
-        std::cout << rt::usage_text();
-        return kOk;
-    }
-    if (options.show_help) {
-        std::cout << rt::help_text();
-        return kOk;
-    }
-    if (options.show_version) {
-        std::cout << rt::version_text() << '\n';
+    const rt::Options options = read_command_line(argc, argv);
+    if (options.show_usage || options.show_help || options.show_version) {
+        if (another_rank_speaks()) {
+            return kOk;
+        }
+        if (options.show_usage) {
+            std::cout << rt::usage_text();
+        } else if (options.show_help) {
+            std::cout << rt::help_text();
+        } else {
+            std::cout << rt::version_text() << '\n';
+        }
         return kOk;
     }
     rt::install_interrupt_handler();

@@ -1,7 +1,10 @@
 #include "rt/cluster/mpi_world.h"
 
+#include <charconv>
 #include <cstdlib>
+#include <cstring>
 #include <string>
+#include <system_error>
 
 #include "rt/cluster/cluster_error.h"
 #include "rt/cluster/mpi_functions.h"
@@ -32,6 +35,27 @@ bool started_by_mpi_launcher() {
         }
     }
     return false;
+}
+
+std::optional<int> launcher_rank() {
+    if (!started_by_mpi_launcher()) {
+        return std::nullopt;
+    }
+    // OpenMPI's mpirun, PMIx (OpenMPI 5, Slurm) and PMI (MPICH's hydra, Slurm).
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"}) {
+        const char* value = std::getenv(name);  // NOLINT(concurrency-mt-unsafe)
+        if (value == nullptr) {
+            continue;
+        }
+        int rank = -1;
+        const char* end = value + std::strlen(value);
+        const auto [at, error] = std::from_chars(value, end, rank);
+        if (error == std::errc() && at == end && at != value && rank >= 0) {
+            return rank;
+        }
+        return std::nullopt;
+    }
+    return std::nullopt;
 }
 
 MpiWorld::MpiWorld(int& argc, char**& argv) : mpi_(load_mpi()) {

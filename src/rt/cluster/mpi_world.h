@@ -17,6 +17,11 @@ struct MpiFunctions;
 /// so that a plain `rt SCENE` never pays for it.
 bool started_by_mpi_launcher();
 
+/// The rank the launcher gave this process, from its environment, before MPI starts: what a rank
+/// knows while it reads its command line. Nothing outside a launcher, or for a value that is not
+/// a rank.
+std::optional<int> launcher_rank();
+
 class MpiWorld {
 public:
     /// Loads libmpi and starts MPI. Throws ClusterError when libmpi cannot be loaded (naming it)
