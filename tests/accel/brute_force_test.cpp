@@ -40,6 +40,31 @@ TEST(BruteForce, ReturnsTheNearestHitWhateverTheOrder) {
     EXPECT_EQ(counters.polygon_tests, 5u);
 }
 
+// A ray leaving square 0 nearly along it, its origin a rounding below the plane: the exact test
+// gives the square back at a grazing depth beyond the epsilon, unless the ray names the square
+// as the one it leaves (Ray::leaves), which no test then asks about.
+TEST(BruteForce, SkipsThePolygonTheRayLeaves) {
+    const Scene scene = squares_at({0, 2});
+    const BruteForce accel(scene);
+    Ray grazing{{0.25, 0.5, -1e-12}, {1, 0, 1e-9}};
+    constexpr Interval kBeyondEpsilon{1e-9, kBeyondAnyScene};
+    TraceCounters counters;
+    const std::optional<Hit> again = accel.closest_hit(grazing, kBeyondEpsilon, counters);
+    ASSERT_TRUE(again);  // the premise: without leaves, the square it leaves is hit
+    EXPECT_EQ(again->polygon, 0u);
+    EXPECT_TRUE(accel.occluded(grazing, kBeyondEpsilon, counters));
+    grazing.leaves = 0;
+    TraceCounters skipping;
+    EXPECT_FALSE(accel.closest_hit(grazing, kBeyondEpsilon, skipping));
+    EXPECT_EQ(skipping.polygon_tests, 1u);
+    EXPECT_FALSE(accel.occluded(grazing, kBeyondEpsilon, skipping));
+    // The other square is still there for it.
+    const Ray up{{0.25, 0.5, 0.0}, {0, 0, 1}, 0};
+    const std::optional<Hit> above = accel.closest_hit(up, kBeyondEpsilon, skipping);
+    ASSERT_TRUE(above);
+    EXPECT_EQ(above->polygon, 1u);
+}
+
 TEST(BruteForce, RespectsTheOpenInterval) {
     const Scene scene = squares_at({-3, 4, 1, 7.5, -1});
     const BruteForce accel(scene);

@@ -135,6 +135,31 @@ TEST(RaysFromPolygons, EveryMethodGivesBruteForceAnswers) {
     }
 }
 
+TEST(RaysFromPolygons, EveryMethodSkipsThePolygonARayLeaves) {
+    for (const SceneCase& c : scene_cases()) {
+        SCOPED_TRACE(c.name);
+        const std::vector<SurfaceRay> rays = grazing_surface_rays(c.scene, 1500, 43);
+        const BruteForce brute(c.scene);
+        TraceCounters counters;
+        int given_back = 0;  // the premise: without Ray::leaves, the polygon comes back
+        for (const SurfaceRay& r : rays) {
+            Ray plain = r.ray;
+            plain.leaves = kLeavesNoPolygon;
+            const std::optional<Hit> hit = brute.closest_hit(plain, r.t, counters);
+            given_back += hit && hit->polygon == r.from ? 1 : 0;
+        }
+        EXPECT_GT(given_back, 100);
+        const std::vector<Answer> want = answers_of(brute, rays);
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            ASSERT_FALSE(want[i].hit && want[i].hit->polygon == rays[i].from);
+        }
+        for (const Method& m : every_method(c.scene)) {
+            SCOPED_TRACE(m.name);
+            expect_answers(c.scene, *m.make(c.scene), rays, want, m.exact);
+        }
+    }
+}
+
 // Polygons lying in the voxel method's own voxel faces (grid_test_support.h): rays from them
 // start exactly on voxel boundaries, where the walk's first voxel and its near-hit rule are
 // decided by rounding.

@@ -86,7 +86,8 @@ inline Vec3 point_on_edge(const Scene& scene, std::uint32_t id, std::mt19937_64&
 /// from outside the scene's box, aimed at a point of a fan, first hits (origin + t * direction,
 /// as the renderer computes a hit point; `from` is then the polygon hit). Directions: leaving or
 /// entering at random angles (a tenth of them within about a degree of the plane), the mirror of
-/// the eye ray or the eye ray going straight on, or a feeler.
+/// the eye ray or the eye ray going straight on, or a feeler. Half name `from` as the polygon
+/// they leave (Ray::leaves).
 inline std::vector<SurfaceRay> surface_rays(const Scene& scene, int count, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -149,6 +150,39 @@ inline std::vector<SurfaceRay> surface_rays(const Scene& scene, int count, std::
             r.t = Interval{epsilon / distance, 1.0 - epsilon / distance};
             r.kind = SurfaceRayKind::Feeler;
         }
+        // Half of them say which polygon they leave, as the renderer's rays do (Ray::leaves):
+        // every method must skip it as brute force does. The other half test the epsilon alone.
+        if (rays.size() % 8 >= 4) {
+            r.ray.leaves = r.from;
+        }
+        rays.push_back(r);
+    }
+    return rays;
+}
+
+/// Rays leaving a polygon's inside within 1e-8 of edge-on, from a rounding below its plane and
+/// rising through it: the exact test gives many of them their own polygon back, at a grazing depth
+/// beyond the epsilon. Each names that polygon as the one it leaves (Ray::leaves).
+inline std::vector<SurfaceRay> grazing_surface_rays(const Scene& scene, int count,
+                                                    std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<std::uint32_t> polygon(
+        0, static_cast<std::uint32_t>(scene.polygons.size() - 1));
+    const auto [lo, hi] = scene.bounds();
+    const double size = std::max(1.0, length(hi - lo));
+    std::vector<SurfaceRay> rays;
+    while (static_cast<int>(rays.size()) < count) {
+        SurfaceRay r;
+        r.from = polygon(rng);
+        const Vec3 n = scene.polygons[r.from].normal;
+        const Vec3 along = cross(n, random_direction(rng));
+        if (!(length(along) > 0.1)) {
+            continue;
+        }
+        r.ray.origin = point_in_fan(scene, r.from, rng) - n * (1e-12 * size);
+        r.ray.direction = normalize(along) + n * 1e-8;
+        r.ray.leaves = r.from;
+        r.t = Interval{renderer_epsilon(scene), kBeyondAnyScene};
         rays.push_back(r);
     }
     return rays;

@@ -1,5 +1,6 @@
 #include "rt/accel/brute_force.h"
 
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/geometry/ray_polygon.h"
 
 namespace rt {
@@ -12,7 +13,12 @@ std::optional<Hit> BruteForce::closest_hit(const Ray& ray, Interval t,
     }
     std::optional<Hit> nearest;
     const auto count = static_cast<std::uint32_t>(scene_.polygons.size());
+    std::uint32_t tested = 0;
     for (std::uint32_t id = 0; id < count; ++id) {
+        if (leaves_polygon(ray, id)) {
+            continue;
+        }
+        ++tested;
         // The interval shrinks to the nearest hit so far, open at both ends: a later polygon at
         // the same t is not nearer, so ties go to the lowest id.
         if (const std::optional<double> hit =
@@ -21,7 +27,7 @@ std::optional<Hit> BruteForce::closest_hit(const Ray& ray, Interval t,
             t.max = *hit;
         }
     }
-    counters.polygon_tests += count;
+    counters.polygon_tests += tested;
     return nearest;
 }
 
@@ -32,6 +38,9 @@ bool BruteForce::occluded(const Ray& ray, Interval t, TraceCounters& counters) c
     }
     const auto count = static_cast<std::uint32_t>(scene_.polygons.size());
     for (std::uint32_t id = 0; id < count; ++id) {
+        if (leaves_polygon(ray, id)) {
+            continue;
+        }
         ++counters.polygon_tests;
         if (intersect_polygon(space, scene_.polygon_view(id), t)) {
             return true;

@@ -14,6 +14,13 @@
 
 namespace rt {
 
+/// Whether polygon `id` is left out of the ray's exact tests: the polygon it leaves
+/// (Ray::leaves). Every method and brute force ask this before an exact test, and count no test
+/// for it.
+inline bool leaves_polygon(const Ray& ray, std::uint32_t id) {
+    return id == ray.leaves;
+}
+
 /// In a packet's `position[0][lane]`: the lane's polygon is not a triangle (or the lane is
 /// unused), and the exact test reads the Scene.
 inline constexpr std::uint32_t kNotTriangle = 0xffffffffu;

@@ -253,7 +253,8 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
     const bool spread = lobe.diffuse || (distribute && lobe.cone.half_angle > 0.0);
     if (!spread) {
         const bool simple = rays == LobeRays::AxisSimple;
-        return trace({s.position, lobe.axis}, lobe.kind, depth + 1, simple, sample, weight);
+        return trace({s.position, lobe.axis, s.polygon}, lobe.kind, depth + 1, simple, sample,
+                     weight);
     }
     const SamplingSettings& sampling = settings_.sampling;
     const std::uint32_t total = distribute ? ray_strata_.size() : 1;
@@ -275,8 +276,8 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
         return keep_on_side(direction, s.facing_normal, lobe.outside);
     };
     const auto take = [&](std::uint32_t k) {
-        const Rgb value =
-            trace({s.position, direction_of(k)}, lobe.kind, depth + 1, true, sample, weight);
+        const Rgb value = trace({s.position, direction_of(k), s.polygon}, lobe.kind, depth + 1,
+                                true, sample, weight);
         ++sample.tree.distributed_rays;
         return SeenSample<SurfaceSeen>{value, sample.last_seen};
     };
@@ -294,7 +295,8 @@ bool RayTracer::rim_sees(const Lobe& lobe, const ConeSampler& cone, const Surfac
         Vec3 direction = cone(1.0, quarter / 4.0);  // u1 = 1: rim
         direction = keep_on_side(direction, s.facing_normal, lobe.outside);
         ++sample.tree.probes;
-        if (!(first_surface({s.position, direction}, RayStart::Elsewhere, full, sample) == seen)) {
+        if (!(first_surface({s.position, direction, s.polygon}, RayStart::Elsewhere, full,
+                            sample) == seen)) {
             return false;
         }
     }

@@ -53,8 +53,8 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
     if (s.front || settings.both_sides_emit) {
         result += s.color * a.emission;
     }
-    const FeelerContext feeler{context.scene, context.accel, settings, context.epsilon,
-                               context.stream};
+    const FeelerContext feeler{context.scene,   context.accel,  settings,
+                               context.epsilon, context.stream, s.polygon};
     for (const PointLight& light : context.lights) {
         if (light.polygon == s.polygon) {
             continue;  // an emitter does not light itself

@@ -23,7 +23,7 @@ Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const V
     if (!(distance > context.epsilon)) {
         return {};
     }
-    const Ray feeler{from, span};
+    const Ray feeler{from, span, context.leaves};
     Interval along{context.epsilon / distance, 1.0 - context.epsilon / distance};
     Rgb filter{1.0, 1.0, 1.0};
     for (int layer = 0; layer <= kMaxTransparentLayers; ++layer) {

@@ -15,8 +15,10 @@ struct FeelerContext {
     const Scene& scene;
     const Accelerator& accel;
     const ShadingSettings& settings;
-    double epsilon;        ///< hits nearer `from` than this are the surface itself
-    SampleStream* stream;  ///< for -F; may be null when -F is off
+    double epsilon = 0.0;            ///< hits nearer `from` than this are the surface itself
+    SampleStream* stream = nullptr;  ///< for -F; may be null when -F is off
+    /// The polygon the feelers start on (Ray::leaves), which they never meet.
+    std::uint32_t leaves = kLeavesNoPolygon;
 };
 
 /// The light from `light` arriving at `from`: its intensity, attenuated with distance (unless

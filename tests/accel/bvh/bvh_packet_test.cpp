@@ -207,6 +207,10 @@ TEST(BvhPackets, RaysStartingOnPolygons) {
     for (const test::SurfaceRay& r : test::surface_rays(sphere, 2000, 21)) {
         queries.push_back({r.ray, r.t});
     }
+    // And rays that the polygon they leave would take back if the packet lanes did not skip it.
+    for (const test::SurfaceRay& r : test::grazing_surface_rays(sphere, 1000, 22)) {
+        queries.push_back({r.ray, r.t});
+    }
     expect_both_ways(sphere, Bvh(sphere), queries);
 }
 

@@ -286,6 +286,9 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
                 tree.packets, scene, child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id) {
                     Lane& l = lanes[lane];
+                    if (leaves_polygon(l.ray(), id)) {
+                        return;
+                    }
                     ++counters.polygon_tests;
                     const std::optional<double> hit = lane_exact_hit(
                         l.space(), scene, packet.position, t, id, l.best().search_interval());
@@ -342,7 +345,7 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
                 tree.packets, scene, e.child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& p, int t, std::uint32_t id) {
                     Lane& l = lanes[lane];
-                    if ((open >> lane & 1u) == 0) {
+                    if ((open >> lane & 1u) == 0 || leaves_polygon(l.ray(), id)) {
                         return;
                     }
                     ++counters.polygon_tests;
@@ -389,6 +392,9 @@ void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
             continue;
         }
         for (const std::uint32_t id : unbounded_) {
+            if (leaves_polygon(l.ray(), id)) {
+                continue;
+            }
             ++counters.polygon_tests;
             if (const std::optional<double> hit = intersect_polygon(
                     l.space(), scene_.polygon_view(id), l.best().search_interval())) {

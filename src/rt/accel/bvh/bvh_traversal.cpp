@@ -44,6 +44,9 @@ public:
     /// With `packet` (may be null) the lane of `id` in it.
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
                TraceCounters& counters) {
+        if (leaves_polygon(ray_, id)) {
+            return;  // before the RaySpace: often the only polygon a ray leaving a surface meets
+        }
         ++counters.polygon_tests;
         if (!space_) {
             space_.emplace(ray_);
@@ -233,6 +236,9 @@ public:
         : space_(space), best_(best) {}
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
                TraceCounters& counters) {
+        if (leaves_polygon(space_.ray(), id)) {
+            return;
+        }
         ++counters.polygon_tests;
         if (const std::optional<double> hit = lane_exact_hit(space_, scene, packet->position, lane,
                                                              id, best_.search_interval())) {
@@ -397,6 +403,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     const FloatRay fray(ray, tree_.scale);
     std::optional<RaySpace> space;  // prepared on the first exact test, as in closest_hit
     const auto blocks = [&](std::uint32_t id) {
+        if (leaves_polygon(ray, id)) {
+            return false;
+        }
         ++counters.polygon_tests;
         if (!space) {
             space.emplace(ray);
@@ -423,6 +432,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         return false;
     }
     const auto blocks_lane = [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
+        if (leaves_polygon(ray, id)) {
+            return false;
+        }
         ++counters.polygon_tests;
         if (!space) {
             space.emplace(ray);

@@ -149,7 +149,8 @@ private:
             const std::uint32_t word = packet.polygon[lane];
             const std::uint32_t id = word & ~kAlwaysTestBit;
             const bool needs_box = (word & kAlwaysTestBit) != 0 || !usable;
-            if (tested_.seen(id) || (needs_box && !boxes_.line_may_meet(line_, id))) {
+            if (leaves_polygon(ray_, id) || tested_.seen(id) ||
+                (needs_box && !boxes_.line_may_meet(line_, id))) {
                 continue;
             }
             ++counters_.polygon_tests;

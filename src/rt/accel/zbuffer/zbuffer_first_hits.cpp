@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "rt/accel/lane_exact_hit.h"
 #include "rt/geometry/ray_polygon.h"
 
 #include <fmt/format.h>
@@ -50,6 +51,9 @@ std::optional<Hit> ZBufferFirstHits::eye_ray_closest_hit(const Ray& ray, Interva
             break;
         }
         const std::uint32_t id = buffer_.polygon(rank);
+        if (leaves_polygon(ray, id)) {
+            continue;
+        }
         ++counters.polygon_tests;
         // The same t brute force computes: the interval only decides whether it counts.
         if (const std::optional<double> hit =
