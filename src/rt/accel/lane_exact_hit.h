@@ -3,7 +3,10 @@
 // Scene::positions, so its positions are read at once (alongside the polygon's normal) instead
 // of after the polygon's record and then its corner list, two dependent reads that miss the cache
 // on big meshes. The same PolygonView Scene::polygon_view gives, so the same arithmetic and the
-// same answer; other polygons are read from the scene.
+// same answer; other polygons are read from the scene. Also the one rule every method and brute
+// force apply before any exact test: a ray skips the polygon it leaves (leaves_polygon), asked
+// at each call site before the ray's RaySpace is made, so a ray whose only candidate is that
+// polygon never makes one.
 #pragma once
 
 #include <cstdint>
