@@ -475,7 +475,7 @@ std::vector<PictureRow> debugging_rows() {
          {},
          {},
          {},
-         "exit culling check (-de): 0 culled rays"},
+         "culled rays re-traced, 0 hit something"},
         {"-p",
          {"-p"},
          "gallery",

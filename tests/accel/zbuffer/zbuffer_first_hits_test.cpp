@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "accel/accel_test_scenes.h"
+#include "accel/viewed_scenes.h"
 
 namespace rt::test {
 namespace {
@@ -45,31 +46,6 @@ private:
     BruteForce brute_;
 };
 
-struct CameraCase {
-    std::string name;
-    Vec3 eye;
-    Vec3 look;
-    double screen_distance = 1.0;
-    double angle_x = 40.0;
-    double angle_y = 30.0;
-    int width = 48;
-    int height = 36;
-};
-
-void set_view(Scene& scene, const CameraCase& c) {
-    scene.view.eye = c.eye;
-    scene.view.look = c.look;
-    scene.view.screen_distance = c.screen_distance;
-    scene.view.view_angle_x_degrees = c.angle_x;
-    scene.view.view_angle_y_degrees = c.angle_y;
-    scene.view.width = c.width;
-    scene.view.height = c.height;
-}
-
-// Sample positions within a pixel: its corner, edge midpoints, centre, and points a hair inside
-// the far edges.
-constexpr double kOffsets[] = {0.0, 0.5, 1e-12, 1.0 - 1e-12};
-
 // Compares every sample of every pixel (and the view area's far edges) with brute force.
 void expect_brute_force_answers(const Scene& scene, int step = 1) {
     const Camera view = scene.view.camera();
@@ -79,90 +55,33 @@ void expect_brute_force_answers(const Scene& scene, int step = 1) {
     ASSERT_TRUE(zbuffer->statistics().active) << zbuffer->statistics().inactive_reason;
     TraceCounters counters;
     int hits = 0;
-    for (int y = 0; y <= view.height; y += step) {
-        for (int x = 0; x <= view.width; x += step) {
-            for (const double dx : kOffsets) {
-                for (const double dy : kOffsets) {
-                    const double px = std::min(x + dx, static_cast<double>(view.width));
-                    const double py = std::min(y + dy, static_cast<double>(view.height));
-                    const Ray ray = view.primary_ray(px, py);
-                    for (const Interval t : {Interval{1e-9, kBeyondAnyScene}, Interval{0.0, 7.5}}) {
-                        const std::optional<Hit> expected = brute.closest_hit(ray, t, counters);
-                        const std::optional<Hit> got =
-                            zbuffer->eye_ray_closest_hit(ray, t, counters);
-                        ASSERT_EQ(expected.has_value(), got.has_value()) << px << ", " << py;
-                        if (expected) {
-                            ++hits;
-                            ASSERT_EQ(expected->t, got->t) << px << ", " << py;
-                            ASSERT_EQ(expected->polygon, got->polygon) << px << ", " << py;
-                        }
-                        ASSERT_EQ(brute.occluded(ray, t, counters),
-                                  zbuffer->occluded(ray, t, counters));
-                    }
-                }
+    for_each_view_sample(view, step, [&](double px, double py) {
+        const Ray ray = view.primary_ray(px, py);
+        for (const Interval t : {Interval{1e-9, kBeyondAnyScene}, Interval{0.0, 7.5}}) {
+            const std::optional<Hit> expected = brute.closest_hit(ray, t, counters);
+            const std::optional<Hit> got = zbuffer->eye_ray_closest_hit(ray, t, counters);
+            ASSERT_EQ(expected.has_value(), got.has_value()) << px << ", " << py;
+            if (expected) {
+                ++hits;
+                ASSERT_EQ(expected->t, got->t) << px << ", " << py;
+                ASSERT_EQ(expected->polygon, got->polygon) << px << ", " << py;
             }
+            ASSERT_EQ(brute.occluded(ray, t, counters), zbuffer->occluded(ray, t, counters));
         }
-    }
+    });
     EXPECT_EQ(fallback.calls, 0) << "every eye ray should be answered by the item buffer";
     EXPECT_GT(hits, 0) << "the test would prove nothing";
 }
 
-TEST(ZBufferFirstHits, TwocubesAsTheManualViewsIt) {
-    const Scene scene = load_twocubes();
-    expect_brute_force_answers(scene, 5);
+class ZBufferViewedScenes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ZBufferViewedScenes, EveryEyeRayAsBruteForce) {
+    const ViewedScene viewed = viewed_scene(GetParam());
+    expect_brute_force_answers(viewed.scene, viewed.step);
 }
 
-TEST(ZBufferFirstHits, TwocubesFromCloseByAndWide) {
-    Scene scene = load_twocubes();
-    for (const CameraCase& c :
-         {CameraCase{"close", {3, 1, -6}, {0, 0, 0}, 2.0, 90.0, 70.0},
-          CameraCase{"down", {0.5, 30, 0.5}, {0.5, 0, 0.5}, 5.0, 60.0, 60.0},
-          CameraCase{"straight down", {0, 30, 0}, {0, 0, 0}, 5.0, 60.0, 60.0},
-          CameraCase{"very wide", {1, 0, -4}, {0, 0, 0}, 0.5, 170.0, 160.0},
-          CameraCase{"on the floor", {-1, -3, -9}, {0, -3, 0}, 1.0, 60.0, 40.0}}) {
-        SCOPED_TRACE(c.name);
-        set_view(scene, c);
-        expect_brute_force_answers(scene);
-    }
-}
-
-TEST(ZBufferFirstHits, EyeInsideABoxAndPolygonsCrossingTheScreen) {
-    Scene scene = make_boxes(13, 12);
-    // The eye inside the first box, with a screen distance that cuts through its walls.
-    const Polygon& wall = scene.polygons[1];
-    Vec3 lo = scene.corner_position(wall, 0);
-    Vec3 hi = lo;
-    for (std::uint32_t k = 0; k < 24; ++k) {
-        const Polygon& p = scene.polygons[1 + k / 4];
-        lo = min_components(lo, scene.corner_position(p, k % 4));
-        hi = max_components(hi, scene.corner_position(p, k % 4));
-    }
-    const Vec3 centre = (lo + hi) * 0.5;
-    for (const double screen : {0.05, 0.4, 1.5}) {
-        SCOPED_TRACE(screen);
-        set_view(scene, {"inside", centre, centre + Vec3{1, 0.2, 0.3}, screen, 100.0, 80.0});
-        expect_brute_force_answers(scene);
-    }
-}
-
-TEST(ZBufferFirstHits, InsideASphereAndInASoup) {
-    Scene sphere = make_sphere({0, 0, 0}, 3.0, 10, 16, true);
-    set_view(sphere, {"inside", {0.5, 0.2, -1}, {0, 0, 1}, 0.7, 120.0, 100.0});
-    expect_brute_force_answers(sphere);
-    Scene soup = make_soup(17, 200);
-    set_view(soup, {"amid", {0, 0, 0}, {1, 2, 3}, 1.0, 70.0, 50.0});
-    expect_brute_force_answers(soup);
-    Scene warped = make_soup(18, 100, true);
-    set_view(warped, {"amid warped", {0.5, 0, 0}, {1, -2, 3}, 3.0, 70.0, 50.0});
-    expect_brute_force_answers(warped);
-}
-
-TEST(ZBufferFirstHits, EyeInThePlaneOfAPolygon) {
-    // Seen exactly edge-on, the floor's reported hits come from the grazing branch.
-    Scene scene = make_boxes(19, 4);
-    set_view(scene, {"floor level", {-25, 0, -25}, {0, 0, 0}, 1.0, 60.0, 40.0});
-    expect_brute_force_answers(scene);
-}
+INSTANTIATE_TEST_SUITE_P(Views, ZBufferViewedScenes, ::testing::ValuesIn(viewed_scene_names()),
+                         [](const auto& param_info) { return param_info.param; });
 
 TEST(ZBufferFirstHits, OtherRaysGoToTheFallback) {
     const Scene scene = load_twocubes();

@@ -25,6 +25,17 @@ ExitCullingTable timed_table(const Scene& scene, const ExitCullingSettings& sett
     return table;
 }
 
+EyeCoverage timed_coverage(const Scene& scene, const ExitCullingTable& table,
+                           const ExitCullingSettings& settings, double& seconds) {
+    if (!settings.eye_coverage) {
+        return {};
+    }
+    const auto start = std::chrono::steady_clock::now();
+    EyeCoverage coverage(scene.view.camera(), scene.bounds(), table.cells());
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return coverage;
+}
+
 }  // namespace
 
 int default_exit_culling_resolution(std::size_t polygon_count) {
@@ -36,6 +47,7 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
                          const ExitCullingSettings& settings)
     : wrapped_(std::move(wrapped)),
       table_(timed_table(scene, settings, build_seconds_)),
+      eye_(timed_coverage(scene, table_, settings, build_seconds_)),
       check_culled_(settings.check_culled),
       name_("exit culling over " + std::string(wrapped_->name())) {}
 
@@ -44,14 +56,28 @@ std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
     if (!culls(ray, t)) {
         return wrapped_->closest_hit(ray, t, counters);
     }
-    ++counters.culled_exits;
-    if (check_culled_) {
-        TraceCounters ignored;
-        std::optional<Hit> truth = wrapped_->closest_hit(ray, t, ignored);
-        record_if_violated(ray, truth.has_value());
-        return truth;  // a wrong cull is reported, but the picture stays right
+    return culled_closest_hit(ray, t, false, counters);
+}
+
+std::optional<Hit> ExitCulling::eye_ray_closest_hit(const Ray& ray, Interval t,
+                                                    TraceCounters& counters) const {
+    if (!culls_eye_ray(ray, t)) {
+        return wrapped_->eye_ray_closest_hit(ray, t, counters);
     }
-    return std::nullopt;
+    return culled_closest_hit(ray, t, true, counters);
+}
+
+std::optional<Hit> ExitCulling::culled_closest_hit(const Ray& ray, Interval t, bool eye_ray,
+                                                   TraceCounters& counters) const {
+    ++counters.culled_exits;
+    if (!check_culled_) {
+        return std::nullopt;
+    }
+    TraceCounters ignored;
+    std::optional<Hit> truth = eye_ray ? wrapped_->eye_ray_closest_hit(ray, t, ignored)
+                                       : wrapped_->closest_hit(ray, t, ignored);
+    record_if_violated(ray, truth.has_value());
+    return truth;  // a wrong cull is reported, but the picture stays right
 }
 
 bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
@@ -68,42 +94,55 @@ bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) 
     return false;
 }
 
-std::uint32_t ExitCulling::culled_lanes(const RayPacket& packet) const {
+void ExitCulling::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                     TraceCounters& counters) const {
+    packet_closest_hit(packet, hits, false, counters);
+}
+
+void ExitCulling::eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                             TraceCounters& counters) const {
+    packet_closest_hit(packet, hits, true, counters);
+}
+
+std::uint32_t ExitCulling::culled_lanes(const RayPacket& packet, bool eye_rays) const {
     std::uint32_t culled = 0;
     for (std::uint32_t a = packet.active & kAllLanes; a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
-        culled |= culls(packet.rays[lane], packet.t[lane]) ? 1u << lane : 0u;
+        const Ray& ray = packet.rays[lane];
+        const Interval t = packet.t[lane];
+        culled |= (eye_rays ? culls_eye_ray(ray, t) : culls(ray, t)) ? 1u << lane : 0u;
     }
     return culled;
 }
 
-void ExitCulling::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+void ExitCulling::packet_closest_hit(const RayPacket& packet, PacketHits& hits, bool eye_rays,
                                      TraceCounters& counters) const {
-    const std::uint32_t culled = culled_lanes(packet);
+    const auto pass_on = [&](const RayPacket& lanes) {
+        if (eye_rays) {
+            wrapped_->eye_ray_closest_hit_packet(lanes, hits, counters);
+        } else {
+            wrapped_->closest_hit_packet(lanes, hits, counters);
+        }
+    };
+    const std::uint32_t culled = culled_lanes(packet, eye_rays);
     const std::uint32_t passed = packet.active & kAllLanes & ~culled;
     if (culled == 0) {
-        wrapped_->closest_hit_packet(packet, hits, counters);
+        pass_on(packet);
         return;
     }
     if (passed != 0) {
         RayPacket rest = packet;
         rest.active = passed;
-        wrapped_->closest_hit_packet(rest, hits, counters);
+        pass_on(rest);
     }
-    counters.culled_exits += static_cast<std::uint64_t>(std::popcount(culled));
     for (std::uint32_t a = culled; a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
-        hits[lane] = std::nullopt;
-        if (check_culled_) {  // as closest_hit checks it, one ray at a time
-            TraceCounters ignored;
-            hits[lane] = wrapped_->closest_hit(packet.rays[lane], packet.t[lane], ignored);
-            record_if_violated(packet.rays[lane], hits[lane].has_value());
-        }
+        hits[lane] = culled_closest_hit(packet.rays[lane], packet.t[lane], eye_rays, counters);
     }
 }
 
 std::uint32_t ExitCulling::occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
-    const std::uint32_t culled = culled_lanes(packet);
+    const std::uint32_t culled = culled_lanes(packet, false);
     const std::uint32_t passed = packet.active & kAllLanes & ~culled;
     if (culled == 0) {
         return wrapped_->occluded_packet(packet, counters);
@@ -138,7 +177,7 @@ void ExitCulling::record_if_violated(const Ray& ray, bool violated) const {
 }
 
 std::size_t ExitCulling::memory_bytes() const {
-    return table_.memory_bytes() + wrapped_->memory_bytes();
+    return table_.memory_bytes() + eye_.memory_bytes() + wrapped_->memory_bytes();
 }
 
 ExitCullingStatistics ExitCulling::statistics() const {
@@ -150,6 +189,11 @@ ExitCullingStatistics ExitCulling::statistics() const {
     s.empty_fraction = table_.empty_fraction();
     s.memory_bytes = table_.memory_bytes();
     s.build_seconds = build_seconds_;
+    s.eye_coverage = eye_.active();
+    s.eye_inactive_reason = eye_.inactive_reason();
+    s.pixels = eye_.pixels();
+    s.covered_pixels = eye_.covered_pixels();
+    s.eye_memory_bytes = eye_.memory_bytes();
     s.checking = check_culled_;
     s.checked = checked_.load();
     s.violations = violations_.load();
@@ -165,6 +209,16 @@ std::vector<std::string> describe(const ExitCullingStatistics& s) {
         "{} bytes, built in {:.3f} ms",
         s.grid_resolution, s.occupied_cells, s.bins_per_side, s.bins_per_side,
         100.0 * s.empty_fraction, s.memory_bytes, 1e3 * s.build_seconds));
+    if (s.eye_coverage) {
+        const double share =
+            s.pixels > 0 ? static_cast<double>(s.covered_pixels) / static_cast<double>(s.pixels)
+                         : 0.0;
+        lines.push_back(
+            fmt::format("exit culling of eye rays: {} of {} pixels covered ({:.1f}%), {} bytes",
+                        s.covered_pixels, s.pixels, 100.0 * share, s.eye_memory_bytes));
+    } else if (!s.eye_inactive_reason.empty()) {
+        lines.push_back("exit culling of eye rays by the table: " + s.eye_inactive_reason);
+    }
     if (s.checking) {
         lines.push_back(
             fmt::format("exit culling check (-de): {} culled rays re-traced, {} hit "

@@ -3,7 +3,9 @@
 // TraceCounters::culled_exits; every other ray goes to the wrapped accelerator. The table is
 // conservative, so the picture never changes; -de re-traces every culled ray to prove it.
 // A packet is tested lane by lane against the table, and its lanes that are not culled go on as
-// one packet, so that the wrapped method's packet walk (the BVH's) still serves them.
+// one packet, so that the wrapped method's packet walk (the BVH's) still serves them. Eye rays
+// (Accelerator::eye_ray_closest_hit) are culled by the pixels the scene covers instead
+// (eye_coverage.h), and only go to the table when they are not eye rays of the scene's view.
 #pragma once
 
 #include <atomic>
@@ -15,6 +17,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/exit_culling/exit_culling_table.h"
+#include "rt/accel/exit_culling/eye_coverage.h"
 
 namespace rt {
 
@@ -23,6 +26,7 @@ struct ExitCullingSettings {
     int bins_per_side = 8;      ///< direction bins along each edge of a cube face (1..16)
     bool check_culled = false;  ///< -de: trace every culled ray with the wrapped accelerator too
     int build_threads = 0;      ///< 0: one a core for a large scene (parallel_parts.h)
+    bool eye_coverage = true;   ///< cull eye rays by the pixels the scene covers (eye_coverage.h)
 };
 
 /// What -p prints for exit culling. The number of culled rays is TraceCounters::culled_exits.
@@ -34,6 +38,11 @@ struct ExitCullingStatistics {
     double empty_fraction = 0.0;     ///< share of (cell, bin) entries saying "nothing ahead"
     std::size_t memory_bytes = 0;    ///< the table alone
     double build_seconds = 0.0;
+    bool eye_coverage = false;          ///< whether eye rays are culled by the pixels covered
+    std::string eye_inactive_reason;    ///< why not, when not
+    std::size_t pixels = 0;             ///< of the view
+    std::size_t covered_pixels = 0;     ///< through which an eye ray may hit something
+    std::size_t eye_memory_bytes = 0;   ///< the coverage alone
     bool checking = false;              ///< -de
     std::uint64_t checked = 0;          ///< -de: culled rays re-traced
     std::uint64_t violations = 0;       ///< -de: culled rays that did hit something
@@ -45,7 +54,8 @@ std::vector<std::string> describe(const ExitCullingStatistics& statistics);
 
 class ExitCulling : public Accelerator {
 public:
-    /// Builds the table for the scene, which must outlive this, as must `wrapped`'s scene.
+    /// Builds the table for the scene, which must outlive this, as must `wrapped`'s scene, and
+    /// the eye rays' coverage for the scene's view.
     ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrapped,
                 const ExitCullingSettings& settings = {});
 
@@ -53,11 +63,17 @@ public:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t,
                                    TraceCounters& counters) const override;
     bool occluded(const Ray& ray, Interval t, TraceCounters& counters) const override;
+    /// Culled by the coverage when the ray is an eye ray of the scene's view, else as
+    /// closest_hit; one not culled goes on as an eye ray.
+    std::optional<Hit> eye_ray_closest_hit(const Ray& ray, Interval t,
+                                           TraceCounters& counters) const override;
     /// Each lane as closest_hit answers it: the culled lanes here (counted as closest_hit counts
-    /// them), the others in one packet to the wrapped accelerator. Eye-ray packets come here too,
-    /// as eye rays do, through Accelerator::eye_ray_closest_hit_packet.
+    /// them), the others in one packet to the wrapped accelerator.
     void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
                             TraceCounters& counters) const override;
+    /// The same, each lane as eye_ray_closest_hit answers it.
+    void eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,
+                                    TraceCounters& counters) const override;
     /// Each lane as occluded answers it, the lanes not culled in one packet.
     std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
     /// The table plus the wrapped accelerator.
@@ -72,14 +88,34 @@ private:
     bool culls(const Ray& ray, Interval t) const {
         return !table_.starts_in_full_cell(ray.origin) && table_.nothing_ahead(ray, t);
     }
-    /// The active lanes of the packet that the table culls.
-    std::uint32_t culled_lanes(const RayPacket& packet) const;
+    /// Whether the coverage, or for a ray that is not an eye ray of the view the table, says the
+    /// ray can hit nothing.
+    bool culls_eye_ray(const Ray& ray, Interval t) const {
+        switch (eye_.verdict(ray, t)) {
+            case EyeCoverage::Verdict::MayHit:
+                return false;
+            case EyeCoverage::Verdict::HitsNothing:
+                return true;
+            case EyeCoverage::Verdict::NotAnEyeRay:
+                break;
+        }
+        return culls(ray, t);
+    }
+    /// The answer for a culled ray: none, or under -de the wrapped accelerator's, checked.
+    std::optional<Hit> culled_closest_hit(const Ray& ray, Interval t, bool eye_ray,
+                                          TraceCounters& counters) const;
+    /// The active lanes of the packet that the table (or for eye rays the coverage) culls.
+    std::uint32_t culled_lanes(const RayPacket& packet, bool eye_rays) const;
+    /// closest_hit_packet and eye_ray_closest_hit_packet.
+    void packet_closest_hit(const RayPacket& packet, PacketHits& hits, bool eye_rays,
+                            TraceCounters& counters) const;
     /// -de: whether the wrapped accelerator finds a hit on a culled ray; records it if so.
     void record_if_violated(const Ray& ray, bool violated) const;
 
     std::unique_ptr<Accelerator> wrapped_;
     double build_seconds_ = 0.0;  ///< set while table_ is built, so declared before it
     ExitCullingTable table_;
+    EyeCoverage eye_;
     bool check_culled_;
     std::string name_;
     mutable std::atomic<std::uint64_t> checked_{0};

@@ -40,6 +40,8 @@ public:
         return inside && full_[static_cast<std::size_t>(cells_.cell_of(origin))] != 0;
     }
 
+    /// Where hit points can be: the cells, and in each the box of every reach meeting it.
+    const OccupiedCells& cells() const { return cells_; }
     int resolution() const { return cells_.resolution(); }
     int bins_per_side() const { return bins_.side(); }
     std::size_t occupied_cells() const { return cells_.occupied_count(); }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rt/accel/hit_regions/eye_view.h"
 #include "rt/geometry/camera.h"
 #include "rt/scene/scene.h"
 
@@ -37,12 +38,12 @@ public:
     const std::string& inactive_reason() const { return inactive_reason_; }
 
     /// The pixel of a ray that starts on the screen and whose line passes through the eye (both
-    /// within rounding), inside the view area; none for any other ray.
-    std::optional<EyeRayPixel> pixel_of(const Ray& ray) const;
+    /// within rounding), inside the view area, for t.min >= 0; none for any other ray.
+    std::optional<EyeRayPixel> pixel_of(const Ray& ray, Interval t) const;
 
     /// The candidates of a pixel, as ranks: nearest first.
     std::span<const std::uint32_t> candidates(int x, int y) const {
-        const std::size_t pixel = static_cast<std::size_t>(y) * view_.width + x;
+        const std::size_t pixel = static_cast<std::size_t>(y) * view().width + x;
         return {entries_.data() + offsets_[pixel], entries_.data() + offsets_[pixel + 1]};
     }
     std::uint32_t polygon(std::uint32_t rank) const { return ranked_polygons_[rank]; }
@@ -52,24 +53,16 @@ public:
     std::size_t entries() const { return entries_.size(); }
     std::size_t polygons_in_view() const { return ranked_polygons_.size(); }
     std::size_t longest_list() const;
-    double pixel_margin() const { return pixel_margin_; }
+    double pixel_margin() const { return eye_.pixel_margin(); }
     std::size_t memory_bytes() const;
 
 private:
-    struct Footprint {
-        int x0, y0, x1, y1;  ///< inclusive pixel range; x0 > x1 when off the view area
-    };
-    Footprint footprint(const Scene& scene, std::uint32_t id, double& nearest) const;
-    Footprint pixels_of(const std::vector<Vec3>& points) const;
+    const Camera& view() const { return eye_.camera(); }
+    PixelFootprint footprint(const Scene& scene, std::uint32_t id, double& nearest) const;
     bool fits(std::size_t polygons, std::uint64_t entries);
-    void fill(const std::vector<Footprint>& footprints);
+    void fill(const std::vector<PixelFootprint>& footprints);
 
-    Camera view_;
-    double near_depth_ = 0.0;       ///< polygons' parts nearer than this are never seen
-    double angle_tolerance_ = 0.0;  ///< how far off the eye an eye ray's line may pass, as an angle
-    double eye_slack_ = 0.0;        ///< ... and as a distance
-    double pixel_margin_ = 0.0;     ///< footprints are widened by this many pixels
-    double rounding_ = 0.0;         ///< for polygon_reach()
+    EyeView eye_;
     std::size_t max_bytes_ = 0;
     bool active_ = true;
     std::string inactive_reason_;

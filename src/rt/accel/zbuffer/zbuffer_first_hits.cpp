@@ -37,7 +37,7 @@ ZBufferFirstHits::ZBufferFirstHits(const Scene& scene, const Camera& view,
 
 std::optional<Hit> ZBufferFirstHits::eye_ray_closest_hit(const Ray& ray, Interval t,
                                                          TraceCounters& counters) const {
-    const std::optional<EyeRayPixel> pixel = t.min >= 0.0 ? buffer_.pixel_of(ray) : std::nullopt;
+    const std::optional<EyeRayPixel> pixel = buffer_.pixel_of(ray, t);
     const RaySpace space(ray);
     if (!pixel || !space.valid()) {
         return fallback_.eye_ray_closest_hit(ray, t, counters);
