@@ -13,6 +13,7 @@
 #include "rt/sampling/directions.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -239,6 +240,25 @@ TEST(Directions, ReusedSamplersGiveFreshSamplersDirections) {
                     reused_diffuse.z == fresh_diffuse.z)
             << k;
         EXPECT_GE(dot(reused, axis), std::cos(cone.half_angle) - 1e-12);
+    }
+}
+
+// The adaptive rule's rim probes take the rim from rim(): the same directions, bit for bit, as
+// the sampler gives for u1 = 1 at the four quarters, for narrow, wide and flat cones and any axis.
+TEST(Directions, RimIsTheSamplersOwnRim) {
+    SampleStream stream(11, 0, 0, 0);
+    for (int k = 0; k < 200; ++k) {
+        const Vec3 axis = normalize(Vec3{stream.uniform() - 0.5, stream.uniform() - 0.5,
+                                         k == 0 ? 0.0 : stream.uniform() - 0.5});
+        const CosPowerCone cone{(k % 90) * kDegree, 0.5 * (k % 60)};
+        const ConeSampler sampler(cone, axis);
+        const std::array<Vec3, 4> rim = sampler.rim();
+        for (int q = 0; q < 4; ++q) {
+            const Vec3 expected = sampler(1.0, q / 4.0);
+            const Vec3& got = rim[static_cast<std::size_t>(q)];
+            ASSERT_TRUE(got.x == expected.x && got.y == expected.y && got.z == expected.z)
+                << k << " " << q;
+        }
     }
 }
 

@@ -291,9 +291,8 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
 bool RayTracer::rim_sees(const Lobe& lobe, const ConeSampler& cone, const SurfacePoint& s,
                          const SurfaceSeen& seen, SampleContext& sample) const {
     const bool full = settings_.sampling.illuminate_distributed;  // as for the lobe's own rays
-    for (int quarter = 0; quarter < 4; ++quarter) {
-        Vec3 direction = cone(1.0, quarter / 4.0);  // u1 = 1: rim
-        direction = keep_on_side(direction, s.facing_normal, lobe.outside);
+    for (const Vec3& on_rim : cone.rim()) {
+        const Vec3 direction = keep_on_side(on_rim, s.facing_normal, lobe.outside);
         ++sample.tree.probes;
         if (!(first_surface({s.position, direction, s.polygon}, RayStart::Elsewhere, full,
                             sample) == seen)) {

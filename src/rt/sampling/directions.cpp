@@ -1,6 +1,7 @@
 #include "rt/sampling/directions.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -16,11 +17,28 @@ double edge_power(const CosPowerCone& cone) {
 }
 
 Vec3 around(const Vec3& axis, const Vec3& tangent, const Vec3& bitangent, double cos_theta,
-            double phi) {
+            double cos_phi, double sin_phi) {
     const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-    return tangent * (sin_theta * std::cos(phi)) + bitangent * (sin_theta * std::sin(phi)) +
-           axis * cos_theta;
+    return tangent * (sin_theta * cos_phi) + bitangent * (sin_theta * sin_phi) + axis * cos_theta;
 }
+
+Vec3 around(const Vec3& axis, const Vec3& tangent, const Vec3& bitangent, double cos_theta,
+            double phi) {
+    return around(axis, tangent, bitangent, cos_theta, std::cos(phi), std::sin(phi));
+}
+
+// The angles of the rim's four quarters, as operator() computes them for u2 = q / 4.
+struct QuarterAngles {
+    std::array<double, 4> cosine;
+    std::array<double, 4> sine;
+    QuarterAngles() : cosine(), sine() {
+        for (int q = 0; q < 4; ++q) {
+            const double phi = 2.0 * std::numbers::pi * (q / 4.0);
+            cosine[static_cast<std::size_t>(q)] = std::cos(phi);
+            sine[static_cast<std::size_t>(q)] = std::sin(phi);
+        }
+    }
+};
 
 }  // namespace
 
@@ -46,6 +64,17 @@ ConeSampler::ConeSampler(const CosPowerCone& cone, const Vec3& axis)
 Vec3 ConeSampler::operator()(double u1, double u2) const {
     const double cos_theta = std::pow(1.0 - u1 * below_edge_, inverse_power_);
     return around(axis_, tangent_, bitangent_, cos_theta, 2.0 * std::numbers::pi * u2);
+}
+
+std::array<Vec3, 4> ConeSampler::rim() const {
+    static const QuarterAngles quarters;
+    const double cos_theta = std::pow(1.0 - below_edge_, inverse_power_);  // u1 = 1
+    std::array<Vec3, 4> directions;
+    for (std::size_t q = 0; q < 4; ++q) {
+        directions[q] =
+            around(axis_, tangent_, bitangent_, cos_theta, quarters.cosine[q], quarters.sine[q]);
+    }
+    return directions;
 }
 
 double mean_cosine(const CosPowerCone& cone) {

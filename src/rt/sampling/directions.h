@@ -3,6 +3,8 @@
 // according to a cosine to the power n law".
 #pragma once
 
+#include <array>
+
 #include "rt/core/vec3.h"
 
 namespace rt {
@@ -29,6 +31,10 @@ class ConeSampler {
 public:
     ConeSampler(const CosPowerCone& cone, const Vec3& axis);
     Vec3 operator()(double u1, double u2) const;
+    /// The four directions on the cone's rim, operator()(1.0, q / 4.0) for q = 0..3 bit for
+    /// bit, with one power for the four and the quarters' sines and cosines kept (the adaptive
+    /// rule probes them for every lobe it may stop early).
+    std::array<Vec3, 4> rim() const;
 
 private:
     Vec3 axis_;
