@@ -12,6 +12,7 @@
 
 #include "rt/geometry/camera.h"
 #include "rt/render/ray_tracer.h"
+#include "rt/render/row_bands.h"
 #include "rt/sampling/adaptive_mean.h"
 #include "rt/sampling/chi_square.h"
 #include "rt/sampling/sample_stream.h"
@@ -31,7 +32,8 @@ struct RenderJob {
     const ProgressiveStrata pixel_strata;
     RenderObserver& observer;
     Film& film;
-    std::atomic<int> next_row_index{0};  // rows are handed out bottom first
+    std::atomic<int> next_row_index{0};  // rows are handed out bottom first, in bands
+    int threads = 1;
     std::atomic<bool> stopping{false};
     std::atomic<std::uint64_t> unrepresentable_samples{0};
     std::mutex observer_mutex;   // guards the observer, finished and rows_done
@@ -286,6 +288,7 @@ void render_rows(RenderJob& job, KindCounters& counters) {
         memo.emplace(job.scene.view.width);
     }
     FirstEyeRays first(job);
+    RowBand band;
     while (!job.stopping) {
         int y = 0;
         if (job.settings.rows != nullptr) {
@@ -295,11 +298,13 @@ void render_rows(RenderJob& job, KindCounters& counters) {
             }
             y = *row;
         } else {
-            const int index = job.next_row_index++;
-            if (index >= w.height()) {
-                return;
+            if (band.empty()) {
+                band = claim_row_band(job.next_row_index, w.height(), job.threads);
+                if (band.empty()) {
+                    return;
+                }
             }
-            y = w.bottom - index;
+            y = w.bottom - band.first++;
         }
         std::uint64_t samples = 0;
         for (int x = w.left; x <= w.right && !job.stop_now(); ++x) {
@@ -366,6 +371,7 @@ Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& 
         take_finished_rows(job, *settings.resume);
     }
     const int n = thread_count(settings.threads, settings.window.height());
+    job.threads = n;
     std::vector<KindCounters> counters(static_cast<std::size_t>(n));
     std::vector<std::thread> workers;
     for (int i = 1; i < n; ++i) {
