@@ -76,7 +76,7 @@ public:
                                     TraceCounters& counters) const override;
     /// Each lane as occluded answers it, the lanes not culled in one packet.
     std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
-    /// The table plus the wrapped accelerator.
+    /// The table, the eye rays' coverage and the wrapped accelerator.
     std::size_t memory_bytes() const override;
 
     const Accelerator& wrapped() const { return *wrapped_; }
@@ -113,7 +113,7 @@ private:
     void record_if_violated(const Ray& ray, bool violated) const;
 
     std::unique_ptr<Accelerator> wrapped_;
-    double build_seconds_ = 0.0;  ///< set while table_ is built, so declared before it
+    double build_seconds_ = 0.0;  ///< set while table_ and eye_ are built: declared before
     ExitCullingTable table_;
     EyeCoverage eye_;
     bool check_culled_;
