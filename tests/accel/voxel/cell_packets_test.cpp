@@ -177,6 +177,40 @@ TEST(CellPackets, NeverRejectAPolygonTheExactTestHits) {
     EXPECT_GT(rejected, 500000) << "the float test rejects almost nothing";
 }
 
+// A lane the float test cannot judge (its corners beyond the float range) is a candidate for
+// every ray, in the four-wide test and in the pair test, whichever lane it lands in.
+TEST(CellPackets, AlwaysLanesAreCandidatesForEveryRay) {
+    test::SceneBuilder b;
+    for (int k = 0; k < 8; ++k) {
+        const double x = k % 3 == 1 ? 1e39 : static_cast<double>(k);
+        b.add_polygon({{x, 0, 0}, {x, 1, 0}, {x, 0, 1}});  // 1, 4 and 7 beyond float
+    }
+    const Scene scene = std::move(b.scene());
+    const std::vector<std::uint32_t> ids = {0, 1, 2, 3, 4, 5, 6, 7};
+    const CellPackets packets(scene, 1, 0, [&](std::size_t) { return std::span(ids); });
+    const std::span<const CellPacket> cell = packets.cell(0).packets;
+    ASSERT_EQ(cell.size(), 2u);
+    for (const CellPacket& packet : cell) {
+        unsigned expected = 0;
+        for (unsigned lane = 0; lane < 4; ++lane) {
+            expected |= (packet.polygon[lane] & kAlwaysTestBit) != 0 ? 1u << lane : 0u;
+        }
+        EXPECT_EQ(always_lanes(packet), expected);
+    }
+    EXPECT_EQ(always_lanes(cell[0]) | (always_lanes(cell[1]) << 4), 0b10010010u);
+    // A ray that meets none of the finite triangles keeps exactly the always lanes.
+    const Ray away{{0.5, 0.25, 0.25}, {0, -1, 0}};
+    const FloatRay float_ray(away, packets.scale());
+    ASSERT_TRUE(float_ray.usable);
+    EXPECT_EQ(static_cast<unsigned>(cell_packet_candidates(cell[0], float_ray)), 0b0010u);
+    EXPECT_EQ(static_cast<unsigned>(cell_packet_candidates(cell[1], float_ray)), 0b1001u);
+#ifdef RT_VOXEL_AVX2
+    if (cpu_has_avx2_for_cells()) {
+        EXPECT_EQ(cell_pair_candidates(cell.data(), float_ray), 0b10010010u);
+    }
+#endif
+}
+
 #ifdef RT_VOXEL_AVX2
 TEST(CellPackets, PairTestAgreesWithTheFourWideTestLaneForLane) {
     if (!cpu_has_avx2_for_cells()) {

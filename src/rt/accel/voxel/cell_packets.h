@@ -18,6 +18,10 @@
 #include <span>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/accel/lane_exact_hit.h"
@@ -49,14 +53,26 @@ inline unsigned used_lanes(const CellPacket& packet) {
     return lanes;
 }
 
+/// Bit k set: lane k is marked "always". The mark is each id's sign bit, so with SSE2 one load
+/// and one sign mask find the four (a loop over the lanes was a sixth of the voxel tests' time).
+inline unsigned always_lanes(const CellPacket& packet) {
+    static_assert(kAlwaysTestBit == 0x80000000u, "the always mark is the sign bit");
+#if defined(__SSE2__)
+    const __m128i ids = _mm_load_si128(reinterpret_cast<const __m128i*>(packet.polygon));
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(ids)));
+#else
+    unsigned always = 0;
+    for (unsigned lane = 0; lane < 4; ++lane) {
+        always |= (packet.polygon[lane] & kAlwaysTestBit) != 0 ? 1u << lane : 0u;
+    }
+    return always;
+#endif
+}
+
 /// Bit k set: lane k's triangle may be hit by the ray (usable), or lane k is marked "always".
 // Lane for lane the operations of triangle_candidate (float_prefilter/triangle_prefilter.h).
 inline int cell_packet_candidates(const CellPacket& packet, const FloatRay& ray) {
-    int always = 0;
-    for (int lane = 0; lane < 4; ++lane) {
-        always |= (packet.polygon[lane] & kAlwaysTestBit) != 0 ? 1 << lane : 0;
-    }
-    return bvh::fan_candidates(packet.corner, ray) | always;
+    return bvh::fan_candidates(packet.corner, ray) | static_cast<int>(always_lanes(packet));
 }
 
 /// A voxel's packets, and its bounds (voxel_bounds.h) where the structure has them.

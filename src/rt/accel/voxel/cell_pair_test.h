@@ -16,10 +16,7 @@ bool cpu_has_avx2_for_cells();
 /// cell_packet_candidates of packet[0] (bits 0-3) and packet[1] (bits 4-7).
 __attribute__((target("avx2"))) inline unsigned cell_pair_candidates(const CellPacket* packet,
                                                                      const FloatRay& ray) {
-    unsigned always = 0;
-    for (unsigned lane = 0; lane < 8; ++lane) {
-        always |= (packet[lane / 4].polygon[lane % 4] & kAlwaysTestBit) != 0 ? 1u << lane : 0u;
-    }
+    const unsigned always = always_lanes(packet[0]) | (always_lanes(packet[1]) << 4);
     return bvh::fan_pair_candidates(packet[0].corner, packet[1].corner, ray) | always;
 }
 
