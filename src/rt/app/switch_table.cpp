@@ -226,7 +226,8 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A) { o.accel.exit_culling = false; },
      .summary = "disable exit ray culling",
      .details = "Exit-ray culling ends at once the rays that cannot hit anything: a table of world "
-                "regions and direction bins, built before rendering, says where nothing lies ahead "
+                "regions and direction bins, built before rendering, says where nothing lies ahead, "
+                "and for eye rays a bitmap of the pixels the scene covers "
                 "(docs/exit-culling-and-zbuffer.md). It never changes the picture. -De turns it "
                 "off, e.g. when the table takes too long to build.", .section = "App.",
      .example = "-De"},
