@@ -255,13 +255,23 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     std::uniform_int_distribution<int> exponent(-60, 60);
     int checked = 0;
+    int same_axes_packets = 0;
     for (int round = 0; round < 500; ++round) {
         RayPacket packet;
         packet.active = 0xffu;
         for (int lane = 0; lane < kPacketSize; ++lane) {
             const double scale = std::ldexp(1.0, exponent(random));
             Vec3 d{unit(random) * scale, unit(random) * scale, unit(random) * scale};
-            if (lane == 1) {
+            // Most rounds mix the lanes' largest axes; one in four gives every lane the same one
+            // (x, y or z in turn), as coherent packets have, so same_axes is asked both ways.
+            if (round % 4 == 1) {
+                d.x *= 4.0;
+            } else if (round % 4 == 2) {
+                d.y *= 4.0;
+            } else if (round % 4 == 3 && round % 8 == 3) {
+                d.z *= 4.0;
+            }
+            if (lane == 1 && round % 4 != 2) {
                 d.y = 0.0;  // an axis-parallel component: the inverse is clamped
             }
             packet.rays[lane] = {Vec3{unit(random), unit(random), unit(random)} * 100.0, d};
@@ -276,6 +286,8 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
         const double scene_scale = std::ldexp(1.0, exponent(random) / 3);
         bvh::PacketValues v;
         const std::uint32_t lanes = bvh::set_up_packet(packet, scene_scale, v);
+        int first_kz = -1;
+        bool same_axes = true;
         for (int lane = 0; lane < kPacketSize; ++lane) {
             const FloatRay f(packet.rays[lane], scene_scale);
             ASSERT_EQ(f.usable, ((lanes >> lane) & 1u) != 0) << "lane " << lane;
@@ -283,6 +295,8 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
                 continue;
             }
             ++checked;
+            first_kz = first_kz < 0 ? f.kz : first_kz;
+            same_axes = same_axes && f.kz == first_kz;
             // The lane's FloatRay, as a lane that goes on alone takes it (packet_setup.h).
             const FloatRay g = bvh::lane_float_ray(v, lane);
             EXPECT_TRUE(g.usable);
@@ -302,8 +316,12 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
             EXPECT_EQ(f.scaled_down(packet.t[lane].min), v.t_min[lane]);
             EXPECT_EQ(f.scaled_up(packet.t[lane].max), v.t_max[lane]);
         }
+        EXPECT_EQ(same_axes, v.same_axes) << "round " << round;
+        same_axes_packets += same_axes ? 1 : 0;
     }
     EXPECT_GT(checked, 3500);
+    EXPECT_GT(same_axes_packets, 50);  // 82 with this seed
+    EXPECT_LT(same_axes_packets, 450);
 }
 
 TEST(BvhPackets, TheFallbackLoopsOverSingleRays) {

@@ -79,10 +79,50 @@ __attribute__((target("avx2"))) inline __m256d pick(__m256d first, __m256d a, __
     return _mm256_blendv_pd(_mm256_blendv_pd(c, b, second), a, first);
 }
 
+// The four lanes' kx, ky and kz as set_up_four's masks pick kz (z0: x, z1: y, neither: z), and
+// kx, ky after it, (kz + 1) % 3 and (kz + 2) % 3: in 64-bit lanes, stored as four ints each.
+__attribute__((target("avx2"))) void store_axes(__m256d z0, __m256d z1, int first,
+                                                PacketValues& v) {
+    // The masks are -1 or 0 and never both -1: kz = 2 + 2 z0 + z1.
+    const __m256i m0 = _mm256_castpd_si256(z0);
+    const __m256i m1 = _mm256_castpd_si256(z1);
+    const __m256i two = _mm256_set1_epi64x(2);
+    const __m256i one = _mm256_set1_epi64x(1);
+    const __m256i three = _mm256_set1_epi64x(3);
+    const __m256i kz = _mm256_add_epi64(two, _mm256_add_epi64(_mm256_add_epi64(m0, m0), m1));
+    // Adding 1, then taking 3 off where that made 3.
+    const auto next = [&](__m256i k) {
+        const __m256i up = _mm256_add_epi64(k, one);
+        return _mm256_sub_epi64(up, _mm256_and_si256(_mm256_cmpeq_epi64(up, three), three));
+    };
+    const __m256i kx = next(kz);
+    const __m256i ky = next(kx);
+    const __m256i low_words = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    const auto store = [&](int* out, __m256i k) {
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + first),
+                         _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(k, low_words)));
+    };
+    store(v.kz, kz);
+    store(v.kx, kx);
+    store(v.ky, ky);
+}
+
+// The four lanes' t.min and t.max: two loads of two Intervals each, regrouped.
+__attribute__((target("avx2"))) void load_intervals(const Interval* t, __m256d& t_min,
+                                                    __m256d& t_max) {
+    static_assert(sizeof(Interval) == 2 * sizeof(double));
+    const __m256d a = _mm256_loadu_pd(&t[0].min);  // min0 max0 min1 max1
+    const __m256d b = _mm256_loadu_pd(&t[2].min);  // min2 max2 min3 max3
+    t_min = _mm256_permute4x64_pd(_mm256_unpacklo_pd(a, b), 0xd8);
+    t_max = _mm256_permute4x64_pd(_mm256_unpackhi_pd(a, b), 0xd8);
+}
+
 // Four lanes, starting at `first`, of FloatRay's values; returns the lanes (bits) that are
-// usable and of ordinary exponent.
+// usable and of ordinary exponent, and in `x_axis` and `y_axis` those whose kz is 0 and 1.
 __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packet, int first,
-                                                          double scene_scale, PacketValues& v) {
+                                                          double scene_scale, PacketValues& v,
+                                                          std::uint32_t& x_axis,
+                                                          std::uint32_t& y_axis) {
     const Ray* r = packet.rays.data() + first;
     __m256d o[3];
     __m256d d[3];
@@ -160,18 +200,12 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
     const __m256d scaled_y = pick(z0, scaled[2], z1, scaled[0], scaled[1]);
     _mm_storeu_ps(v.shear_x + first, _mm256_cvtpd_ps(_mm256_mul_pd(scaled_x, inverse_z)));
     _mm_storeu_ps(v.shear_y + first, _mm256_cvtpd_ps(_mm256_mul_pd(scaled_y, inverse_z)));
-    const int zero_bits = _mm256_movemask_pd(z0);
-    const int one_bits = _mm256_movemask_pd(z1);
-    for (int i = 0; i < 4; ++i) {
-        const int kz = ((zero_bits >> i) & 1) != 0 ? 0 : ((one_bits >> i) & 1) != 0 ? 1 : 2;
-        v.kz[first + i] = kz;
-        v.kx[first + i] = (kz + 1) % 3;
-        v.ky[first + i] = (kz + 2) % 3;
-    }
-    const __m256d t_min = _mm256_setr_pd(packet.t[first].min, packet.t[first + 1].min,
-                                         packet.t[first + 2].min, packet.t[first + 3].min);
-    const __m256d t_max = _mm256_setr_pd(packet.t[first].max, packet.t[first + 1].max,
-                                         packet.t[first + 2].max, packet.t[first + 3].max);
+    store_axes(z0, z1, first, v);
+    x_axis = static_cast<std::uint32_t>(_mm256_movemask_pd(z0)) << first;
+    y_axis = static_cast<std::uint32_t>(_mm256_movemask_pd(z1)) << first;
+    __m256d t_min;
+    __m256d t_max;
+    load_intervals(packet.t.data() + first, t_min, t_max);
     _mm_storeu_ps(v.t_min + first, scaled_t(t_min, scale_t, true));
     _mm_storeu_ps(v.t_max + first, scaled_t(t_max, scale_t, false));
     return lanes << first;
@@ -181,17 +215,19 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
 
 __attribute__((target("avx2"))) std::uint32_t set_up_packet(const RayPacket& packet,
                                                             double scene_scale, PacketValues& v) {
-    const std::uint32_t lanes =
-        (set_up_four(packet, 0, scene_scale, v) | set_up_four(packet, 4, scene_scale, v)) &
-        packet.active & 0xffu;
-    // Every set-up lane in the same axes: compare each with the first.
-    v.same_axes = true;
-    if (lanes != 0) {
-        const int common = v.kz[std::countr_zero(lanes)];
-        for (std::uint32_t a = lanes; a != 0; a &= a - 1) {
-            v.same_axes = v.same_axes && v.kz[std::countr_zero(a)] == common;
-        }
-    }
+    std::uint32_t x_low = 0;
+    std::uint32_t y_low = 0;
+    std::uint32_t x_high = 0;
+    std::uint32_t y_high = 0;
+    const std::uint32_t lanes = (set_up_four(packet, 0, scene_scale, v, x_low, y_low) |
+                                 set_up_four(packet, 4, scene_scale, v, x_high, y_high)) &
+                                packet.active & 0xffu;
+    // Every set-up lane in the same axes: kz is 0 for all or none of them, and 1 for all or none.
+    const auto all_or_none = [lanes](std::uint32_t bits) {
+        const std::uint32_t in = bits & lanes;
+        return in == 0 || in == lanes;
+    };
+    v.same_axes = all_or_none(x_low | x_high) && all_or_none(y_low | y_high);
     return lanes;
 }
 
