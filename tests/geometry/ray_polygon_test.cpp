@@ -2,6 +2,7 @@
 // corners; rays parallel to or in the polygon's plane; invalid rays; the open interval.
 #include "rt/geometry/ray_polygon.h"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -312,6 +313,45 @@ TEST(RaySpace, ProjectsTheRayToTheOrigin) {
         // A point off the line projects off the origin.
         space.project(ray.origin + cross(ray.direction, Vec3{1, 2, 3}), x, y);
         EXPECT_GT(std::hypot(x, y), 1e-9);
+    }
+}
+
+// The exact test projects corners with the axes fixed when compiled; every bit must be
+// project()'s, or neighbouring polygons tested by different paths could disagree on an edge.
+TEST(RaySpace, ProjectingWithFixedAxesGivesTheSameBits) {
+    std::mt19937_64 random(10);
+    std::uniform_real_distribution<double> any(-10.0, 10.0);
+    std::uniform_int_distribution<int> exponent(-30, 30);
+    int by_axis[3] = {0, 0, 0};
+    for (int i = 0; i < 3000; ++i) {
+        const double scale = std::ldexp(1.0, exponent(random));
+        const RaySpace space(Ray{{any(random), any(random), any(random)},
+                                 {any(random) * scale, any(random) * scale, any(random)}});
+        ASSERT_TRUE(space.valid());
+        ++by_axis[space.dropped_axis()];
+        for (int c = 0; c < 4; ++c) {
+            const Vec3 corner{any(random) * scale, any(random), any(random) / scale};
+            double x = 0.0;
+            double y = 0.0;
+            space.project(corner, x, y);
+            double fx = 1.0;
+            double fy = 1.0;
+            switch (space.dropped_axis()) {
+                case 0:
+                    space.project_dropping<0>(corner, fx, fy);
+                    break;
+                case 1:
+                    space.project_dropping<1>(corner, fx, fy);
+                    break;
+                default:
+                    space.project_dropping<2>(corner, fx, fy);
+            }
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(x), std::bit_cast<std::uint64_t>(fx));
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(y), std::bit_cast<std::uint64_t>(fy));
+        }
+    }
+    for (const int n : by_axis) {
+        EXPECT_GT(n, 300);
     }
 }
 

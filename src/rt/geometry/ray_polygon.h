@@ -34,6 +34,20 @@ public:
     /// The corner's 2D position seen along the ray (the ray itself is at 0,0). The same arithmetic
     /// for every corner, so a corner shared by neighbouring polygons gets the same bits in each.
     void project(const Vec3& corner, double& x, double& y) const;
+    /// The axis the direction is largest along (0, 1 or 2): the one project() drops.
+    int dropped_axis() const { return kz_; }
+    /// project() for a ray whose dropped_axis() is Kz: the same operations on the same values,
+    /// with the axes known when compiled (the exact test calls it once a corner).
+    template <int Kz>
+    void project_dropping(const Vec3& corner, double& x, double& y) const {
+        constexpr int kX = (Kz + 1) % 3;
+        constexpr int kY = (kX + 1) % 3;
+        const Vec3 a = corner - ray_.origin;
+        const double along_x = shear_x_ * component<Kz>(a);
+        const double along_y = shear_y_ * component<Kz>(a);
+        x = component<kX>(a) - along_x;
+        y = component<kY>(a) - along_y;
+    }
     /// |dot(unit normal, direction)| at or below which a polygon counts as seen edge-on.
     double grazing_limit() const { return grazing_limit_; }
     /// The direction's length and the unit vector along it, computed without overflow or
@@ -43,6 +57,17 @@ public:
     Vec3 unit_direction() const { return scaled_direction_ / scaled_length_; }
 
 private:
+    template <int K>
+    static double component(const Vec3& v) {
+        if constexpr (K == 0) {
+            return v.x;
+        } else if constexpr (K == 1) {
+            return v.y;
+        } else {
+            return v.z;
+        }
+    }
+
     Ray ray_;
     int kx_ = 0;
     int ky_ = 1;
