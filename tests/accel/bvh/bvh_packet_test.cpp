@@ -284,7 +284,7 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
         packet.t[4] = Interval{-kBeyondAnyScene, kBeyondAnyScene};
         packet.t[5] = Interval{1e-9, std::nextafter(1.0, 0.0)};  // as shadow feelers
         const double scene_scale = std::ldexp(1.0, exponent(random) / 3);
-        bvh::PacketValues v;
+        bvh::PacketValues v{};
         const std::uint32_t lanes = bvh::set_up_packet(packet, scene_scale, v);
         int first_kz = -1;
         bool same_axes = true;
