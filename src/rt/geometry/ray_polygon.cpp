@@ -251,12 +251,16 @@ RaySpace::RaySpace(const Ray& ray) : ray_(ray) {
 }
 
 void RaySpace::project(const Vec3& corner, double& x, double& y) const {
-    const Vec3 a = corner - ray_.origin;
-    // Separate statements: nothing for a compiler to fuse into a multiply-add.
-    const double along_x = shear_x_ * a[kz_];
-    const double along_y = shear_y_ * a[kz_];
-    x = a[kx_] - along_x;
-    y = a[ky_] - along_y;
+    switch (kz_) {
+        case 0:
+            project_dropping<0>(corner, x, y);
+            break;
+        case 1:
+            project_dropping<1>(corner, x, y);
+            break;
+        default:
+            project_dropping<2>(corner, x, y);
+    }
 }
 
 int edge_sign(double xa, double ya, double xb, double yb) {

@@ -36,13 +36,14 @@ public:
     void project(const Vec3& corner, double& x, double& y) const;
     /// The axis the direction is largest along (0, 1 or 2): the one project() drops.
     int dropped_axis() const { return kz_; }
-    /// project() for a ray whose dropped_axis() is Kz: the same operations on the same values,
-    /// with the axes known when compiled (the exact test calls it once a corner).
+    /// project() for a ray whose dropped_axis() is Kz, with the axes known when compiled: the
+    /// exact test calls it once a corner, and project() is this for the ray's own kz.
     template <int Kz>
     void project_dropping(const Vec3& corner, double& x, double& y) const {
         constexpr int kX = (Kz + 1) % 3;
         constexpr int kY = (kX + 1) % 3;
         const Vec3 a = corner - ray_.origin;
+        // Separate statements: nothing for a compiler to fuse into a multiply-add.
         const double along_x = shear_x_ * component<Kz>(a);
         const double along_y = shear_y_ * component<Kz>(a);
         x = component<kX>(a) - along_x;
