@@ -12,10 +12,15 @@
 namespace rt::bvh {
 
 /// A FloatRay's box-test values, each repeated in four lanes once per ray rather than per node.
+/// A plane p's t is p * inverse - offset, two operations: the origin's product with the inverse
+/// and the margin are folded into the offsets once a ray (float_ray.cpp, part 2, argues the
+/// bound).
 struct BoxRay {
-    simd::Float4 origin[3]{};
     simd::Float4 inverse[3]{};
-    simd::Float4 margin[3]{};
+    /// origin * inverse + margin: subtracted from a near plane's product, so the entry is early.
+    simd::Float4 near_offset[3]{};
+    /// origin * inverse - margin: subtracted from a far plane's product, so the exit is late.
+    simd::Float4 far_offset[3]{};
     /// Where, from Node::lo[0] (or WideNode::lo[0], in pairs of four), the planes the ray enters
     /// (leaves) through on each axis are: lo[k] for a positive direction component, hi[k] for a
     /// negative one. Node stores lo[3][4] then hi[3][4].
@@ -25,9 +30,11 @@ struct BoxRay {
     explicit BoxRay(const FloatRay& ray) {
         using simd::Float4;
         for (int k = 0; k < 3; ++k) {
-            origin[k] = Float4::broadcast(ray.origin[k]);
             inverse[k] = Float4::broadcast(ray.inverse[k]);
-            margin[k] = Float4::broadcast(ray.slab_margin[k]);
+            const Float4 product = Float4::broadcast(ray.origin[k]) * inverse[k];
+            const Float4 margin = Float4::broadcast(ray.slab_margin[k]);
+            near_offset[k] = product + margin;
+            far_offset[k] = product - margin;
             const bool positive = !std::signbit(ray.inverse[k]);  // never 0: see FloatRay
             near_plane[k] = positive ? 4 * k : 12 + 4 * k;
             far_plane[k] = positive ? 12 + 4 * k : 4 * k;
@@ -51,17 +58,23 @@ inline void test_wide_boxes_sse2(const WideNode& node, const BoxRay& ray, simd::
     out.mask = 0;
     for (int half = 0; half < 2; ++half) {
         const float* base = node.lo[0] + std::ptrdiff_t{4} * half;
-        Float4 entry = Float4::broadcast(-HUGE_VALF);
-        Float4 exit = Float4::broadcast(HUGE_VALF);
-        for (int k = 0; k < 3; ++k) {
-            // Offsets chosen once per ray: no branch on the direction's signs here.
-            const Float4 near_side =
-                Float4::load(base + std::ptrdiff_t{2} * ray.near_plane[k]) - ray.origin[k];
-            const Float4 far_side =
-                Float4::load(base + std::ptrdiff_t{2} * ray.far_plane[k]) - ray.origin[k];
-            // max/min keep their second operand when the first is NaN: entry and exit never are.
-            entry = max(near_side * ray.inverse[k] - ray.margin[k], entry);
-            exit = min(far_side * ray.inverse[k] + ray.margin[k], exit);
+        // Offsets chosen once per ray: no branch on the direction's signs here.
+        const auto near_t = [&](int k) {
+            return Float4::load(base + std::ptrdiff_t{2} * ray.near_plane[k]) * ray.inverse[k] -
+                   ray.near_offset[k];
+        };
+        const auto far_t = [&](int k) {
+            return Float4::load(base + std::ptrdiff_t{2} * ray.far_plane[k]) * ray.inverse[k] -
+                   ray.far_offset[k];
+        };
+        // None of these is ever NaN: a plane is finite or an empty slot's infinity, the origin
+        // finite, the inverse finite and nonzero (FloatRay). So the first axis's values can start
+        // entry and exit, where max(x, -inf) and min(x, +inf) would only give them back.
+        Float4 entry = near_t(0);
+        Float4 exit = far_t(0);
+        for (int k = 1; k < 3; ++k) {
+            entry = max(near_t(k), entry);
+            exit = min(far_t(k), exit);
         }
         const Float4 slack = Float4::broadcast(kRelativeSlack);
         entry = entry - abs(entry) * slack;

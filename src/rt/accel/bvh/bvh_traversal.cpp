@@ -186,19 +186,28 @@ void order_pair(StackEntry& a, StackEntry& b) {
 __attribute__((target("avx2"))) void test_wide_boxes_avx2(const bvh::WideNode& node,
                                                           const bvh::BoxRay& ray, float t_min,
                                                           float t_max, bvh::WideHits& out) {
-    __m256 entry = _mm256_set1_ps(-HUGE_VALF);
-    __m256 exit = _mm256_set1_ps(HUGE_VALF);
     const float* base = node.lo[0];
-    for (int k = 0; k < 3; ++k) {
-        const __m256 origin = _mm256_set1_ps(_mm_cvtss_f32(ray.origin[k].v));
+    const auto planes = [&](int k, __m256& near_t, __m256& far_t) {
         const __m256 inverse = _mm256_set1_ps(_mm_cvtss_f32(ray.inverse[k].v));
-        const __m256 margin = _mm256_set1_ps(_mm_cvtss_f32(ray.margin[k].v));
-        const __m256 near_side =
-            _mm256_sub_ps(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.near_plane[k]), origin);
-        const __m256 far_side =
-            _mm256_sub_ps(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.far_plane[k]), origin);
-        entry = _mm256_max_ps(_mm256_sub_ps(_mm256_mul_ps(near_side, inverse), margin), entry);
-        exit = _mm256_min_ps(_mm256_add_ps(_mm256_mul_ps(far_side, inverse), margin), exit);
+        const __m256 near_offset = _mm256_set1_ps(_mm_cvtss_f32(ray.near_offset[k].v));
+        const __m256 far_offset = _mm256_set1_ps(_mm_cvtss_f32(ray.far_offset[k].v));
+        near_t = _mm256_sub_ps(
+            _mm256_mul_ps(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.near_plane[k]), inverse),
+            near_offset);
+        far_t = _mm256_sub_ps(
+            _mm256_mul_ps(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.far_plane[k]), inverse),
+            far_offset);
+    };
+    // The first axis's values start entry and exit, as in the SSE2 form (box_test.h).
+    __m256 entry;
+    __m256 exit;
+    planes(0, entry, exit);
+    for (int k = 1; k < 3; ++k) {
+        __m256 near_t;
+        __m256 far_t;
+        planes(k, near_t, far_t);
+        entry = _mm256_max_ps(near_t, entry);
+        exit = _mm256_min_ps(far_t, exit);
     }
     const __m256 slack = _mm256_set1_ps(kRelativeSlack);
     const __m256 sign = _mm256_set1_ps(-0.0f);

@@ -143,10 +143,12 @@ struct alignas(32) ChildHits {  // NOLINT(cppcoreguidelines-pro-type-member-init
     alignas(32) float entry[8];
 };
 
-// Each child's box against the eight rays: the single ray's test (bvh_traversal.cpp,
-// test_wide_boxes_avx2), the same operations in the same order per lane, with the near and far
-// planes chosen per lane by the sign of its inverse, for the children in `children` (bits).
-// Returns how many of them some lane meets.
+// Each child's box against the eight rays: the slab test's packet form (float_ray.cpp, part 2),
+// (p - o) * inverse with the margin, the form children_packet_may_meet bounds, with the near and
+// far planes chosen per lane by the sign of its inverse, for the children in `children` (bits).
+// The single ray's own form (box_test.h) saves an operation a plane, but here its offsets cost a
+// packet's set-up more than that saves (docs/lab/levers-4-2026-12-05.md). Returns how many of
+// the children some lane meets.
 __attribute__((target("avx2"))) inline int test_children(const WideNode& node,
                                                          const PacketValues& v,
                                                          std::uint32_t active,

@@ -20,12 +20,22 @@
 //    that swallow that distance and the rounding of the double and float computations.
 //
 // 2. Slab test. With o = float(O) (error <= u|O|), inverse = float(1/D') (relative error <= u),
-//    plane p a float, the computed (p - o) * inverse differs from the real (p - O) / D' by at
-//    most 3u |t| + u |O| |1/D'| (relative roundings, and the origin's rounding divided by D').
-//    slab_margin[k] = 2^-20 m |inverse[k]| covers the origin and the 2^-27 m of part 1; the
-//    3u |t| is covered by widening the final interval by kRelativeSlack |t|. A zero direction
-//    component is clamped to 2^-60 times the largest: the pretend ray drifts by 2^-60 t, below
-//    2^-57 m for any t at which it is still within the scene, far inside the margin. The
+//    plane p a float, a plane's t is taken in one of two forms, against the real (p - O) / D':
+//    - a ray's own test (bvh/box_test.h), two float operations: p * inverse - offset, the offset
+//      o * inverse + slab_margin (near planes) or o * inverse - slab_margin (far planes), rounded
+//      in float once a ray. Off from the real t -+ slab_margin by at most 3u |t| (the inverse's
+//      and the subtraction's relative roundings) plus u (|p| + 3|O|) |1/D'| <= 3u m |1/D'| (the
+//      roundings of the two products and of the offset's sum, and the origin's rounding divided
+//      by D');
+//    - a packet's tests (bvh/packet_node_tests.h), lane by lane and as a bound over its lanes
+//      (each operation is monotone in each operand): (p - o) * inverse -+ slab_margin, off from
+//      the real t -+ slab_margin by at most 3u |t| + u |O| |1/D'| (relative roundings, and the
+//      origin's rounding divided by D').
+//    slab_margin[k] = 2^-20 m |inverse[k]| = 16u m |inverse[k]| covers the 3u m |1/D'| and the
+//    2^-27 m of part 1 five times over; the 3u |t| is covered by widening the final interval by
+//    kRelativeSlack |t|. A zero direction component is clamped to 2^-60 times the largest: the
+//    pretend ray drifts by 2^-60 t, below 2^-57 m for any t at which it is still within the
+//    scene, far inside the margin (and p * inverse stays below 2^100, a finite float). The
 //    interval, so widened, holds the scaled t of every hit the exact test can find in the box,
 //    and t_min and t_max are rounded outward (scaled_down, scaled_up) before they are compared.
 //
