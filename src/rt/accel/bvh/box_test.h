@@ -58,7 +58,7 @@ inline void test_wide_boxes_sse2(const WideNode& node, const BoxRay& ray, simd::
     out.mask = 0;
     for (int half = 0; half < 2; ++half) {
         const float* base = node.lo[0] + std::ptrdiff_t{4} * half;
-        // Offsets chosen once per ray: no branch on the direction's signs here.
+        // Which planes are near and far was chosen once a ray: no branch on the signs here.
         const auto near_t = [&](int k) {
             return Float4::load(base + std::ptrdiff_t{2} * ray.near_plane[k]) * ray.inverse[k] -
                    ray.near_offset[k];

@@ -1,6 +1,7 @@
 // The packet walk's node tests (bvh_packet_traversal.cpp): a node's eight boxes against the
-// whole packet at once (interval arithmetic over its lanes), then against each lane (the single
-// ray's test, lane for lane). AVX2 functions, for x86 compilers that take target attributes.
+// whole packet at once (interval arithmetic over its lanes), then against each lane (the slab
+// test's packet form, lane for lane). AVX2 functions, for x86 compilers that take target
+// attributes.
 #pragma once
 
 #include <bit>
