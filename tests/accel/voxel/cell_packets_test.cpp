@@ -152,8 +152,19 @@ TEST(CellPackets, NeverRejectAPolygonTheExactTestHits) {
             c0 + (scene.corner_position(p, 1) - c0) * a + (scene.corner_position(p, 2) - c0) * b;
         Ray ray{{normal(rng), normal(rng), normal(rng)}, {}};
         ray.direction = target - ray.origin;
-        const FloatRay float_ray(ray, packets.scale());
+        // Set up as the voxel methods set it up: only the triangle values, which must be the
+        // full set-up's bit for bit.
+        const FloatRay float_ray(ray, packets.scale(), FloatRay::TrianglesOnly{});
         ASSERT_TRUE(float_ray.usable);
+        const FloatRay full(ray, packets.scale());
+        ASSERT_TRUE(full.kx == float_ray.kx && full.ky == float_ray.ky && full.kz == float_ray.kz);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(full.shear_x),
+                  std::bit_cast<std::uint32_t>(float_ray.shear_x));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(full.shear_y),
+                  std::bit_cast<std::uint32_t>(float_ray.shear_y));
+        ASSERT_EQ(full.edge_margin_linear, float_ray.edge_margin_linear);
+        ASSERT_EQ(full.edge_margin_constant, float_ray.edge_margin_constant);
+        ASSERT_EQ(0, std::memcmp(full.origin, float_ray.origin, sizeof full.origin));
         std::set<std::uint32_t> kept;
         for (const CellPacket& packet : cell) {
             for (unsigned lanes = static_cast<unsigned>(cell_packet_candidates(packet, float_ray));

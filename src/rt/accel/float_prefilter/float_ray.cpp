@@ -83,9 +83,10 @@ double power_of_two_below(double x, double& inverse) {
     return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - exponent) << 52);
 }
 
-}  // namespace
-
-FloatRay::FloatRay(const Ray& ray, double scene_scale) {
+// The set-up, with or without the box tests' values: the BVH's full one runs as it did before
+// the choice existed, its reciprocal on kz reused for the shears.
+template <bool kBoxes>
+void set_up(FloatRay& r, const Ray& ray, double scene_scale) {
     const Vec3& d = ray.direction;
     const double ax = std::fabs(d.x);
     const double ay = std::fabs(d.y);
@@ -95,34 +96,52 @@ FloatRay::FloatRay(const Ray& ray, double scene_scale) {
         std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)});
     const double m = scene_scale + origin_size;
     // (max ignores a NaN, so finiteness is asked of every component.)
-    usable = is_finite(d) && is_finite(ray.origin) && largest > 0.0 && m >= kSmallestScale &&
-             m <= kLargestScale;
-    if (!usable) {
+    r.usable = is_finite(d) && is_finite(ray.origin) && largest > 0.0 && m >= kSmallestScale &&
+               m <= kLargestScale;
+    if (!r.usable) {
         return;
     }
-    const double shrink = power_of_two_below(largest, scale_t);  // D = scale_t D'; t' = t scale_t
-    const Vec3 scaled = d * shrink;                              // exact
+    const double shrink = power_of_two_below(largest, r.scale_t);  // D = scale_t D'; t' = t scale_t
+    const Vec3 scaled = d * shrink;                                // exact
     double inv[3];
     for (int k = 0; k < 3; ++k) {
-        origin[k] = static_cast<float>(ray.origin[k]);
-        inv[k] = 1.0 / scaled[k];
-        if (!(std::fabs(inv[k]) <= kLargestInverse)) {
-            inv[k] = std::copysign(kLargestInverse, scaled[k]);
+        r.origin[k] = static_cast<float>(ray.origin[k]);
+        if constexpr (kBoxes) {
+            inv[k] = 1.0 / scaled[k];
+            if (!(std::fabs(inv[k]) <= kLargestInverse)) {
+                inv[k] = std::copysign(kLargestInverse, scaled[k]);
+            }
+            r.inverse[k] = static_cast<float>(inv[k]);
+            r.slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
         }
-        inverse[k] = static_cast<float>(inv[k]);
-        slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
     }
 
-    kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kx + 1) % 3;
-    // |scaled[kz]| is in [1, 2), so its inverse was not clamped; two roundings, well inside
-    // the 8u of the bound.
-    shear_x = static_cast<float>(scaled[kx] * inv[kz]);
-    shear_y = static_cast<float>(scaled[ky] * inv[kz]);
+    r.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    r.kx = (r.kz + 1) % 3;
+    r.ky = (r.kx + 1) % 3;
+    // |scaled[kz]| is in [1, 2), so its inverse needs no clamp (the box tests' is that one, so
+    // the same bits either way); two roundings, well inside the 8u of the bound.
+    double inverse_kz = 0.0;
+    if constexpr (kBoxes) {
+        inverse_kz = inv[r.kz];
+    } else {
+        inverse_kz = 1.0 / scaled[r.kz];
+    }
+    r.shear_x = static_cast<float>(scaled[r.kx] * inverse_kz);
+    r.shear_y = static_cast<float>(scaled[r.ky] * inverse_kz);
     const double eps = 0x1p-20 * m;
-    edge_margin_linear = bound_up(8.0 * eps);
-    edge_margin_constant = bound_up(8.0 * eps * eps);
+    r.edge_margin_linear = bound_up(8.0 * eps);
+    r.edge_margin_constant = bound_up(8.0 * eps * eps);
+}
+
+}  // namespace
+
+FloatRay::FloatRay(const Ray& ray, double scene_scale) {
+    set_up<true>(*this, ray, scene_scale);
+}
+
+FloatRay::FloatRay(const Ray& ray, double scene_scale, TrianglesOnly) {
+    set_up<false>(*this, ray, scene_scale);
 }
 
 }  // namespace rt

@@ -95,13 +95,13 @@ inline bool line_may_meet_box(const LineProbe& line, const float* b) {
 }
 
 /// The ray as the float triangle test wants it, prepared on first use: most rays meet few
-/// triangle boxes, some none.
+/// triangle boxes, some none. Only its triangle values: the boxes take the LineProbe.
 class TriangleProbe {
 public:
     TriangleProbe(const Ray& ray, double scene_scale) : ray_(ray), scene_scale_(scene_scale) {}
     const FloatRay& get() {
         if (!float_ray_) {
-            float_ray_.emplace(ray_, scene_scale_);
+            float_ray_.emplace(ray_, scene_scale_, FloatRay::TrianglesOnly{});
         }
         return *float_ray_;
     }
