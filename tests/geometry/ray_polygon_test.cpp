@@ -286,6 +286,81 @@ TEST(IntersectPolygon, IntervalIsOpenAtBothEnds) {
         hit_flat(square_corners, Ray{{1, 1, -5}, {0, 0, -1}}, {0.0, kBeyondAnyScene}));  // behind
 }
 
+// The question asked before a ray's RaySpace is made: never "missed" where the exact test hits.
+// Rays start on the plane (a reflection beside coplanar neighbours), end on it (a feeler on its
+// light), cross it obliquely or nearly edge-on (around the grazing limit, where the exact test
+// switches to corner depths), at huge and tiny direction lengths.
+TEST(PlaneCertainlyMissed, OnlyWhereTheExactTestMisses) {
+    std::mt19937_64 random(15);
+    std::uniform_real_distribution<double> any(-10.0, 10.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double cosines[] = {0.0, 0.5e-6, 1e-6, 1.2e-6, 1.73e-6, 1.75e-6, 1.8e-6, 3e-6, 1e-3, 0.3};
+    int missed = 0;
+    int cases = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const Vec3 a{any(random), any(random), any(random)};
+        const Vec3 b{any(random), any(random), any(random)};
+        const Vec3 c{any(random), any(random), any(random)};
+        const Vec3 normal = normalize(cross(b - a, c - a));
+        const std::vector<Vec3> corners{a, b, c};
+        // A point of the plane, inside the triangle or outside it.
+        const double u = unit(random) * 1.4 - 0.2;
+        const double v = unit(random) * (1.2 - u);
+        const Vec3 on_plane = a + (b - a) * u + (c - a) * v;
+        // A direction at a chosen |cos| with the normal.
+        const Vec3 side = normalize(cross(normal, Vec3{any(random), any(random), any(random)}));
+        const double cosine = cosines[i % std::size(cosines)] * (i % 3 == 0 ? -1.0 : 1.0);
+        const Vec3 unit_direction =
+            normalize(side * std::sqrt(1.0 - cosine * cosine) + normal * cosine);
+        const double scale = (i % 7 == 0) ? 1e150 : ((i % 11 == 0) ? 1e-150 : 1.0 + unit(random));
+        Ray ray{};
+        Interval t{};
+        switch (i % 4) {
+            case 0:  // leaving the plane, as a reflection does
+                ray = {on_plane, unit_direction * scale};
+                t = {1e-9 / scale, kBeyondAnyScene};
+                break;
+            case 1: {  // ending on it, as a feeler on its light
+                const Vec3 from = on_plane - unit_direction * (1.0 + unit(random) * 5.0);
+                ray = {from, (on_plane - from) * scale};
+                t = {1e-9, 1.0 / scale * (1.0 - 1e-9)};
+                break;
+            }
+            case 2: {  // a hair off the plane, crossing the triangle nearly edge-on
+                const double hair = (i % 5 + 1) * 1e-9 * (i % 2 == 0 ? 1.0 : -1.0);
+                const Vec3 from = on_plane - side * 30.0 + normal * hair;
+                ray = {from, unit_direction * scale};
+                t = {0.0, kBeyondAnyScene};
+                break;
+            }
+            default: {  // from anywhere, either way
+                const Vec3 from{any(random), any(random), any(random)};
+                ray = {from, unit_direction * scale};
+                t = i % 2 == 0 ? Interval{0.0, kBeyondAnyScene} : Interval{-kBeyondAnyScene, 0.0};
+            }
+        }
+        ++cases;
+        if (plane_certainly_missed(ray, normal, a, t)) {
+            ++missed;
+            ASSERT_FALSE(intersect_polygon(ray, corners, normal, t)) << "case " << i;
+        }
+    }
+    EXPECT_GT(missed, cases / 4) << "the question answers \"missed\" too rarely to matter";
+}
+
+TEST(PlaneCertainlyMissed, NeverForNaNOrEdgeOn) {
+    const Vec3 a{0, 0, 0};
+    EXPECT_FALSE(plane_certainly_missed(Ray{{0, 0, 5}, {1, 0, 0}}, kUp, a, kWholeLine));
+    EXPECT_FALSE(plane_certainly_missed(Ray{{0, 0, 5}, {0, 0, kNaN}}, kUp, a, {0.0, 1.0}));
+    EXPECT_FALSE(plane_certainly_missed(Ray{{0, 0, kNaN}, {0, 0, -1}}, kUp, a, {0.0, 1.0}));
+    // Edge-on within the limit: the exact test takes corner depths, so no answer here.
+    EXPECT_FALSE(plane_certainly_missed(Ray{{-1, 0, 1e-9}, {1, 0, -1e-7}}, kUp, a, {0.0, 1.0}));
+    // Crossing the plane behind the interval: missed.
+    EXPECT_TRUE(plane_certainly_missed(Ray{{0, 0, 5}, {0, 0, 1}}, kUp, a, {0.0, kBeyondAnyScene}));
+    EXPECT_TRUE(plane_certainly_missed(Ray{{0, 0, 5}, {0, 0, -1}}, kUp, a, {0.0, 5.0}));
+    EXPECT_FALSE(plane_certainly_missed(Ray{{0, 0, 5}, {0, 0, -1}}, kUp, a, {0.0, 6.0}));
+}
+
 TEST(PlaneHit, DepthOfThePlane) {
     const std::optional<double> t = plane_hit(Ray{{0, 0, 5}, {0, 0, -2}}, {7, 8, 1}, kUp);
     ASSERT_TRUE(t);

@@ -41,4 +41,37 @@ inline std::optional<double> lane_exact_hit(const RaySpace& space, const Scene& 
     return intersect_polygon(space, scene.polygon_view(id), t);
 }
 
+/// plane_certainly_missed for polygon `id`, read from the scene: asked before the ray's RaySpace
+/// is made (once it is, the exact test asks the same at once), and only of a ray leaving a
+/// polygon. Such rays (reflections, shadow feelers) meet the plane of coplanar neighbours at
+/// their start, and a feeler ends on its light's polygon: both fail here, and often they are
+/// the ray's only candidates. A ray from the eye (and the lab's rays) rarely has such a candidate,
+/// and would pay for the question on its first one with nothing back.
+inline bool polygon_plane_certainly_missed(const Ray& ray, const Scene& scene, std::uint32_t id,
+                                           Interval t) {
+    if (ray.leaves == kLeavesNoPolygon) {
+        return false;
+    }
+    const Polygon& polygon = scene.polygons[id];
+    if (polygon.corner_count < 3) {
+        return true;  // the exact test's answer too, and it reads no corner
+    }
+    return plane_certainly_missed(ray, polygon.normal,
+                                  scene.positions[scene.corners[polygon.first_corner]], t);
+}
+
+/// The same for polygon `id` in `lane` of such a packet, its first corner read from the packet.
+inline bool lane_plane_certainly_missed(const Ray& ray, const Scene& scene,
+                                        const std::uint32_t (&position)[3][4], int lane,
+                                        std::uint32_t id, Interval t) {
+    if (ray.leaves == kLeavesNoPolygon) {
+        return false;
+    }
+    if (position[0][lane] == kNotTriangle) {
+        return polygon_plane_certainly_missed(ray, scene, id, t);
+    }
+    return plane_certainly_missed(ray, scene.polygons[id].normal,
+                                  scene.positions[position[0][lane]], t);
+}
+
 }  // namespace rt

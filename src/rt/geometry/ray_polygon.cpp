@@ -115,9 +115,6 @@ bool inside(double t, Interval interval) {
     return t > interval.min && t < interval.max;
 }
 
-// Below this |cos| between the normal and the ray the plane's t is ill-conditioned.
-constexpr double kGrazing = 1e-6;
-
 constexpr double kMiss = std::numeric_limits<double>::quiet_NaN();
 // A grazing hit's corner box is grown by this times the largest |coordinate| of corners and
 // origin: far above the 2^-49 of the projection's rounding, far below the BVH's 2^-20 margins.
@@ -186,7 +183,8 @@ double hit_of(const RaySpace& space, const Vec3& normal, std::uint32_t count, Co
     }
     const Ray& ray = space.ray();
     const double denominator = dot(normal, ray.direction);
-    const double along = dot(normal, corner_at(0) - ray.origin) / denominator;
+    const double along = plane_depth(ray, normal, corner_at(0), denominator);
+    // (plane_certainly_missed, ray_polygon.h, asks the same first, without the RaySpace.)
     if (std::fabs(denominator) > space.grazing_limit() && std::isfinite(along)) {
         // The plane first: one dot product rejects most polygons before any corner is projected.
         if (!inside(along, t) || winding_of(space, count, corner_at) == 0) {

@@ -5,6 +5,8 @@
 // sharing it is argued in ray_polygon.cpp.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -101,6 +103,36 @@ bool ray_passes_through(const RaySpace& space, std::span<const Vec3> corners);
 /// dot(normal, point - origin) / dot(normal, direction); none for a ray parallel to the plane or
 /// a non-finite t.
 std::optional<double> plane_hit(const Ray& ray, const Vec3& point, const Vec3& normal);
+
+/// Below this |cos| between a polygon's unit normal and the ray, the plane's t is ill-conditioned
+/// and the exact test takes a grazing depth instead (ray_polygon.cpp, part 4).
+inline constexpr double kGrazing = 1e-6;
+
+/// The plane's t as the exact test takes it, for the plane through `first_corner` (the polygon's
+/// corner 0) and `denominator` = dot(normal, direction).
+inline double plane_depth(const Ray& ray, const Vec3& normal, const Vec3& first_corner,
+                          double denominator) {
+    return dot(normal, first_corner - ray.origin) / denominator;
+}
+
+/// True only if the exact test certainly misses the polygon (unit `normal`, corner 0
+/// `first_corner`) within `t` by its plane alone: the ray meets the plane away from edge-on, at a
+/// t outside the interval. The exact test's own first step, on the same values with the same
+/// operations (plane_depth), decided without the ray's RaySpace, so that a ray whose every
+/// candidate fails here never makes one: a ray leaving a surface beside coplanar neighbours, or
+/// a shadow feeler ending on its light's polygon. The exact test's edge-on limit is kGrazing
+/// times the direction's length as RaySpace computes it, below sqrt(3) (1 + 2^-50) times the
+/// largest |component|; 1.75 times covers it (rounding is monotone, and where the products fall
+/// below the smallest subnormal both round to 0). False when unsure, and for a NaN.
+inline bool plane_certainly_missed(const Ray& ray, const Vec3& normal, const Vec3& first_corner,
+                                   Interval t) {
+    const Vec3& d = ray.direction;
+    const double denominator = dot(normal, d);
+    const double along = plane_depth(ray, normal, first_corner, denominator);
+    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    return std::fabs(denominator) > (kGrazing * 1.75) * largest && std::isfinite(along) &&
+           !(along > t.min && along < t.max);
+}
 
 /// The exact tests below return a miss as NaN (no hit's t is NaN: a t outside the interval, NaN
 /// included, is a miss). Accelerators call them through the inline std::optional forms: returned

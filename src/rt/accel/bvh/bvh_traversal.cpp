@@ -48,10 +48,17 @@ public:
             return;  // before the RaySpace: often the only polygon a ray leaving a surface meets
         }
         ++counters.polygon_tests;
+        const Interval search = best_.search_interval();
         if (!space_) {
+            // Before the RaySpace, the plane alone (lane_exact_hit.h): a ray leaving a surface
+            // beside coplanar neighbours, or a feeler ending on its light, often needs no other.
+            if (packet != nullptr
+                    ? lane_plane_certainly_missed(ray_, scene, packet->position, lane, id, search)
+                    : polygon_plane_certainly_missed(ray_, scene, id, search)) {
+                return;
+            }
             space_.emplace(ray_);
         }
-        const Interval search = best_.search_interval();
         const std::optional<double> hit =
             packet != nullptr ? lane_exact_hit(*space_, scene, packet->position, lane, id, search)
                               : intersect_polygon(*space_, scene.polygon_view(id), search);
@@ -417,6 +424,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         }
         ++counters.polygon_tests;
         if (!space) {
+            if (polygon_plane_certainly_missed(ray, scene_, id, t)) {
+                return false;
+            }
             space.emplace(ray);
         }
         return intersect_polygon(*space, scene_.polygon_view(id), t).has_value();
@@ -446,6 +456,9 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
         }
         ++counters.polygon_tests;
         if (!space) {
+            if (lane_plane_certainly_missed(ray, scene_, packet.position, lane, id, t)) {
+                return false;
+            }
             space.emplace(ray);
         }
         return lane_exact_hit(*space, scene_, packet.position, lane, id, t).has_value();

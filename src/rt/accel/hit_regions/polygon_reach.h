@@ -39,7 +39,7 @@ struct PolygonReach {
 };
 
 /// The |cos| between a ray and a polygon's plane at or below which the ray-polygon test treats
-/// the polygon as seen edge-on (kGrazing in ray_polygon.cpp), with headroom for rounding.
+/// the polygon as seen edge-on (kGrazing in ray_polygon.h), with headroom for rounding.
 inline constexpr double kGrazingCosine = 1e-6 * (1.0 + 1e-9);
 
 /// The reach of scene polygon `id` for rays whose |cos| with its normal is at least `min_cos`

@@ -136,6 +136,14 @@ protected:
         return *space_;
     }
 
+    /// Whether the exact test of this lane's polygon certainly misses within `t` by its plane,
+    /// asked while the ray has no RaySpace (lane_plane_certainly_missed): the ray then makes
+    /// one only for a polygon it may hit.
+    bool missed_before_space(const std::uint32_t (&position)[3][4], int lane, std::uint32_t id,
+                             Interval t) const {
+        return !space_ && lane_plane_certainly_missed(ray_, scene_, position, lane, id, t);
+    }
+
 private:
     const Ray& ray_;
     std::optional<RaySpace> space_;
@@ -177,9 +185,14 @@ private:
     // The exact test of one polygon, offering its hit. Polygons arrive in voxel order, not id
     // order: the tie rule picks among equal t.
     auto offer_to_nearest() {
-        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane) {
-            if (const std::optional<double> t = lane_exact_hit(space(), scene_, position, lane, id,
-                                                               nearest_.search_interval())) {
+        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane)
+            __attribute__((always_inline)) {
+            const Interval within = nearest_.search_interval();
+            if (missed_before_space(position, lane, id, within)) {
+                return false;
+            }
+            if (const std::optional<double> t =
+                    lane_exact_hit(space(), scene_, position, lane, id, within)) {
                 nearest_.offer(*t, id);
             }
             return false;
@@ -201,8 +214,10 @@ public:
 
 private:
     auto hit_within() {
-        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane) {
-            return lane_exact_hit(space(), scene_, position, lane, id, t_).has_value();
+        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane)
+            __attribute__((always_inline)) {
+            return !missed_before_space(position, lane, id, t_) &&
+                   lane_exact_hit(space(), scene_, position, lane, id, t_).has_value();
         };
     }
 
