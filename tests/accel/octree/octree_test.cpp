@@ -173,6 +173,49 @@ TEST(Octree, WalkVisitsTheLeavesTheRayCrossesInOrder) {
     }
 }
 
+// The walk that finds each next leaf before visiting the current one (to prefetch it) and the
+// one that finds it after (a small tree's) visit the same leaves in the same order, and stop at
+// the same one when a visit ends the walk.
+TEST(Octree, BothWalkFormsVisitTheSameLeaves) {
+    const Scene sphere = make_sphere({0.1, 0.2, 0.3}, 2.0, 24, 32, true);
+    for (const int depth : {3, 6}) {
+        const OctreeTree tree = build_octree_depth_first(sphere, at_depth(depth));
+        int stopped = 0;
+        for (const RayCase& c : random_rays(tree.world, 2000, 23)) {
+            Interval inside;
+            if (!clip_to_box(c.ray, tree.world, c.t, inside)) {
+                continue;
+            }
+            const Vec3& d = c.ray.direction;
+            const Vec3 inverse{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
+            for (const std::size_t stop_after :
+                 {std::size_t{1}, std::size_t{3}, std::size_t{1000}}) {
+                std::vector<const OctreeNode*> ahead;
+                std::vector<const OctreeNode*> after;
+                std::size_t prefetched = 0;
+                walk_octree_leaves<true>(
+                    tree, tree.nodes.data(), nullptr, c.ray, inverse, inside,
+                    [&](double, const OctreeLeafAt& leaf) {
+                        ahead.push_back(leaf.node);
+                        return ahead.size() == stop_after;
+                    },
+                    [&](const OctreeNode*) { ++prefetched; });
+                walk_octree_leaves<false>(
+                    tree, tree.nodes.data(), nullptr, c.ray, inverse, inside,
+                    [&](double, const OctreeLeafAt& leaf) {
+                        after.push_back(leaf.node);
+                        return after.size() == stop_after;
+                    },
+                    [&](const OctreeNode*) { ADD_FAILURE() << "prefetch without look-ahead"; });
+                ASSERT_EQ(ahead, after) << describe(c);
+                stopped += ahead.size() == stop_after ? 1 : 0;
+                EXPECT_GE(prefetched + 1, ahead.size());
+            }
+        }
+        EXPECT_GT(stopped, 1000) << "depth " << depth;
+    }
+}
+
 TEST(Octree, BothFillsBuildTheSameTree) {
     const std::vector<Scene> scenes = {random_triangle_soup(500, 31),
                                        make_sphere({0, 0, 0}, 1.0, 12, 20, false),

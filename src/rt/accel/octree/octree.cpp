@@ -31,6 +31,11 @@ std::vector<OctreeNode> walk_nodes_of(const OctreeTree& tree, const CellPackets&
     return nodes;
 }
 
+// A structure this small stays in the cache between rays (a core's L2 holds 512 KiB on the
+// machines measured): finding the next leaf early to prefetch it buys nothing, and is wasted
+// work when the visit ends the walk.
+constexpr std::size_t kLookAheadBytes = 256 * 1024;
+
 }  // namespace
 
 Octree::Octree(const Scene& scene, const AccelSettings& settings)
@@ -54,13 +59,14 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
         static_cast<int>(settings.build_threads));
     walk_nodes_ = walk_nodes_of(tree_, packets_);
     top_ = make_top_table(tree_);
+    look_ahead_ = memory_bytes() > kLookAheadBytes;
 }
 
-// The queries' walk: visit(cell, t_exit) with each leaf's packets, and each next leaf's asked of
-// the cache as soon as the walk knows it.
-template <class Visit>
+// The queries' walk: visit(cell, t_exit) with each leaf's packets, and with kLookAhead each next
+// leaf's asked of the cache as soon as the walk knows it.
+template <bool kLookAhead, class Visit>
 void Octree::walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const {
-    walk_octree_leaves(
+    walk_octree_leaves<kLookAhead>(
         tree_, walk_nodes_.data(), &top_, ray, inverse, inside,
         [&](double t_exit, const OctreeLeafAt& leaf) {
             return visit(packets_.blocks(leaf.node->first, leaf.node->count), t_exit);
@@ -75,14 +81,22 @@ VoxelSearchParts Octree::search_parts() const {
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_closest_hit(search_parts(), ray, t, counters,
                              [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                                 walk(ray, inverse, inside, visit);
+                                 if (look_ahead_) {
+                                     walk<true>(ray, inverse, inside, visit);
+                                 } else {
+                                     walk<false>(ray, inverse, inside, visit);
+                                 }
                              });
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_occluded(search_parts(), ray, t, counters,
                           [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                              walk(ray, inverse, inside, visit);
+                              if (look_ahead_) {
+                                  walk<true>(ray, inverse, inside, visit);
+                              } else {
+                                  walk<false>(ray, inverse, inside, visit);
+                              }
                           });
 }
 

@@ -50,9 +50,12 @@ private:
     std::vector<OctreeNode> walk_nodes_;
     /// Where the walk's descents near the top of the tree start (octree_top_table.h).
     OctreeTopTable top_;
+    /// Whether the walk finds each next leaf before visiting the current one, to prefetch it:
+    /// only for a structure too big to stay in the cache (kLookAheadBytes, octree.cpp).
+    bool look_ahead_ = true;
 
     VoxelSearchParts search_parts() const;
-    template <class Visit>
+    template <bool kLookAhead, class Visit>
     void walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const;
 };
 

@@ -119,9 +119,11 @@ private:
 /// `nodes` is the tree's node array or one of the same shape whose leaves say where their own
 /// data lies; visit(t_exit, leaf) is called for each leaf, leaf.node pointing into `nodes`.
 /// `inverse[a]` is 1 / ray.direction[a] on each axis the ray moves along (what the caller's clip
-/// used). `prefetch(node)` is called with each next leaf as soon as it is found, before the
-/// current one is visited, to ask the cache for what its visit will read.
-template <class Visit, class Prefetch>
+/// used). With kLookAhead, `prefetch(node)` is called with each next leaf as soon as it is found,
+/// before the current one is visited, to ask the cache for what its visit will read; without,
+/// the next leaf is found only after the visit, and not at all when the visit ends the walk.
+/// The leaves visited, in order, and where the walk ends are the same either way.
+template <bool kLookAhead = true, class Visit, class Prefetch>
 void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const OctreeTopTable* top,
                         const Ray& ray, const Vec3& inverse, Interval inside, Visit&& visit,
                         Prefetch&& prefetch) {
@@ -155,10 +157,16 @@ void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const O
         const int axis = t_face[0] < t_face[1] ? (t_face[0] < t_face[2] ? 0 : 2)
                                                : (t_face[1] < t_face[2] ? 1 : 2);
         const double t_exit = t_face[axis];
-        // The next leaf is found before this one's polygons are tested, and its polygon list
-        // asked for, so that the memory it lives in arrives while they are being tested. The
-        // leaves visited, and where the walk ends, are the same as stepping after the visit.
+        // With kLookAhead the next leaf is found before this one's polygons are tested, and its
+        // polygon list asked for, so that the memory it lives in arrives while they are being
+        // tested. The leaves visited, and where the walk ends, are the same as stepping after
+        // the visit.
         bool more = t_exit < inside.max;
+        if constexpr (!kLookAhead) {
+            if (visit(t_exit, leaf) || !more) {
+                return;
+            }
+        }
         if (more) {
             at[axis] = step[axis] > 0 ? leaf.origin[axis] + leaf.size : leaf.origin[axis] - 1;
             more = at[axis] >= 0 && at[axis] <= last;
@@ -175,9 +183,15 @@ void walk_octree_leaves(const OctreeTree& tree, const OctreeNode* nodes, const O
                 }
             }
             cursor.move_to(at);
-            prefetch(cursor.leaf_node());
+            if constexpr (kLookAhead) {
+                prefetch(cursor.leaf_node());
+            }
         }
-        if (visit(t_exit, leaf) || !more) {
+        if constexpr (kLookAhead) {
+            if (visit(t_exit, leaf) || !more) {
+                return;
+            }
+        } else if (!more) {
             return;
         }
     }
