@@ -34,7 +34,7 @@ std::vector<OctreeNode> walk_nodes_of(const OctreeTree& tree, const CellPackets&
 // A structure this small stays in the cache between rays (a core's L2 holds 512 KiB on the
 // machines measured): finding the next leaf early to prefetch it buys nothing, and is wasted
 // work when the visit ends the walk.
-constexpr std::size_t kLookAheadBytes = 256 * 1024;
+constexpr std::size_t kLookAheadBytes = std::size_t{256} * 1024;
 
 }  // namespace
 
@@ -59,7 +59,7 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
         static_cast<int>(settings.build_threads));
     walk_nodes_ = walk_nodes_of(tree_, packets_);
     top_ = make_top_table(tree_);
-    look_ahead_ = memory_bytes() > kLookAheadBytes;
+    look_ahead_ = Octree::memory_bytes() > kLookAheadBytes;
 }
 
 // The queries' walk: visit(cell, t_exit) with each leaf's packets, and with kLookAhead each next
