@@ -21,14 +21,6 @@ void PolygonBoxes::measure_triangle(const Scene& scene, std::uint32_t id) {
     }
 }
 
-LineProbe::LineProbe(const Ray& ray) : origin(ray.origin) {
-    for (int a = 0; a < 3; ++a) {
-        parallel[a] = ray.direction[a] == 0.0;
-        inverse[a] = parallel[a] ? 0.0 : 1.0 / ray.direction[a];
-        any_parallel = any_parallel || parallel[a];
-    }
-}
-
 PolygonBoxes::PolygonBoxes(const Scene& scene, double growth) {
     boxes_.reserve(6 * scene.polygons.size());
     for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
