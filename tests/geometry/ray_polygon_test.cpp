@@ -361,6 +361,78 @@ TEST(PlaneCertainlyMissed, NeverForNaNOrEdgeOn) {
     EXPECT_FALSE(plane_certainly_missed(Ray{{0, 0, 5}, {0, 0, -1}}, kUp, a, {0.0, 6.0}));
 }
 
+// A plane group (one normal, corners 0 in the plane within in_plane_group's tolerance): when the
+// question says a ray misses the group, the exact test misses every member. Rays leave a member
+// (on its plane, or a hair off it) in any direction, nearly edge-on too, with the renderer's
+// t_min and with ones far below the plane's rounding.
+TEST(PlaneGroupCertainlyMissed, OnlyWhereTheExactTestMissesEveryMember) {
+    std::mt19937_64 random(41);
+    std::uniform_real_distribution<double> any(-1.0, 1.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int skipped = 0;
+    int cases = 0;
+    for (int group = 0; group < 200; ++group) {
+        const double size = std::pow(10.0, any(random) * 3.0);
+        const Vec3 centre = Vec3{any(random), any(random), any(random)} * size;
+        const Vec3 e1 = normalize(Vec3{any(random), any(random), any(random)});
+        const Vec3 e2 = normalize(cross(e1, Vec3{any(random), any(random), any(random)}));
+        const Vec3 normal = normalize(cross(e1, e2));
+        std::vector<std::vector<Vec3>> members;
+        double scale = 0.0;
+        for (int k = 0; k < 12; ++k) {
+            const auto point = [&] {
+                return centre + e1 * (any(random) * size) + e2 * (any(random) * size);
+            };
+            std::vector<Vec3> corners{point(), point(), point()};
+            if (k % 3 == 2) {
+                // Off the plane by up to the group's tolerance, parallel to it.
+                const double n1 = std::fabs(normal.x) + std::fabs(normal.y) + std::fabs(normal.z);
+                const double shift = 0x1p-41 * n1 * std::fabs(centre.x + size) * any(random);
+                for (Vec3& c : corners) {
+                    c = c + normal * shift;
+                }
+            }
+            if (!members.empty() && !in_plane_group(normal, members[0][0], corners[0])) {
+                continue;
+            }
+            for (const Vec3& c : corners) {
+                scale = std::max({scale, std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
+            }
+            members.push_back(corners);
+        }
+        ASSERT_GE(members.size(), 6u) << "the group's tolerance takes too few of its polygons";
+        for (int r = 0; r < 200; ++r) {
+            const std::vector<Vec3>& from = members[static_cast<std::size_t>(r) % members.size()];
+            const double a = unit(random);
+            const double b = unit(random) * (1.0 - a);
+            Vec3 origin = from[0] + (from[1] - from[0]) * a + (from[2] - from[0]) * b;
+            if (r % 5 == 0) {
+                origin = origin + normal * (1e-13 * size * any(random));
+            }
+            const Vec3 side = normalize(cross(normal, Vec3{any(random), any(random), any(random)}));
+            const double cosines[] = {1e-7, 1e-6, 1.8e-6, 1e-4, 0.1, 0.7, 1.0};
+            const double cosine = cosines[r % 7] * (r % 2 == 0 ? 1.0 : -1.0);
+            const Vec3 direction =
+                (side * std::sqrt(1.0 - cosine * cosine) + normal * cosine) * (0.5 + unit(random));
+            const double epsilon = (r % 3 == 0 ? 1e-20 : 1e-9) * size;
+            const Interval t{epsilon / length(direction), kBeyondAnyScene};
+            const Ray ray{origin, direction};
+            ++cases;
+            if (!plane_group_certainly_missed(ray, normal, members[0][0],
+                                              static_cast<double>(static_cast<float>(scale)),
+                                              t.min)) {
+                continue;
+            }
+            ++skipped;
+            for (const std::vector<Vec3>& member : members) {
+                ASSERT_FALSE(intersect_polygon(ray, member, normal, t))
+                    << "group " << group << ", ray " << r;
+            }
+        }
+    }
+    EXPECT_GT(skipped, cases / 5) << "the question almost never answers";
+}
+
 TEST(PlaneHit, DepthOfThePlane) {
     const std::optional<double> t = plane_hit(Ray{{0, 0, 5}, {0, 0, -2}}, {7, 8, 1}, kUp);
     ASSERT_TRUE(t);

@@ -134,6 +134,45 @@ inline bool plane_certainly_missed(const Ray& ray, const Vec3& normal, const Vec
            !(along > t.min && along < t.max);
 }
 
+/// Whether a polygon with unit normal `normal` and corner 0 `first` lies in the plane group of a
+/// polygon with the same normal (bit for bit: the caller compares them) and corner 0 `leader`:
+/// dot(normal, first) within 2^-40 |normal|_1 max(|first|, |leader|) (largest |coordinate|s) of
+/// dot(normal, leader). plane_group_certainly_missed answers for every polygon of such a group.
+inline bool in_plane_group(const Vec3& normal, const Vec3& leader, const Vec3& first) {
+    const double n1 = std::fabs(normal.x) + std::fabs(normal.y) + std::fabs(normal.z);
+    const double size = std::max({std::fabs(first.x), std::fabs(first.y), std::fabs(first.z),
+                                  std::fabs(leader.x), std::fabs(leader.y), std::fabs(leader.z)});
+    return std::fabs(dot(normal, first) - dot(normal, leader)) <= 0x1p-40 * n1 * size;
+}
+
+/// True only if the exact test certainly misses, within any interval whose min is `t_min`, every
+/// polygon of the plane group of a polygon with corner 0 `leader` (in_plane_group; the group's
+/// normal bit for bit `normal`) whose corner 0 has no |coordinate| above `scale`: the ray meets
+/// their plane away from edge-on and so near its origin that each one's plane t (plane_depth,
+/// computed) is below t_min. For a ray leaving a polygon of a flat surface, whose other polygons
+/// the float pre-filter keeps for nothing. The exact test's numerator dot(n, q0 - o) is off from
+/// the real one by under 7u |n|_1 (|q0| + |o|); the group's spread is 2^-40 |n|_1 |q0| and the
+/// leader's plane offset from the origin is measured: their sum, with 2^-48 for the roundings,
+/// times (1 + 2^-46), is compared with t_min |dot(n, d)| (1 - 2^-48). False when unsure, for a
+/// NaN, or t_min <= 0.
+inline bool plane_group_certainly_missed(const Ray& ray, const Vec3& normal, const Vec3& leader,
+                                         double scale, double t_min) {
+    const Vec3& d = ray.direction;
+    const Vec3& o = ray.origin;
+    const double denominator = std::fabs(dot(normal, d));
+    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    if (!(denominator > (kGrazing * 1.75) * largest)) {
+        return false;  // near edge-on the exact test takes corner depths
+    }
+    const double n1 = std::fabs(normal.x) + std::fabs(normal.y) + std::fabs(normal.z);
+    const double size = scale * (1.0 + 0x1p-20);
+    const double origin_size = std::max({std::fabs(o.x), std::fabs(o.y), std::fabs(o.z)});
+    const double offset = std::fabs(dot(normal, o) - dot(normal, leader));
+    const double reach =
+        (0x1p-40 * n1 * size + offset + 0x1p-48 * n1 * (size + origin_size)) * (1.0 + 0x1p-46);
+    return reach < t_min * denominator * (1.0 - 0x1p-48);
+}
+
 /// The exact tests below return a miss as NaN (no hit's t is NaN: a t outside the interval, NaN
 /// included, is a miss). Accelerators call them through the inline std::optional forms: returned
 /// from a call, GCC builds a std::optional<double> in memory, one byte then a load of eight, a

@@ -71,6 +71,35 @@ TEST(CellPackets, OneLanePerFanTriangleAndBoundsInFront) {
     EXPECT_EQ(packets.scale(), 3.0);
 }
 
+// With bounds, a cell's largest plane group of at least four lanes goes first, in packets of its
+// own, and the header names its first polygon and how many packets it takes.
+TEST(CellPackets, PlaneGroupGoesFirstInPacketsOfItsOwn) {
+    test::SceneBuilder b;
+    b.add_polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // 0: z = 0, 2 lanes
+    b.add_polygon({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}});             // 1: z = 5, 1 lane
+    b.add_polygon({{2, 0, 0}, {3, 0, 0}, {3, 1, 0}, {2, 1, 0}});  // 2: z = 0, 2 lanes
+    b.add_polygon({{4, 0, 0}, {5, 0, 0}, {4, 1, 0}});             // 3: z = 0, 1 lane
+    b.add_polygon({{0, 0, 7}, {1, 0, 7}, {0, 1, 7}});             // 4: z = 7, 1 lane
+    const Scene scene = std::move(b.scene());
+    const std::vector<std::uint32_t> ids = {0, 1, 2, 3, 4};
+    std::vector<std::uint32_t> slots(6, 0u);
+    slots.insert(slots.end(), ids.begin(), ids.end());
+    const std::span<const std::uint32_t> cell_ids =
+        std::span<const std::uint32_t>(slots).subspan(6);
+    const CellPackets with_bounds(scene, 1, kVoxelBoundsSlots,
+                                  [&](std::size_t) { return cell_ids; });
+    const CellView cell = with_bounds.cell(0);
+    EXPECT_EQ(cell.plane_polygon, 0u);
+    ASSERT_EQ(cell.plane_packets, 2u);  // 5 lanes of z = 0
+    ASSERT_EQ(cell.packets.size(), 3u);
+    EXPECT_EQ(lane_polygons(cell.packets.first(2)), (std::multiset<std::uint32_t>{0, 0, 2, 2, 3}));
+    EXPECT_EQ(lane_polygons(cell.packets.subspan(2)), (std::multiset<std::uint32_t>{1, 4}));
+    // Without bounds there is no header to name it: the cell's order, packed.
+    const CellPackets plain(scene, 1, 0, [&](std::size_t) { return cell_ids; });
+    EXPECT_EQ(plain.cell(0).plane_packets, 0u);
+    EXPECT_EQ(plain.cell(0).packets.size(), 2u);
+}
+
 // A triangle's lane carries its corners' position indices in the polygon's own loop order, so that
 // its exact test (lane_exact_hit.h) sees the same polygon as Scene::polygon_view; a lane of a
 // larger polygon, and an unused lane, say kNotTriangle and leave the test to the scene.
@@ -164,7 +193,10 @@ TEST(CellPackets, NeverRejectAPolygonTheExactTestHits) {
                   std::bit_cast<std::uint32_t>(float_ray.shear_y));
         ASSERT_EQ(full.edge_margin_linear, float_ray.edge_margin_linear);
         ASSERT_EQ(full.edge_margin_constant, float_ray.edge_margin_constant);
-        ASSERT_EQ(0, std::memcmp(full.origin, float_ray.origin, sizeof full.origin));
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(full.origin[k]),
+                      std::bit_cast<std::uint32_t>(float_ray.origin[k]));
+        }
         std::set<std::uint32_t> kept;
         for (const CellPacket& packet : cell) {
             for (unsigned lanes = static_cast<unsigned>(cell_packet_candidates(packet, float_ray));

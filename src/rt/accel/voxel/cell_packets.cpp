@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "rt/accel/voxel/voxel_bounds.h"
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
+#include "rt/geometry/ray_polygon.h"
 
 #include <fmt/format.h>
 
@@ -25,6 +27,84 @@ std::uint64_t lanes_of(const Scene& scene, std::span<const std::uint32_t> ids) {
         lanes += corners > 2 ? corners - 2 : 0;
     }
     return lanes;
+}
+
+// A cell's largest plane group (in_plane_group), when its fan triangles fill at least one packet:
+// its members, in the cell's order, go first, in packets of their own. Only polygons whose
+// corners are all finite floats join (the packets' scale then covers their corner 0), and only
+// cells of at most kMostGroupedPolygons polygons are searched (the search is quadratic).
+constexpr std::size_t kMostGroupedPolygons = 64;
+
+struct PlaneGroup {
+    std::uint32_t leader = kNoPlaneGroup;
+    std::uint64_t lanes = 0;             ///< the members' fan triangles
+    std::vector<std::uint32_t> members;  ///< in the cell's order
+    std::vector<std::uint32_t> others;   ///< the rest, in the cell's order
+};
+
+// Bit for bit: the exact test's denominators of two polygons are then the same for any ray.
+bool same_normal(const Vec3& a, const Vec3& b) {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
+bool corners_are_floats(const Scene& scene, const Polygon& p) {
+    for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+        const Vec3 c = scene.corner_position(p, k);
+        for (int a = 0; a < 3; ++a) {
+            if (!(std::fabs(c[a]) <= std::numeric_limits<float>::max())) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+PlaneGroup plane_group_of(const Scene& scene, std::span<const std::uint32_t> ids) {
+    PlaneGroup best;
+    if (ids.size() < 2 || ids.size() > kMostGroupedPolygons) {
+        return best;
+    }
+    const auto lanes = [&](std::uint32_t id) -> std::uint64_t {
+        const std::uint32_t corners = scene.polygons[id].corner_count;
+        return corners > 2 ? corners - 2 : 0;
+    };
+    const auto joins = [&](std::uint32_t id) {
+        const Polygon& p = scene.polygons[id];
+        return p.corner_count >= 3 && corners_are_floats(scene, p);
+    };
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        const Polygon& leader = scene.polygons[ids[i]];
+        if (!joins(ids[i])) {
+            continue;
+        }
+        const Vec3 first = scene.corner_position(leader, 0);
+        std::uint64_t group_lanes = 0;
+        for (std::size_t j = i; j < ids.size(); ++j) {
+            const Polygon& q = scene.polygons[ids[j]];
+            if (joins(ids[j]) && same_normal(q.normal, leader.normal) &&
+                in_plane_group(leader.normal, first, scene.corner_position(q, 0))) {
+                group_lanes += lanes(ids[j]);
+            }
+        }
+        if (group_lanes > best.lanes) {
+            best.leader = ids[i];
+            best.lanes = group_lanes;
+        }
+    }
+    if (best.lanes < 4) {
+        return {};
+    }
+    const Polygon& leader = scene.polygons[best.leader];
+    const Vec3 first = scene.corner_position(leader, 0);
+    for (const std::uint32_t id : ids) {
+        const Polygon& q = scene.polygons[id];
+        const bool member = joins(id) && same_normal(q.normal, leader.normal) &&
+                            in_plane_group(leader.normal, first, scene.corner_position(q, 0));
+        (member ? best.members : best.others).push_back(id);
+    }
+    return best;
 }
 
 // Writes one cell's packets at `out`, one lane at a time, each packet completed on the stack and
@@ -63,6 +143,12 @@ public:
         open_ = true;
     }
 
+    /// Ends the packet being filled: the next lane starts a new one.
+    void end_packet() {
+        flush();
+        lane_ = 4;
+    }
+
     /// Copies out the packet being filled, if any.
     void flush() {
         if (open_) {
@@ -78,6 +164,36 @@ private:
     int lane_ = 4;
     bool open_ = false;
 };
+
+// A polygon's fan triangles, one lane each, for the polygons in order.
+void write_fans(const Scene& scene, std::span<const std::uint32_t> polygons, PacketWriter& writer,
+                double& scale) {
+    for (const std::uint32_t id : polygons) {
+        const Polygon& p = scene.polygons[id];
+        const std::uint32_t* triangle =
+            p.corner_count == 3 ? scene.corners.data() + p.first_corner : nullptr;
+        Vec3 fan[3];
+        fan[0] = scene.corner_position(p, 0);
+        for (std::uint32_t k = 1; k + 1 < p.corner_count; ++k) {
+            fan[1] = scene.corner_position(p, k);
+            fan[2] = scene.corner_position(p, k + 1);
+            writer.add(fan, id, triangle, scale);
+        }
+    }
+}
+
+// A cell's header: its bounds (voxel_bounds.h, in front of its ids), then the plane group's
+// first polygon and packet count as bits (CellView). Returns where the packets go.
+unsigned char* write_header(unsigned char* out, std::span<const std::uint32_t> ids,
+                            const PlaneGroup& group) {
+    const std::array<float, 6> box = bounds_before(ids);
+    const auto group_packets = static_cast<std::uint32_t>((group.lanes + 3) / 4);
+    float header[8] = {box[0], box[1], box[2], box[3], box[4], box[5], 0.0f, 0.0f};
+    std::memcpy(&header[6], &group.leader, sizeof(std::uint32_t));
+    std::memcpy(&header[7], &group_packets, sizeof(std::uint32_t));
+    std::memcpy(out, header, sizeof(header));
+    return out + sizeof(header);
+}
 
 }  // namespace
 
@@ -95,8 +211,14 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
         first_[c] = static_cast<std::uint32_t>(blocks);
         const std::span<const std::uint32_t> ids = ids_of(c);
         if (!ids.empty()) {
-            blocks += (with_bounds_ ? kHeaderBlocks : 0) +
-                      kPacketBlocks * ((lanes_of(scene, ids) + 3) / 4);
+            // A plane group in front takes packets of its own (with_bounds_ only: the header
+            // names it).
+            const PlaneGroup group = with_bounds_ ? plane_group_of(scene, ids) : PlaneGroup{};
+            const std::uint64_t packets =
+                group.leader == kNoPlaneGroup
+                    ? (lanes_of(scene, ids) + 3) / 4
+                    : (group.lanes + 3) / 4 + (lanes_of(scene, group.others) + 3) / 4;
+            blocks += (with_bounds_ ? kHeaderBlocks : 0) + kPacketBlocks * packets;
         }
         // Below 2^32 - 1, so that no count of blocks is all ones, which an octree node reads
         // as "interior" (octree.h).
@@ -121,25 +243,18 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
                 continue;
             }
             auto* out = reinterpret_cast<unsigned char*>(blocks_.data() + first_[c]);
+            const PlaneGroup group = with_bounds_ ? plane_group_of(scene, ids) : PlaneGroup{};
             if (with_bounds_) {
-                const std::array<float, 6> box = bounds_before(ids);
-                const Block header[kHeaderBlocks] = {{{box[0], box[1], box[2], box[3]}},
-                                                     {{box[4], box[5], 0.0f, 0.0f}}};
-                std::memcpy(out, header, sizeof(header));
-                out += sizeof(header);
+                static_assert(kHeaderBlocks * sizeof(Block) == sizeof(float[8]));
+                out = write_header(out, ids, group);
             }
             PacketWriter writer(out);
-            for (const std::uint32_t id : ids) {
-                const Polygon& p = scene.polygons[id];
-                const std::uint32_t* triangle =
-                    p.corner_count == 3 ? scene.corners.data() + p.first_corner : nullptr;
-                Vec3 fan[3];
-                fan[0] = scene.corner_position(p, 0);
-                for (std::uint32_t k = 1; k + 1 < p.corner_count; ++k) {
-                    fan[1] = scene.corner_position(p, k);
-                    fan[2] = scene.corner_position(p, k + 1);
-                    writer.add(fan, id, triangle, scale);
-                }
+            if (group.leader == kNoPlaneGroup) {
+                write_fans(scene, ids, writer, scale);
+            } else {
+                write_fans(scene, group.members, writer, scale);
+                writer.end_packet();
+                write_fans(scene, group.others, writer, scale);
             }
             writer.flush();
         }

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <span>
 #include <vector>
@@ -75,10 +76,19 @@ inline int cell_packet_candidates(const CellPacket& packet, const FloatRay& ray)
     return bvh::fan_candidates(packet.corner, ray) | static_cast<int>(always_lanes(packet));
 }
 
+/// CellView::plane_polygon of a cell with no plane group in front.
+inline constexpr std::uint32_t kNoPlaneGroup = 0xffffffffu;
+
 /// A voxel's packets, and its bounds (voxel_bounds.h) where the structure has them.
 struct CellView {
     const float* bounds = nullptr;  ///< lo x y z, hi x y z; null when the structure has none
     std::span<const CellPacket> packets;
+    /// With bounds: the first `plane_packets` packets hold exactly the fan triangles of the
+    /// cell's largest plane group (in_plane_group, ray_polygon.h) of at least four lanes, whose
+    /// first polygon is `plane_polygon` (kNoPlaneGroup and 0: none). A ray leaving a polygon of
+    /// that group may skip them (plane_group_certainly_missed).
+    std::uint32_t plane_polygon = kNoPlaneGroup;
+    std::uint32_t plane_packets = 0;
 };
 
 class CellPackets {
@@ -106,14 +116,16 @@ public:
         }
         const Block* begin = blocks_.data() + first;
         const Block* end = begin + count;
-        const float* bounds = nullptr;
+        CellView view;
         if (with_bounds_) {
-            bounds = begin->f;
+            view.bounds = begin->f;
+            std::memcpy(&view.plane_polygon, &begin[1].f[2], sizeof(std::uint32_t));
+            std::memcpy(&view.plane_packets, &begin[1].f[3], sizeof(std::uint32_t));
             begin += kHeaderBlocks;
         }
-        return {
-            bounds,
-            {reinterpret_cast<const CellPacket*>(begin), reinterpret_cast<const CellPacket*>(end)}};
+        view.packets = {reinterpret_cast<const CellPacket*>(begin),
+                        reinterpret_cast<const CellPacket*>(end)};
+        return view;
     }
     /// Asks the cache for the start of the header and packets from block `first`.
     void prefetch_blocks(std::uint32_t first) const { prefetch(blocks_.data() + first); }
@@ -129,7 +141,8 @@ private:
     struct alignas(16) Block {
         float f[4];
     };
-    static constexpr std::uint32_t kHeaderBlocks = 2;  ///< the bounds: 6 floats, 2 spare
+    /// The bounds (6 floats), then the plane group's polygon and packet count (as bits).
+    static constexpr std::uint32_t kHeaderBlocks = 2;
     static constexpr std::uint32_t kPacketBlocks = sizeof(CellPacket) / sizeof(Block);
     static_assert(sizeof(CellPacket) % sizeof(Block) == 0);
 

@@ -65,16 +65,37 @@ class PolygonSieve {
 public:
     /// `scale`: at least the boxes' and the packets' scale (the float tests' error bounds).
     /// `line`: the ray's line probe, which the caller keeps (it shares its reciprocals).
+    /// `t_min`: the least t the query asks about.
     PolygonSieve(const Scene& scene, const PolygonBoxes& boxes, double scale, const Ray& ray,
-                 const LineProbe& line, TraceCounters& counters)
+                 const LineProbe& line, double t_min, TraceCounters& counters)
         : scene_(scene),
           boxes_(boxes),
           line_(line),
           triangle_(ray, scale),
           counters_(counters),
-          ray_(ray) {}
+          ray_(ray),
+          scale_(scale),
+          t_min_(t_min) {}
 
     const LineProbe& line() const { return line_; }
+
+    /// The cell's packets this ray must test: all of them, or for a ray leaving a polygon of the
+    /// cell's plane group (cell_packets.h) those after the group's, when its exact tests
+    /// certainly all miss (plane_group_certainly_missed). The group
+    /// is the polygons the float pre-filter keeps for a ray starting in their plane, to no end.
+    std::span<const CellPacket> packets_to_test(const CellView& cell) const {
+        if (cell.plane_packets != 0 && ray_.leaves != kLeavesNoPolygon) {
+            const Polygon& leader = scene_.polygons[cell.plane_polygon];
+            const Vec3& left = scene_.polygons[ray_.leaves].normal;
+            if (left.x == leader.normal.x && left.y == leader.normal.y &&
+                left.z == leader.normal.z &&
+                plane_group_certainly_missed(ray_, leader.normal, scene_.corner_position(leader, 0),
+                                             scale_, t_min_)) {
+                return cell.packets.subspan(cell.plane_packets);
+            }
+        }
+        return cell.packets;
+    }
 
 protected:
     /// Calls test(id, packet.position, lane) for each polygon of a voxel's packets that passes
@@ -146,6 +167,8 @@ protected:
 
 private:
     const Ray& ray_;
+    double scale_;
+    double t_min_;
     std::optional<RaySpace> space_;
 
     // The polygons of the packet's `lanes` (those the float test kept, or every used one).
@@ -176,7 +199,7 @@ class NearestHitSearch : public PolygonSieve {
 public:
     NearestHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const Ray& ray,
                      const LineProbe& line, Interval t, TraceCounters& counters)
-        : PolygonSieve(scene, boxes, scale, ray, line, counters), nearest_(t) {}
+        : PolygonSieve(scene, boxes, scale, ray, line, t.min, counters), nearest_(t) {}
 
     void test(std::span<const CellPacket> packets);
     const std::optional<Hit>& nearest() const { return nearest_.best(); }
@@ -207,7 +230,7 @@ class AnyHitSearch : public PolygonSieve {
 public:
     AnyHitSearch(const Scene& scene, const PolygonBoxes& boxes, double scale, const Ray& ray,
                  const LineProbe& line, Interval t, TraceCounters& counters)
-        : PolygonSieve(scene, boxes, scale, ray, line, counters), t_(t) {}
+        : PolygonSieve(scene, boxes, scale, ray, line, t.min, counters), t_(t) {}
 
     /// True as soon as one of them is hit.
     bool test(std::span<const CellPacket> packets);

@@ -101,7 +101,7 @@ template <class Walk>
     NearHitRule rule(parts.rules, slack);
     walk(inside, line.inverse, [&](const CellView& cell, double t_exit) {
         if (voxel_may_hold_hit(cell, search.line())) {
-            search.test(cell.packets);
+            search.test(search.packets_to_test(cell));
         }
         return rule.ends_walk(search.nearest(), t_exit, counters);
     });
@@ -128,7 +128,7 @@ template <class Walk>
     bool hit = false;
     walk(inside, line.inverse, [&](const CellView& cell, double) {
         ++counters.voxels_stepped;
-        hit = voxel_may_hold_hit(cell, search.line()) && search.test(cell.packets);
+        hit = voxel_may_hold_hit(cell, search.line()) && search.test(search.packets_to_test(cell));
         return hit;
     });
     return hit;
