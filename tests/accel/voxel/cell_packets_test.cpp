@@ -71,9 +71,10 @@ TEST(CellPackets, OneLanePerFanTriangleAndBoundsInFront) {
     EXPECT_EQ(packets.scale(), 3.0);
 }
 
-// With bounds, a cell's largest plane group of at least four lanes goes first, in packets of its
-// own, and the header names its first polygon and how many packets it takes.
-TEST(CellPackets, PlaneGroupGoesFirstInPacketsOfItsOwn) {
+// With bounds, a cell's largest plane group of at least four lanes goes first, in the cell's
+// order, and the header names its first polygon and the packets it fills alone; the cell takes
+// no more packets than without.
+TEST(CellPackets, PlaneGroupGoesFirst) {
     test::SceneBuilder b;
     b.add_polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // 0: z = 0, 2 lanes
     b.add_polygon({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}});             // 1: z = 5, 1 lane
@@ -81,7 +82,7 @@ TEST(CellPackets, PlaneGroupGoesFirstInPacketsOfItsOwn) {
     b.add_polygon({{4, 0, 0}, {5, 0, 0}, {4, 1, 0}});             // 3: z = 0, 1 lane
     b.add_polygon({{0, 0, 7}, {1, 0, 7}, {0, 1, 7}});             // 4: z = 7, 1 lane
     const Scene scene = std::move(b.scene());
-    const std::vector<std::uint32_t> ids = {0, 1, 2, 3, 4};
+    const std::vector<std::uint32_t> ids = {1, 0, 4, 2, 3};
     std::vector<std::uint32_t> slots(6, 0u);
     slots.insert(slots.end(), ids.begin(), ids.end());
     const std::span<const std::uint32_t> cell_ids =
@@ -90,14 +91,16 @@ TEST(CellPackets, PlaneGroupGoesFirstInPacketsOfItsOwn) {
                                   [&](std::size_t) { return cell_ids; });
     const CellView cell = with_bounds.cell(0);
     EXPECT_EQ(cell.plane_polygon, 0u);
-    ASSERT_EQ(cell.plane_packets, 2u);  // 5 lanes of z = 0
-    ASSERT_EQ(cell.packets.size(), 3u);
-    EXPECT_EQ(lane_polygons(cell.packets.first(2)), (std::multiset<std::uint32_t>{0, 0, 2, 2, 3}));
-    EXPECT_EQ(lane_polygons(cell.packets.subspan(2)), (std::multiset<std::uint32_t>{1, 4}));
-    // Without bounds there is no header to name it: the cell's order, packed.
+    ASSERT_EQ(cell.plane_packets, 1u);  // 5 lanes of z = 0: one packet alone
+    ASSERT_EQ(cell.packets.size(), 2u);
+    EXPECT_EQ(lane_polygons(cell.packets.first(1)), (std::multiset<std::uint32_t>{0, 0, 2, 2}));
+    EXPECT_EQ(cell.packets[1].polygon[0], 3u);  // the group's last lane, then the rest in order
+    EXPECT_EQ(cell.packets[1].polygon[1], 1u);
+    EXPECT_EQ(cell.packets[1].polygon[2], 4u);
+    // Without bounds there is no header to name it: the cell's order.
     const CellPackets plain(scene, 1, 0, [&](std::size_t) { return cell_ids; });
     EXPECT_EQ(plain.cell(0).plane_packets, 0u);
-    EXPECT_EQ(plain.cell(0).packets.size(), 2u);
+    EXPECT_EQ(plain.cell(0).packets[0].polygon[0], 1u);
 }
 
 // A triangle's lane carries its corners' position indices in the polygon's own loop order, so that

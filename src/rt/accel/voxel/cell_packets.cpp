@@ -29,17 +29,17 @@ std::uint64_t lanes_of(const Scene& scene, std::span<const std::uint32_t> ids) {
     return lanes;
 }
 
-// A cell's largest plane group (in_plane_group), when its fan triangles fill at least one packet:
-// its members, in the cell's order, go first, in packets of their own. Only polygons whose
-// corners are all finite floats join (the packets' scale then covers their corner 0), and only
-// cells of at most kMostGroupedPolygons polygons are searched (the search is quadratic).
+// A cell's largest plane group (in_plane_group) goes first, its members in the cell's order, and
+// the packets it fills alone are named in the cell's header (CellView). The packets a cell takes
+// do not change. Only polygons whose corners are all finite floats join (the packets' scale then
+// covers their corner 0), and only cells of 2 to 64 polygons are searched (a bit a polygon; the
+// search is quadratic, on a hash of each normal's bits first).
 constexpr std::size_t kMostGroupedPolygons = 64;
 
 struct PlaneGroup {
     std::uint32_t leader = kNoPlaneGroup;
-    std::uint64_t lanes = 0;             ///< the members' fan triangles
-    std::vector<std::uint32_t> members;  ///< in the cell's order
-    std::vector<std::uint32_t> others;   ///< the rest, in the cell's order
+    std::uint32_t lanes = 0;    ///< the members' fan triangles
+    std::uint64_t members = 0;  ///< bit k: the cell's k-th polygon
 };
 
 // Bit for bit: the exact test's denominators of two polygons are then the same for any ray.
@@ -47,6 +47,11 @@ bool same_normal(const Vec3& a, const Vec3& b) {
     return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
            std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
            std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
+std::uint64_t normal_hash(const Vec3& n) {
+    return std::bit_cast<std::uint64_t>(n.x) ^ (std::bit_cast<std::uint64_t>(n.y) * 3) ^
+           (std::bit_cast<std::uint64_t>(n.z) * 7);
 }
 
 bool corners_are_floats(const Scene& scene, const Polygon& p) {
@@ -62,49 +67,41 @@ bool corners_are_floats(const Scene& scene, const Polygon& p) {
 }
 
 PlaneGroup plane_group_of(const Scene& scene, std::span<const std::uint32_t> ids) {
-    PlaneGroup best;
     if (ids.size() < 2 || ids.size() > kMostGroupedPolygons) {
-        return best;
-    }
-    const auto lanes = [&](std::uint32_t id) -> std::uint64_t {
-        const std::uint32_t corners = scene.polygons[id].corner_count;
-        return corners > 2 ? corners - 2 : 0;
-    };
-    const auto joins = [&](std::uint32_t id) {
-        const Polygon& p = scene.polygons[id];
-        return p.corner_count >= 3 && corners_are_floats(scene, p);
-    };
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-        const Polygon& leader = scene.polygons[ids[i]];
-        if (!joins(ids[i])) {
-            continue;
-        }
-        const Vec3 first = scene.corner_position(leader, 0);
-        std::uint64_t group_lanes = 0;
-        for (std::size_t j = i; j < ids.size(); ++j) {
-            const Polygon& q = scene.polygons[ids[j]];
-            if (joins(ids[j]) && same_normal(q.normal, leader.normal) &&
-                in_plane_group(leader.normal, first, scene.corner_position(q, 0))) {
-                group_lanes += lanes(ids[j]);
-            }
-        }
-        if (group_lanes > best.lanes) {
-            best.leader = ids[i];
-            best.lanes = group_lanes;
-        }
-    }
-    if (best.lanes < 4) {
         return {};
     }
-    const Polygon& leader = scene.polygons[best.leader];
-    const Vec3 first = scene.corner_position(leader, 0);
-    for (const std::uint32_t id : ids) {
-        const Polygon& q = scene.polygons[id];
-        const bool member = joins(id) && same_normal(q.normal, leader.normal) &&
-                            in_plane_group(leader.normal, first, scene.corner_position(q, 0));
-        (member ? best.members : best.others).push_back(id);
+    std::array<std::uint64_t, kMostGroupedPolygons> hash{};
+    std::uint64_t joining = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        const Polygon& p = scene.polygons[ids[i]];
+        hash[i] = normal_hash(p.normal);
+        if (p.corner_count >= 3 && corners_are_floats(scene, p)) {
+            joining |= std::uint64_t{1} << i;
+        }
     }
-    return best;
+    PlaneGroup best;
+    for (std::uint64_t left = joining; left != 0; left &= left - 1) {
+        const auto i = static_cast<std::size_t>(std::countr_zero(left));
+        const Polygon& leader = scene.polygons[ids[i]];
+        const Vec3 first = scene.corner_position(leader, 0);
+        PlaneGroup group{ids[i], 0, 0};
+        for (std::uint64_t rest = left; rest != 0; rest &= rest - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(rest));
+            if (hash[j] != hash[i]) {
+                continue;
+            }
+            const Polygon& q = scene.polygons[ids[j]];
+            if (same_normal(q.normal, leader.normal) &&
+                in_plane_group(leader.normal, first, scene.corner_position(q, 0))) {
+                group.lanes += q.corner_count - 2;
+                group.members |= std::uint64_t{1} << j;
+            }
+        }
+        if (group.lanes > best.lanes) {
+            best = group;
+        }
+    }
+    return best.lanes >= 4 ? best : PlaneGroup{};
 }
 
 // Writes one cell's packets at `out`, one lane at a time, each packet completed on the stack and
@@ -143,12 +140,6 @@ public:
         open_ = true;
     }
 
-    /// Ends the packet being filled: the next lane starts a new one.
-    void end_packet() {
-        flush();
-        lane_ = 4;
-    }
-
     /// Copies out the packet being filled, if any.
     void flush() {
         if (open_) {
@@ -165,10 +156,15 @@ private:
     bool open_ = false;
 };
 
-// A polygon's fan triangles, one lane each, for the polygons in order.
-void write_fans(const Scene& scene, std::span<const std::uint32_t> polygons, PacketWriter& writer,
-                double& scale) {
-    for (const std::uint32_t id : polygons) {
+// A polygon's fan triangles, one lane each, for the polygons in order whose bit in `chosen` is
+// `wanted` (all of them past the 64th).
+void write_fans(const Scene& scene, std::span<const std::uint32_t> polygons, std::uint64_t chosen,
+                bool wanted, PacketWriter& writer, double& scale) {
+    for (std::size_t n = 0; n < polygons.size(); ++n) {
+        if (n < 64 && (((chosen >> n) & 1u) != 0) != wanted) {
+            continue;
+        }
+        const std::uint32_t id = polygons[n];
         const Polygon& p = scene.polygons[id];
         const std::uint32_t* triangle =
             p.corner_count == 3 ? scene.corners.data() + p.first_corner : nullptr;
@@ -187,7 +183,7 @@ void write_fans(const Scene& scene, std::span<const std::uint32_t> polygons, Pac
 unsigned char* write_header(unsigned char* out, std::span<const std::uint32_t> ids,
                             const PlaneGroup& group) {
     const std::array<float, 6> box = bounds_before(ids);
-    const auto group_packets = static_cast<std::uint32_t>((group.lanes + 3) / 4);
+    const auto group_packets = static_cast<std::uint32_t>(group.lanes / 4);  // filled alone
     float header[8] = {box[0], box[1], box[2], box[3], box[4], box[5], 0.0f, 0.0f};
     std::memcpy(&header[6], &group.leader, sizeof(std::uint32_t));
     std::memcpy(&header[7], &group_packets, sizeof(std::uint32_t));
@@ -211,14 +207,8 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
         first_[c] = static_cast<std::uint32_t>(blocks);
         const std::span<const std::uint32_t> ids = ids_of(c);
         if (!ids.empty()) {
-            // A plane group in front takes packets of its own (with_bounds_ only: the header
-            // names it).
-            const PlaneGroup group = with_bounds_ ? plane_group_of(scene, ids) : PlaneGroup{};
-            const std::uint64_t packets =
-                group.leader == kNoPlaneGroup
-                    ? (lanes_of(scene, ids) + 3) / 4
-                    : (group.lanes + 3) / 4 + (lanes_of(scene, group.others) + 3) / 4;
-            blocks += (with_bounds_ ? kHeaderBlocks : 0) + kPacketBlocks * packets;
+            blocks += (with_bounds_ ? kHeaderBlocks : 0) +
+                      kPacketBlocks * ((lanes_of(scene, ids) + 3) / 4);
         }
         // Below 2^32 - 1, so that no count of blocks is all ones, which an octree node reads
         // as "interior" (octree.h).
@@ -243,6 +233,7 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
                 continue;
             }
             auto* out = reinterpret_cast<unsigned char*>(blocks_.data() + first_[c]);
+            // Only a cell with bounds has a header to name its plane group.
             const PlaneGroup group = with_bounds_ ? plane_group_of(scene, ids) : PlaneGroup{};
             if (with_bounds_) {
                 static_assert(kHeaderBlocks * sizeof(Block) == sizeof(float[8]));
@@ -250,11 +241,10 @@ CellPackets::CellPackets(const Scene& scene, std::size_t cells, std::uint32_t bo
             }
             PacketWriter writer(out);
             if (group.leader == kNoPlaneGroup) {
-                write_fans(scene, ids, writer, scale);
+                write_fans(scene, ids, 0, false, writer, scale);
             } else {
-                write_fans(scene, group.members, writer, scale);
-                writer.end_packet();
-                write_fans(scene, group.others, writer, scale);
+                write_fans(scene, ids, group.members, true, writer, scale);
+                write_fans(scene, ids, group.members, false, writer, scale);
             }
             writer.flush();
         }

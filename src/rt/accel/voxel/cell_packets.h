@@ -83,10 +83,10 @@ inline constexpr std::uint32_t kNoPlaneGroup = 0xffffffffu;
 struct CellView {
     const float* bounds = nullptr;  ///< lo x y z, hi x y z; null when the structure has none
     std::span<const CellPacket> packets;
-    /// With bounds: the first `plane_packets` packets hold exactly the fan triangles of the
-    /// cell's largest plane group (in_plane_group, ray_polygon.h) of at least four lanes, whose
-    /// first polygon is `plane_polygon` (kNoPlaneGroup and 0: none). A ray leaving a polygon of
-    /// that group may skip them (plane_group_certainly_missed).
+    /// With bounds: the cell's largest plane group (in_plane_group, ray_polygon.h) of at least
+    /// four lanes comes first, its first polygon `plane_polygon`, and fills the first
+    /// `plane_packets` packets alone (kNoPlaneGroup and 0: none). A ray leaving a polygon with
+    /// the group's normal may skip them (plane_group_certainly_missed).
     std::uint32_t plane_polygon = kNoPlaneGroup;
     std::uint32_t plane_packets = 0;
 };
