@@ -115,22 +115,28 @@ inline double plane_depth(const Ray& ray, const Vec3& normal, const Vec3& first_
     return dot(normal, first_corner - ray.origin) / denominator;
 }
 
+/// Whether a ray with direction `d` certainly meets a plane away from edge-on, given
+/// `denominator` = dot(normal, d): above the exact test's limit, kGrazing times the direction's
+/// length as RaySpace computes it, which is below sqrt(3) (1 + 2^-50) times the largest
+/// |component|; 1.75 times covers it (rounding is monotone, and where the products fall below the
+/// smallest subnormal both round to 0). False for a NaN.
+inline bool certainly_not_edge_on(double denominator, const Vec3& d) {
+    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    return std::fabs(denominator) > (kGrazing * 1.75) * largest;
+}
+
 /// True only if the exact test certainly misses the polygon (unit `normal`, corner 0
 /// `first_corner`) within `t` by its plane alone: the ray meets the plane away from edge-on, at a
 /// t outside the interval. The exact test's own first step, on the same values with the same
 /// operations (plane_depth), decided without the ray's RaySpace, so that a ray whose every
 /// candidate fails here never makes one: a ray leaving a surface beside coplanar neighbours, or
-/// a shadow feeler ending on its light's polygon. The exact test's edge-on limit is kGrazing
-/// times the direction's length as RaySpace computes it, below sqrt(3) (1 + 2^-50) times the
-/// largest |component|; 1.75 times covers it (rounding is monotone, and where the products fall
-/// below the smallest subnormal both round to 0). False when unsure, and for a NaN.
+/// a shadow feeler ending on its light's polygon ("away from edge-on": certainly_not_edge_on).
+/// False when unsure, and for a NaN.
 inline bool plane_certainly_missed(const Ray& ray, const Vec3& normal, const Vec3& first_corner,
                                    Interval t) {
-    const Vec3& d = ray.direction;
-    const double denominator = dot(normal, d);
+    const double denominator = dot(normal, ray.direction);
     const double along = plane_depth(ray, normal, first_corner, denominator);
-    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
-    return std::fabs(denominator) > (kGrazing * 1.75) * largest && std::isfinite(along) &&
+    return certainly_not_edge_on(denominator, ray.direction) && std::isfinite(along) &&
            !(along > t.min && along < t.max);
 }
 
@@ -148,20 +154,19 @@ inline bool in_plane_group(const Vec3& normal, const Vec3& leader, const Vec3& f
 /// True only if the exact test certainly misses, within any interval whose min is `t_min`, every
 /// polygon of the plane group of a polygon with corner 0 `leader` (in_plane_group; the group's
 /// normal bit for bit `normal`) whose corner 0 has no |coordinate| above `scale`: the ray meets
-/// their plane away from edge-on and so near its origin that each one's plane t (plane_depth,
-/// computed) is below t_min. For a ray leaving a polygon of a flat surface, whose other polygons
-/// the float pre-filter keeps for nothing. The exact test's numerator dot(n, q0 - o) is off from
-/// the real one by under 7u |n|_1 (|q0| + |o|); the group's spread is 2^-40 |n|_1 |q0| and the
-/// leader's plane offset from the origin is measured: their sum, with 2^-48 for the roundings,
-/// times (1 + 2^-46), is compared with t_min |dot(n, d)| (1 - 2^-48). False when unsure, for a
-/// NaN, or t_min <= 0.
+/// their plane away from edge-on (certainly_not_edge_on) and so near its origin that each one's
+/// plane t (plane_depth, computed) is below t_min. For a ray leaving a polygon of a flat surface,
+/// whose other polygons the float pre-filter keeps for nothing. The exact test's numerator dot(n,
+/// q0 - o) is off from the real one by under 7u |n|_1 (|q0| + |o|); the group's spread is 2^-40
+/// |n|_1 |q0| and the leader's plane offset from the origin is measured: their sum, with 2^-48 for
+/// the roundings, times (1 + 2^-46), is compared with t_min |dot(n, d)| (1 - 2^-48). False when
+/// unsure, for a NaN, or t_min <= 0.
 inline bool plane_group_certainly_missed(const Ray& ray, const Vec3& normal, const Vec3& leader,
                                          double scale, double t_min) {
     const Vec3& d = ray.direction;
     const Vec3& o = ray.origin;
     const double denominator = std::fabs(dot(normal, d));
-    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
-    if (!(denominator > (kGrazing * 1.75) * largest)) {
+    if (!certainly_not_edge_on(denominator, d)) {
         return false;  // near edge-on the exact test takes corner depths
     }
     const double n1 = std::fabs(normal.x) + std::fabs(normal.y) + std::fabs(normal.z);
