@@ -11,6 +11,7 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "rt/app/help.h"
@@ -58,6 +59,13 @@ bool another_rank_speaks() {
     return false;
 #endif
 }
+
+// A rank that stays quiet about a bad command line lets rank 0 say it first. mpirun ends the whole
+// job at the first rank that exits non-zero: a quiet rank that ended at once could cut rank 0 off
+// before it printed a word. So the quiet rank waits for the launcher to end the job when rank 0
+// exits; the bound ends the wait where rank 0's command line was good (an MPMD job given this rank
+// alone a bad switch) and rank 0 waits on this rank instead.
+constexpr std::chrono::seconds kQuietRankWait{10};
 
 // The command line, or the exception that says what is wrong with it, said by rank 0 alone.
 rt::Options read_command_line(int argc, char** argv) {
@@ -182,9 +190,7 @@ int run(int argc, char** argv) {
     return kOk;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run_and_report(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const rt::InputError& e) {
@@ -220,4 +226,13 @@ int main(int argc, char** argv) {
         print_line(std::string("rt: internal error: ") + e.what());
         return kInternal;
     }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int status = run_and_report(argc, argv);
+    if (quiet_failure) {
+        std::this_thread::sleep_for(kQuietRankWait);
+    }
+    return status;
 }
