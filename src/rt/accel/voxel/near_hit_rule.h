@@ -6,6 +6,8 @@
 // gives up after so many voxels without any hit.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -30,8 +32,21 @@ struct WalkRules {
 /// plus the world's size) covers it; both lengths are bounded from the safe side without square
 /// roots. The walk starts and ends that much beyond the interval and
 /// accepts a hit only that much before a voxel's exit, so it stays exact wherever the origin is.
-/// Zero with -of.
-double rounding_slack(const Ray& ray, const Box3& world, const WalkRules& rules);
+/// Zero with -of. Inline: asked once a voxel query, where its division overlaps the line probe's.
+inline double rounding_slack(const Ray& ray, const Box3& world, const WalkRules& rules) {
+    if (rules.no_fudge) {
+        return 0.0;
+    }
+    // Bounds that need no square root, each at least the length it stands for: the sum of
+    // |components| for the distance, the largest |component| for the direction's length. A
+    // larger slack only walks a little further; the answers stay exact.
+    const Vec3 centre = (world.lo + world.hi) * 0.5;
+    const Vec3 away = ray.origin - centre;
+    const Vec3& d = ray.direction;
+    const double distance = std::fabs(away.x) + std::fabs(away.y) + std::fabs(away.z);
+    const double direction = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    return 0x1p-29 * (distance + world.largest_extent()) / direction;
+}
 
 /// The interval to walk for a ray asked about `t`: `t` widened by the slack at both ends.
 inline Interval walk_interval(Interval t, double slack) {
