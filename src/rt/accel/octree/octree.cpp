@@ -62,16 +62,23 @@ Octree::Octree(const Scene& scene, const AccelSettings& settings)
     look_ahead_ = Octree::memory_bytes() > kLookAheadBytes;
 }
 
-// The queries' walk: visit(cell, t_exit) with each leaf's packets, and with kLookAhead each next
-// leaf's asked of the cache as soon as the walk knows it.
-template <bool kLookAhead, class Visit>
+// The queries' walk: visit(cell, t_exit) with each leaf's packets; for a structure too big to stay
+// in the cache (look_ahead_), each next leaf's asked of the cache as soon as the walk knows it.
+template <class Visit>
 void Octree::walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const {
-    walk_octree_leaves<kLookAhead>(
-        tree_, walk_nodes_.data(), &top_, ray, inverse, inside,
-        [&](double t_exit, const OctreeLeafAt& leaf) {
-            return visit(packets_.blocks(leaf.node->first, leaf.node->count), t_exit);
-        },
-        [&](const OctreeNode* node) { packets_.prefetch_blocks(node->first); });
+    const auto visit_leaf = [&](double t_exit, const OctreeLeafAt& leaf) {
+        return visit(packets_.blocks(leaf.node->first, leaf.node->count), t_exit);
+    };
+    const auto prefetch_leaf = [&](const OctreeNode* node) {
+        packets_.prefetch_blocks(node->first);
+    };
+    if (look_ahead_) {
+        walk_octree_leaves<true>(tree_, walk_nodes_.data(), &top_, ray, inverse, inside, visit_leaf,
+                                 prefetch_leaf);
+    } else {
+        walk_octree_leaves<false>(tree_, walk_nodes_.data(), &top_, ray, inverse, inside,
+                                  visit_leaf, prefetch_leaf);
+    }
 }
 
 VoxelSearchParts Octree::search_parts() const {
@@ -81,22 +88,14 @@ VoxelSearchParts Octree::search_parts() const {
 std::optional<Hit> Octree::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_closest_hit(search_parts(), ray, t, counters,
                              [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                                 if (look_ahead_) {
-                                     walk<true>(ray, inverse, inside, visit);
-                                 } else {
-                                     walk<false>(ray, inverse, inside, visit);
-                                 }
+                                 walk(ray, inverse, inside, visit);
                              });
 }
 
 bool Octree::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     return voxel_occluded(search_parts(), ray, t, counters,
                           [&](Interval inside, const Vec3& inverse, auto&& visit) {
-                              if (look_ahead_) {
-                                  walk<true>(ray, inverse, inside, visit);
-                              } else {
-                                  walk<false>(ray, inverse, inside, visit);
-                              }
+                              walk(ray, inverse, inside, visit);
                           });
 }
 

@@ -55,7 +55,7 @@ private:
     bool look_ahead_ = true;
 
     VoxelSearchParts search_parts() const;
-    template <bool kLookAhead, class Visit>
+    template <class Visit>
     void walk(const Ray& ray, const Vec3& inverse, Interval inside, Visit& visit) const;
 };
 

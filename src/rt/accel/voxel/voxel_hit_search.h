@@ -87,6 +87,8 @@ public:
         if (cell.plane_packets != 0 && ray_.leaves != kLeavesNoPolygon) {
             const Polygon& leader = scene_.polygons[cell.plane_polygon];
             const Vec3& left = scene_.polygons[ray_.leaves].normal;
+            // Component by component: Vec3's defaulted == cost 0.35 % more of twocubes4's
+            // instructions here.
             if (left.x == leader.normal.x && left.y == leader.normal.y &&
                 left.z == leader.normal.z &&
                 plane_group_certainly_missed(ray_, leader.normal, scene_.corner_position(leader, 0),
