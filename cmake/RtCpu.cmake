@@ -16,6 +16,15 @@ if(NOT CMAKE_CROSSCOMPILING AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|a
     set(rt_avx2_default ON)
   endif()
 endif()
+# No contraction either, whatever the target: GCC fuses a * b + c into one multiply-add wherever
+# the code is compiled for a CPU that has one, and an AVX-512 target has one even without -mfma
+# (as `-march=native` on a recent CPU, or a function's target attribute, would). Fused in one
+# place and not in another, the same expression rounds differently: the plane's question before
+# the exact test (lane_exact_hit.h) would no longer stand for the exact test's own arithmetic.
+# tests/integration/no_fused_multiply_add_test.cpp checks the programs for such instructions.
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  add_compile_options(-ffp-contract=off)
+endif()
 option(RT_AVX2 "Compile for x86-64 CPUs with AVX2 (default: ON if this machine has it)"
        ${rt_avx2_default})
 if(RT_AVX2)

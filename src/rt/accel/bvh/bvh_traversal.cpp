@@ -79,10 +79,6 @@ private:
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define RT_BVH_AVX2 1
 const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
-// The features of GCC's AVX-512 target below; every CPU with AVX-512 since Skylake-SP has them.
-const bool cpu_has_avx512 =
-    __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-    __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
 
 // packet_candidates of two consecutive packets at once. Bits 4-7: the second.
 __attribute__((target("avx2"))) inline int pair_candidates_avx2(const bvh::TrianglePacket* packet,
@@ -328,15 +324,6 @@ __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hi
     nearest_in_tree<true>(tree, scene, fray, t, tree.root, nearest, counters);
 }
 
-// The same walk compiled for AVX-512: the same AVX2 operations, with EVEX encodings and 32 vector
-// registers instead of 16. No FMA, so the same values bit for bit. Camera rays 2-8 % faster in the
-// lab on a Xeon with AVX-512 (docs/accelerators.md, "Built for AVX2"); the other walks stay AVX2.
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"), flatten)) void
-nearest_in_tree_avx512(const bvh::Hierarchy& tree, const Scene& scene, const FloatRay& fray,
-                       Interval t, NearestHit& nearest, TraceCounters& counters) {
-    nearest_in_tree<true>(tree, scene, fray, t, tree.root, nearest, counters);
-}
-
 __attribute__((target("avx2"), flatten)) void nearest_below_avx2(
     const bvh::Hierarchy& tree, const Scene& scene, const FloatRay& fray, Interval t,
     std::uint32_t start, NearestHitElsewhere& nearest, TraceCounters& counters) {
@@ -406,10 +393,6 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
         return nearest.best();
     }
 #ifdef RT_BVH_AVX2
-    if (cpu_has_avx512) {
-        nearest_in_tree_avx512(tree_, scene_, fray, t, nearest, counters);
-        return nearest.best();
-    }
     if (cpu_has_avx2) {
         nearest_in_tree_avx2(tree_, scene_, fray, t, nearest, counters);
         return nearest.best();
