@@ -4,7 +4,6 @@
 // as they do for a missing display, a build without them or a model they cannot read (and rt
 // under mpirun stops with one error). A file that is no library, put first on LD_LIBRARY_PATH
 // under the library's soname, stands for a missing library.
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,32 +13,11 @@
 
 #include "support/run_program.h"
 #include "support/temp_dir.h"
-#include <sys/wait.h>
 
 namespace rt::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string quoted(const std::string& word) {
-    std::string text = "'";
-    for (char c : word) {
-        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    }
-    return text + "'";
-}
-
-// Runs the shell command in `folder`; its exit status, and its output and errors together.
-ProgramResult run_shell(const std::string& command, const fs::path& folder) {
-    const fs::path output = folder / "output.txt";
-    const std::string line = fmt::format("cd {} && {} </dev/null >{} 2>&1", quoted(folder.string()),
-                                         command, quoted(output.string()));
-    const int status = std::system(line.c_str());  // NOLINT(concurrency-mt-unsafe)
-    ProgramResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_text(output);
-    return result;
-}
 
 TEST(OnDemandLibraries, NoProgramNamesSdlAssimpOrMpiInItsDynamicSection) {
     const TempDir dir;
@@ -49,7 +27,7 @@ TEST(OnDemandLibraries, NoProgramNamesSdlAssimpOrMpiInItsDynamicSection) {
     for (const char* program : {"rt", "show", "merge"}) {
         SCOPED_TRACE(program);
         const ProgramResult r =
-            run_shell("readelf -d " + quoted((bin_dir() / program).string()), dir.path());
+            run_shell("readelf -d " + shell_quote((bin_dir() / program).string()), dir.path());
         ASSERT_EQ(r.exit_code, 0) << r.out;
         ASSERT_NE(r.out.find("(NEEDED)"), std::string::npos) << r.out;  // read as expected
         for (const std::string& line : lines_of(r.out)) {
@@ -74,10 +52,11 @@ protected:
         // A display that is never reached: the library is loaded (and fails) before SDL looks.
         std::string command = fmt::format(
             "env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER LD_LIBRARY_PATH={} DISPLAY=:rt-none {} {}",
-            quoted(libraries.string()), environment, quoted((bin_dir() / program).string()));
+            shell_quote(libraries.string()), environment,
+            shell_quote((bin_dir() / program).string()));
         for (const std::string& a : args) {
             command += ' ';
-            command += quoted(a);
+            command += shell_quote(a);
         }
         return run_shell(command, dir_.path());
     }

@@ -7,8 +7,6 @@
 
 namespace rt::test {
 
-namespace {
-
 std::string shell_quote(const std::string& word) {
     std::string quoted = "'";
     for (char c : word) {
@@ -16,8 +14,6 @@ std::string shell_quote(const std::string& word) {
     }
     return quoted + "'";
 }
-
-}  // namespace
 
 ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
                           const std::filesystem::path& cwd, const std::filesystem::path& input) {
@@ -38,6 +34,19 @@ ProgramResult run_program(const std::string& program, const std::vector<std::str
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     result.out = read_text(out);
     result.err = read_text(err);
+    return result;
+}
+
+ProgramResult run_shell(const std::string& command, const std::filesystem::path& cwd) {
+    const TempDir capture;
+    const std::filesystem::path out = capture.path() / "out";
+    // In parentheses, so that the redirections apply to the whole of a pipeline.
+    const std::string line = "cd " + shell_quote(cwd.string()) + " && (" + command +
+                             ") </dev/null >" + shell_quote(out.string()) + " 2>&1";
+    const int status = std::system(line.c_str());  // NOLINT(concurrency-mt-unsafe)
+    ProgramResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_text(out);
     return result;
 }
 

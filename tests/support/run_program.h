@@ -18,4 +18,11 @@ ProgramResult run_program(const std::string& program, const std::vector<std::str
                           const std::filesystem::path& cwd,
                           const std::filesystem::path& input = "/dev/null");
 
+/// `word` in single quotes for the shell, its own single quotes escaped.
+std::string shell_quote(const std::string& word);
+
+/// Runs a shell command line (a pipeline if need be) in the folder `cwd`, standard input empty;
+/// `out` holds its output and errors together.
+ProgramResult run_shell(const std::string& command, const std::filesystem::path& cwd);
+
 }  // namespace rt::test

@@ -1,14 +1,17 @@
 // The float pre-filter of two consecutive packets of four fan triangles at once, with AVX2:
 // eight triangles per instruction. Lane for lane the operations of fan_candidates
-// (packet_prefilter.h), in the same order and with no FMA (target "avx2" alone does not allow
-// contraction), so every lane gets the four-wide test's answer. Shared by the BVH's leaf packets
-// and the voxel methods' cell packets, which lay their corners out alike.
+// (packet_prefilter.h), in the same order, each multiply-and-add step fused into one where the
+// build has FMA (fused_float8.h): then a lane may keep or drop a triangle the four-wide test
+// would not, where an edge function lies within a rounding of the margin, and both stay
+// conservative (float_ray.cpp, part 3). Shared by the BVH's leaf packets and the voxel methods'
+// cell packets, which lay their corners out alike.
 #pragma once
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define RT_PACKET_PAIR_AVX2 1
 
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/accel/float_prefilter/fused_float8.h"
 
 #include <immintrin.h>
 
@@ -30,13 +33,11 @@ __attribute__((target("avx2"))) inline unsigned fan_edge_candidates(const __m256
                                                                     const __m256 (&y)[3],
                                                                     __m256 size, __m256 edge_linear,
                                                                     __m256 edge_constant) {
-    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
-    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
-    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
-    const __m256 margin = _mm256_add_ps(
-        _mm256_mul_ps(
-            size, _mm256_add_ps(edge_linear, _mm256_mul_ps(size, _mm256_set1_ps(kRelativeSlack)))),
-        edge_constant);
+    const __m256 e0 = fused::mul_sub(x[1], y[2], _mm256_mul_ps(y[1], x[2]));
+    const __m256 e1 = fused::mul_sub(x[2], y[0], _mm256_mul_ps(y[2], x[0]));
+    const __m256 e2 = fused::mul_sub(x[0], y[1], _mm256_mul_ps(y[0], x[1]));
+    const __m256 margin = fused::mul_add(
+        size, fused::mul_add(size, _mm256_set1_ps(kRelativeSlack), edge_linear), edge_constant);
     const __m256 negative_margin = _mm256_sub_ps(_mm256_setzero_ps(), margin);
     const __m256 all_positive =
         _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_GE_OQ),
@@ -63,10 +64,8 @@ __attribute__((target("avx2"))) inline unsigned fan_pair_candidates(const FanCor
     __m256 size = _mm256_setzero_ps();
     for (int v = 0; v < 3; ++v) {
         const __m256 az = _mm256_sub_ps(load_fan_pair(first, second, v, ray.kz), oz);
-        x[v] = _mm256_sub_ps(_mm256_sub_ps(load_fan_pair(first, second, v, ray.kx), ox),
-                             _mm256_mul_ps(sx, az));
-        y[v] = _mm256_sub_ps(_mm256_sub_ps(load_fan_pair(first, second, v, ray.ky), oy),
-                             _mm256_mul_ps(sy, az));
+        x[v] = fused::sub_mul(_mm256_sub_ps(load_fan_pair(first, second, v, ray.kx), ox), sx, az);
+        y[v] = fused::sub_mul(_mm256_sub_ps(load_fan_pair(first, second, v, ray.ky), oy), sy, az);
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]), _mm256_andnot_ps(sign, y[v])));
     }

@@ -2,7 +2,9 @@
 //
 // Let m = S + |O| (S the largest |coordinate| of any box, |O| the largest |coordinate| of the
 // origin) and u = 2^-24, float's rounding unit. Every bound below is taken with a factor of at
-// least 2 to spare; kRelativeSlack = 2^-20 = 16u.
+// least 2 to spare; kRelativeSlack = 2^-20 = 16u. Each bound counts one rounding per operation;
+// where a multiply and an add are fused into one step (fused_float8.h), that step rounds once
+// instead of twice, so the same bound holds.
 //
 // 1. Where the exact test can hit. intersect_polygon decides by the winding number of the ray
 //    around the polygon's corners projected in double (RaySpace::project), each projected
