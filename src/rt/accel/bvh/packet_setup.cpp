@@ -79,6 +79,22 @@ __attribute__((target("avx2"))) inline __m256d pick(__m256d first, __m256d a, __
     return _mm256_blendv_pd(_mm256_blendv_pd(c, b, second), a, first);
 }
 
+// The next axis of each 64-bit lane's k: k + 1, taking 3 off where that made 3. (Functions, not
+// lambdas: a lambda does not take its enclosing function's target, so in a build for any x86-64
+// CPU its AVX2 operations would not compile.)
+__attribute__((target("avx2"))) inline __m256i next_axis(__m256i k) {
+    const __m256i three = _mm256_set1_epi64x(3);
+    const __m256i up = _mm256_add_epi64(k, _mm256_set1_epi64x(1));
+    return _mm256_sub_epi64(up, _mm256_and_si256(_mm256_cmpeq_epi64(up, three), three));
+}
+
+// The low words of the four 64-bit lanes of k, stored as four ints at out.
+__attribute__((target("avx2"))) inline void store_low_words(int* out, __m256i k) {
+    const __m256i low_words = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out),
+                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(k, low_words)));
+}
+
 // The four lanes' kx, ky and kz as set_up_four's masks pick kz (z0: x, z1: y, neither: z), and
 // kx, ky after it, (kz + 1) % 3 and (kz + 2) % 3: in 64-bit lanes, stored as four ints each.
 __attribute__((target("avx2"))) void store_axes(__m256d z0, __m256d z1, int first,
@@ -86,25 +102,13 @@ __attribute__((target("avx2"))) void store_axes(__m256d z0, __m256d z1, int firs
     // The masks are -1 or 0 and never both -1: kz = 2 + 2 z0 + z1.
     const __m256i m0 = _mm256_castpd_si256(z0);
     const __m256i m1 = _mm256_castpd_si256(z1);
-    const __m256i two = _mm256_set1_epi64x(2);
-    const __m256i one = _mm256_set1_epi64x(1);
-    const __m256i three = _mm256_set1_epi64x(3);
-    const __m256i kz = _mm256_add_epi64(two, _mm256_add_epi64(_mm256_add_epi64(m0, m0), m1));
-    // Adding 1, then taking 3 off where that made 3.
-    const auto next = [&](__m256i k) {
-        const __m256i up = _mm256_add_epi64(k, one);
-        return _mm256_sub_epi64(up, _mm256_and_si256(_mm256_cmpeq_epi64(up, three), three));
-    };
-    const __m256i kx = next(kz);
-    const __m256i ky = next(kx);
-    const __m256i low_words = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
-    const auto store = [&](int* out, __m256i k) {
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + first),
-                         _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(k, low_words)));
-    };
-    store(v.kz, kz);
-    store(v.kx, kx);
-    store(v.ky, ky);
+    const __m256i kz =
+        _mm256_add_epi64(_mm256_set1_epi64x(2), _mm256_add_epi64(_mm256_add_epi64(m0, m0), m1));
+    const __m256i kx = next_axis(kz);
+    const __m256i ky = next_axis(kx);
+    store_low_words(v.kz + first, kz);
+    store_low_words(v.kx + first, kx);
+    store_low_words(v.ky + first, ky);
 }
 
 // The four lanes' t.min and t.max: two loads of two Intervals each, regrouped.
