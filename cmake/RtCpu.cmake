@@ -24,7 +24,7 @@ endif()
 # (as `-march=native` on a recent CPU, or a function's target attribute, would). Fused in one
 # place and not in another, the same expression rounds differently: the plane's question before
 # the exact test (lane_exact_hit.h) would no longer stand for the exact test's own arithmetic.
-# tests/integration/no_fused_multiply_add_test.cpp checks the programs for such instructions.
+# tests/integration/fused_multiply_add_test.cpp checks the programs for double-precision ones.
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   add_compile_options(-ffp-contract=off)
 endif()

@@ -189,29 +189,40 @@ void order_pair(StackEntry& a, StackEntry& b) {
 }
 
 #ifdef RT_BVH_AVX2
-// The same test with one AVX2 register per plane, each plane's product and offset fused into one
-// step where the build has FMA (fused_float8.h).
-__attribute__((target("avx2"), always_inline)) inline void test_wide_boxes_avx2(
+// Where the line meets the near and far planes of axis k of the eight boxes at `base` (the node's
+// first plane), each plane's product and offset fused into one step where the build has FMA
+// (fused_float8.h).
+__attribute__((target("avx2"))) inline void axis_planes(const float* base, const bvh::BoxRay& ray,
+                                                        int k, __m256& near_t, __m256& far_t) {
+    const __m256 inverse = _mm256_set1_ps(_mm_cvtss_f32(ray.inverse[k].v));
+    near_t = fused::mul_sub(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.near_plane[k]), inverse,
+                            _mm256_set1_ps(_mm_cvtss_f32(ray.near_offset[k].v)));
+    far_t = fused::mul_sub(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.far_plane[k]), inverse,
+                           _mm256_set1_ps(_mm_cvtss_f32(ray.far_offset[k].v)));
+}
+
+// Forced inline in a build for AVX2: calling fused_float8.h's steps, the test below became too
+// big for GCC's flatten to take, and stayed a call per node. A build for any x86-64 CPU cannot
+// force it (the walk's template is plain code until inlined into its AVX2 caller).
+#ifdef __AVX2__
+#define RT_INLINE_IN_AVX2_BUILDS [[gnu::always_inline]] inline
+#else
+#define RT_INLINE_IN_AVX2_BUILDS
+#endif
+
+// The same test with one AVX2 register per plane.
+RT_INLINE_IN_AVX2_BUILDS __attribute__((target("avx2"))) void test_wide_boxes_avx2(
     const bvh::WideNode& node, const bvh::BoxRay& ray, float t_min, float t_max,
     bvh::WideHits& out) {
     const float* base = node.lo[0];
-    const auto planes = [&](int k, __m256& near_t, __m256& far_t) {
-        const __m256 inverse = _mm256_set1_ps(_mm_cvtss_f32(ray.inverse[k].v));
-        const __m256 near_offset = _mm256_set1_ps(_mm_cvtss_f32(ray.near_offset[k].v));
-        const __m256 far_offset = _mm256_set1_ps(_mm_cvtss_f32(ray.far_offset[k].v));
-        near_t = fused::mul_sub(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.near_plane[k]),
-                                inverse, near_offset);
-        far_t = fused::mul_sub(_mm256_load_ps(base + std::ptrdiff_t{2} * ray.far_plane[k]), inverse,
-                               far_offset);
-    };
     // The first axis's values start entry and exit, as in the SSE2 form (box_test.h).
     __m256 entry;
     __m256 exit;
-    planes(0, entry, exit);
+    axis_planes(base, ray, 0, entry, exit);
     for (int k = 1; k < 3; ++k) {
         __m256 near_t;
         __m256 far_t;
-        planes(k, near_t, far_t);
+        axis_planes(base, ray, k, near_t, far_t);
         entry = _mm256_max_ps(near_t, entry);
         exit = _mm256_min_ps(far_t, exit);
     }
