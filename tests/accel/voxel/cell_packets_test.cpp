@@ -3,7 +3,6 @@
 // exact test hits.
 #include "rt/accel/voxel/cell_packets.h"
 
-#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -259,42 +258,6 @@ TEST(CellPackets, AlwaysLanesAreCandidatesForEveryRay) {
 }
 
 #ifdef RT_VOXEL_AVX2
-#ifdef __FMA__
-// The pair test's answer for lane `lane` of one packet, from the steps of fan_pair_candidates with
-// each step that fused_float8.h fuses rounded once (std::fma), as the build's pair test does.
-bool fused_lane_candidate(const CellPacket& packet, int lane, const FloatRay& ray) {
-    const auto& c = packet.corner;
-    float x[3];
-    float y[3];
-    float size = 0.0f;
-    for (int v = 0; v < 3; ++v) {
-        const float az = c[v][ray.kz][lane] - ray.origin[ray.kz];
-        x[v] = std::fma(-ray.shear_x, az, c[v][ray.kx][lane] - ray.origin[ray.kx]);
-        y[v] = std::fma(-ray.shear_y, az, c[v][ray.ky][lane] - ray.origin[ray.ky]);
-        size = std::max(size, std::max(std::fabs(x[v]), std::fabs(y[v])));
-    }
-    const float e0 = std::fma(x[1], y[2], -(y[1] * x[2]));
-    const float e1 = std::fma(x[2], y[0], -(y[2] * x[0]));
-    const float e2 = std::fma(x[0], y[1], -(y[0] * x[1]));
-    const float margin = std::fma(size, std::fma(size, kRelativeSlack, ray.edge_margin_linear),
-                                  ray.edge_margin_constant);
-    const bool all_positive = e0 >= -margin && e1 >= -margin && e2 >= -margin;
-    const bool all_negative = e0 <= margin && e1 <= margin && e2 <= margin;
-    return all_positive || all_negative;
-}
-
-unsigned fused_packet_candidates(const CellPacket& packet, const FloatRay& ray) {
-    unsigned bits = always_lanes(packet);
-    for (int lane = 0; lane < 4; ++lane) {
-        bits |= fused_lane_candidate(packet, lane, ray) ? 1u << lane : 0u;
-    }
-    return bits;
-}
-#endif
-
-// Built with FMA (RT_AVX2), the pair test fuses its multiply-and-add steps (fused_float8.h) where
-// the four-wide test does not: both are conservative, and the pair test is checked lane for lane
-// against those steps computed one lane at a time. Without FMA it is the four-wide test's answer.
 TEST(CellPackets, PairTestAgreesWithTheFourWideTestLaneForLane) {
     if (!cpu_has_avx2_for_cells()) {
         GTEST_SKIP() << "no AVX2 on this CPU";
@@ -310,8 +273,6 @@ TEST(CellPackets, PairTestAgreesWithTheFourWideTestLaneForLane) {
     ASSERT_GE(cell.size(), 2u);
     std::normal_distribution<double> normal(0.0, 1.0);
     int kept = 0;
-    int differ = 0;  // lanes where the fused steps answer otherwise than the four-wide test
-    int lanes = 0;
     for (int i = 0; i < 2000; ++i) {
         // Through a polygon's first corner, nudged: many lanes near their edges.
         const Polygon& p = scene.polygons[rng() % scene.polygons.size()];
@@ -323,25 +284,14 @@ TEST(CellPackets, PairTestAgreesWithTheFourWideTestLaneForLane) {
         ASSERT_TRUE(float_ray.usable);
         for (std::size_t k = 0; k + 1 < cell.size(); ++k) {
             const unsigned pair = cell_pair_candidates(&cell[k], float_ray);
-#ifdef __FMA__
-            const unsigned first = fused_packet_candidates(cell[k], float_ray);
-            const unsigned second = fused_packet_candidates(cell[k + 1], float_ray);
-            differ += std::popcount(
-                first ^ static_cast<unsigned>(cell_packet_candidates(cell[k], float_ray)));
-            lanes += 4;
-#else
             const auto first = static_cast<unsigned>(cell_packet_candidates(cell[k], float_ray));
             const auto second =
                 static_cast<unsigned>(cell_packet_candidates(cell[k + 1], float_ray));
-#endif
             ASSERT_EQ(pair, first | (second << 4)) << "case " << i << ", packet " << k;
             kept += std::popcount(first);
         }
     }
     EXPECT_GT(kept, 2000) << "too few lanes kept for the test to mean much";
-    // Fused or not, the two forms part only where an edge function lies within a rounding of
-    // the margin: 30 lanes of 1,192,000 here, though these rays pass within 10^-3 of a corner.
-    EXPECT_LE(differ * 10000, lanes) << differ << " of " << lanes << " lanes differ";
 }
 #endif
 

@@ -10,6 +10,9 @@
 #if defined(__SSE2__) || defined(_M_X64)
 #include <emmintrin.h>
 #define RT_FLOAT4_SSE2 1
+#ifdef __FMA__
+#include <immintrin.h>
+#endif
 #else
 #include <algorithm>
 #include <cmath>
@@ -62,6 +65,31 @@ inline Mask4 operator&(Mask4 a, Mask4 b) {
 }
 inline Mask4 operator|(Mask4 a, Mask4 b) {
     return {_mm_or_ps(a.v, b.v)};
+}
+
+// a * b - c, c - a * b and a * b + c: one fused step where the build has FMA, as in the eight-lane
+// pre-filters (accel/float_prefilter/fused_float8.h says why a pre-filter may fuse), so that the
+// four-lane and eight-lane triangle tests answer alike.
+inline Float4 mul_sub(Float4 a, Float4 b, Float4 c) {
+#ifdef __FMA__
+    return {_mm_fmsub_ps(a.v, b.v, c.v)};
+#else
+    return a * b - c;
+#endif
+}
+inline Float4 sub_mul(Float4 c, Float4 a, Float4 b) {
+#ifdef __FMA__
+    return {_mm_fnmadd_ps(a.v, b.v, c.v)};
+#else
+    return c - a * b;
+#endif
+}
+inline Float4 mul_add(Float4 a, Float4 b, Float4 c) {
+#ifdef __FMA__
+    return {_mm_fmadd_ps(a.v, b.v, c.v)};
+#else
+    return a * b + c;
+#endif
 }
 
 #else
@@ -120,6 +148,17 @@ inline Mask4 operator&(Mask4 a, Mask4 b) {
 }
 inline Mask4 operator|(Mask4 a, Mask4 b) {
     return {{a.v[0] || b.v[0], a.v[1] || b.v[1], a.v[2] || b.v[2], a.v[3] || b.v[3]}};
+}
+
+// Plain arrays: never fused.
+inline Float4 mul_sub(Float4 a, Float4 b, Float4 c) {
+    return a * b - c;
+}
+inline Float4 sub_mul(Float4 c, Float4 a, Float4 b) {
+    return c - a * b;
+}
+inline Float4 mul_add(Float4 a, Float4 b, Float4 c) {
+    return a * b + c;
 }
 
 #endif

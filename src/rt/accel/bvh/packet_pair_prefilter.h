@@ -1,10 +1,9 @@
 // The float pre-filter of two consecutive packets of four fan triangles at once, with AVX2:
 // eight triangles per instruction. Lane for lane the operations of fan_candidates
 // (packet_prefilter.h), in the same order, each multiply-and-add step fused into one where the
-// build has FMA (fused_float8.h): then a lane may keep or drop a triangle the four-wide test
-// would not, where an edge function lies within a rounding of the margin, and both stay
-// conservative (float_ray.cpp, part 3). Shared by the BVH's leaf packets and the voxel methods'
-// cell packets, which lay their corners out alike.
+// build has FMA as it is there (fused_float8.h), so every lane gets the four-wide test's answer.
+// Shared by the BVH's leaf packets and the voxel methods' cell packets, which lay their corners out
+// alike.
 #pragma once
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))

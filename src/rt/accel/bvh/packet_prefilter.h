@@ -24,16 +24,17 @@ inline int fan_candidates(const float (&corner)[3][3][4], const FloatRay& ray) {
     Float4 size = Float4::broadcast(0.0f);
     for (int v = 0; v < 3; ++v) {
         const Float4 az = Float4::load(corner[v][ray.kz]) - oz;
-        x[v] = (Float4::load(corner[v][ray.kx]) - ox) - sx * az;
-        y[v] = (Float4::load(corner[v][ray.ky]) - oy) - sy * az;
+        x[v] = sub_mul(Float4::load(corner[v][ray.kx]) - ox, sx, az);
+        y[v] = sub_mul(Float4::load(corner[v][ray.ky]) - oy, sy, az);
         size = max(size, max(abs(x[v]), abs(y[v])));
     }
-    const Float4 e0 = x[1] * y[2] - y[1] * x[2];
-    const Float4 e1 = x[2] * y[0] - y[2] * x[0];
-    const Float4 e2 = x[0] * y[1] - y[0] * x[1];
-    const Float4 margin = size * (Float4::broadcast(ray.edge_margin_linear) +
-                                  size * Float4::broadcast(kRelativeSlack)) +
-                          Float4::broadcast(ray.edge_margin_constant);
+    const Float4 e0 = mul_sub(x[1], y[2], y[1] * x[2]);
+    const Float4 e1 = mul_sub(x[2], y[0], y[2] * x[0]);
+    const Float4 e2 = mul_sub(x[0], y[1], y[0] * x[1]);
+    const Float4 margin = mul_add(
+        size,
+        mul_add(size, Float4::broadcast(kRelativeSlack), Float4::broadcast(ray.edge_margin_linear)),
+        Float4::broadcast(ray.edge_margin_constant));
     const Float4 negative_margin = Float4::broadcast(0.0f) - margin;
     const simd::Mask4 all_positive =
         (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);

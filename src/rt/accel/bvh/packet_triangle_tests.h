@@ -12,6 +12,8 @@
 #include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/bvh/packet_setup.h"
 #include "rt/accel/float_prefilter/float_ray.h"
+#include "rt/accel/float_prefilter/fused_float8.h"
+#include "rt/accel/float_prefilter/triangle_prefilter.h"
 
 #include <immintrin.h>
 
@@ -35,10 +37,8 @@ __attribute__((target("avx2"))) inline std::uint32_t triangle_rays(const Triangl
     __m256 size = _mm256_setzero_ps();
     for (int c = 0; c < 3; ++c) {
         const __m256 az = _mm256_sub_ps(_mm256_set1_ps(packet.corner[c][kz][t]), oz);
-        x[c] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][kx][t]), ox),
-                             _mm256_mul_ps(sx, az));
-        y[c] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][ky][t]), oy),
-                             _mm256_mul_ps(sy, az));
+        x[c] = fused::sub_mul(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][kx][t]), ox), sx, az);
+        y[c] = fused::sub_mul(_mm256_sub_ps(_mm256_set1_ps(packet.corner[c][ky][t]), oy), sy, az);
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[c]), _mm256_andnot_ps(sign, y[c])));
     }
@@ -61,15 +61,15 @@ inline bool lane_triangle_candidate(const TrianglePacket& packet, int t, const P
     float size = 0.0f;
     for (int c = 0; c < 3; ++c) {
         const float az = packet.corner[c][kz][t] - oz;
-        x[c] = (packet.corner[c][kx][t] - ox) - v.shear_x[lane] * az;
-        y[c] = (packet.corner[c][ky][t] - oy) - v.shear_y[lane] * az;
+        x[c] = fused::sub_mul(packet.corner[c][kx][t] - ox, v.shear_x[lane], az);
+        y[c] = fused::sub_mul(packet.corner[c][ky][t] - oy, v.shear_y[lane], az);
         size = std::max(size, std::max(std::fabs(x[c]), std::fabs(y[c])));
     }
-    const float e0 = x[1] * y[2] - y[1] * x[2];
-    const float e1 = x[2] * y[0] - y[2] * x[0];
-    const float e2 = x[0] * y[1] - y[0] * x[1];
-    const float margin =
-        size * (v.edge_linear[lane] + size * rt::kRelativeSlack) + v.edge_constant[lane];
+    const float e0 = fused::mul_sub(x[1], y[2], y[1] * x[2]);
+    const float e1 = fused::mul_sub(x[2], y[0], y[2] * x[0]);
+    const float e2 = fused::mul_sub(x[0], y[1], y[0] * x[1]);
+    const float margin = fused::mul_add(
+        size, fused::mul_add(size, rt::kRelativeSlack, v.edge_linear[lane]), v.edge_constant[lane]);
     const bool all_positive = e0 >= -margin && e1 >= -margin && e2 >= -margin;
     const bool all_negative = e0 <= margin && e1 <= margin && e2 <= margin;
     return all_positive || all_negative;

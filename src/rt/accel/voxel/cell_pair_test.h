@@ -1,7 +1,6 @@
 // The float test of two consecutive cell packets at once, with AVX2: eight fan triangles per
-// instruction instead of four, by the BVH's pair test (bvh/packet_pair_prefilter.h): the
-// four-wide cell_packet_candidates' operations, with its multiply-and-add steps fused where the
-// build has FMA, so as conservative as it is.
+// instruction instead of four, by the BVH's pair test (bvh/packet_pair_prefilter.h), so every lane
+// gets the same answer as the four-wide cell_packet_candidates.
 #pragma once
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
