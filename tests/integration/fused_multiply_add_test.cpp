@@ -3,8 +3,9 @@
 // before the exact test, lane_exact_hit.h): a * b + c rounded once in one place and twice in the
 // other breaks that. GCC contracts such expressions wherever the target has FMA (RT_AVX2's -mfma,
 // any AVX-512 target) unless told not to (-ffp-contract=off, cmake/RtCpu.cmake). The code asks
-// for them in two places only: the float pre-filters (fused_float8.h), whose conservative bounds
-// hold either way, and exact_edge_sign's std::fma, an exact product's rounding error. So no
+// for them in two places only: the float pre-filters (fused_float8.h, and its four-lane and
+// one-lane forms in float4.h and triangle_prefilter.h), whose conservative bounds hold either way,
+// and exact_edge_sign's std::fma, an exact product's rounding error. So no
 // double-precision FMA instruction may appear anywhere else; a contracted build has them in most
 // of the geometry and shading.
 #include <cstdlib>
