@@ -61,8 +61,8 @@ std::vector<Method> every_method(const Scene& scene) {
         {"seads", made(settings(AccelKind::Seads, side, false, false))},
         {"seads fine", made(settings(AccelKind::Seads, 4 * side, false, false))},
         {"seads -on", made(settings(AccelKind::Seads, 2 * side, false, true)), false},
-        // Exit culling never culls a ray starting on a polygon (the start cell holds the polygon,
-        // so every direction is in its set): these show that wrapping changes no answer.
+        // Exit culling culls rays leaving a polygon by that polygon's directions and guards
+        // (leaving_table.h): these show that wrapping changes no answer.
         {"exit culling over brute force",
          [](const Scene& sc) { return std::make_unique<ExitCulling>(sc, make_brute_force(sc)); }},
         {"exit culling over bvh",

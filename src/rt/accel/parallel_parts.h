@@ -16,6 +16,11 @@ namespace rt {
 /// than the whole build (twocubes' exit culling builds in about 2 ms).
 inline constexpr std::size_t kPolygonsForThreadedBuilds = 20000;
 
+/// One thread a core, at most 16.
+inline int every_core() {
+    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+}
+
 /// A build's thread count: `asked` if positive, else one a core, and 1 for small scenes.
 inline int build_threads_for(int asked, std::size_t polygon_count) {
     if (asked > 0) {
@@ -24,7 +29,7 @@ inline int build_threads_for(int asked, std::size_t polygon_count) {
     if (polygon_count < kPolygonsForThreadedBuilds) {
         return 1;
     }
-    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+    return every_core();
 }
 
 /// Calls work(begin, end, part) for `parts` contiguous parts of [0, count), part 0 on the calling

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -138,6 +139,14 @@ inline bool plane_certainly_missed(const Ray& ray, const Vec3& normal, const Vec
     const double along = plane_depth(ray, normal, first_corner, denominator);
     return certainly_not_edge_on(denominator, ray.direction) && std::isfinite(along) &&
            !(along > t.min && along < t.max);
+}
+
+/// Whether two normals are the same bit for bit: the exact test's denominators of two polygons are
+/// then the same for any ray, as plane groups need.
+inline bool same_normal_bits(const Vec3& a, const Vec3& b) {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
 }
 
 /// Whether a polygon with unit normal `normal` and corner 0 `first` lies in the plane group of a

@@ -47,11 +47,15 @@ TEST(ExitCullingTable, TwocubesTableIsSmall) {
     EXPECT_EQ(statistics.regions, 512u);
     EXPECT_LT(statistics.memory_bytes, 1u << 20);
     EXPECT_GT(statistics.empty_fraction, 0.0);
-    // The table's line and the eye rays' coverage, no -de lines unless checking.
+    // The table's line, the eye rays' coverage and the leaving table, no -de lines unless
+    // checking.
     const std::vector<std::string> lines = describe(statistics);
-    ASSERT_EQ(lines.size(), 2u);
+    ASSERT_EQ(lines.size(), 3u);
     EXPECT_EQ(lines[1],
               "exit culling of eye rays: 30818 of 204800 pixels covered (15.0%), 25600 bytes");
+    EXPECT_EQ(lines[2],
+              "exit culling of rays leaving a polygon: 71 polygons x 2x2 patches x 6x16x16 "
+              "direction bins, 497 guards, 100.0% of bins clear but for guards, 968688 bytes");
 }
 
 TEST(ExitCulling, DebugModeReportsItsChecks) {
@@ -67,8 +71,8 @@ TEST(ExitCulling, DebugModeReportsItsChecks) {
     EXPECT_EQ(statistics.checked, 1u);
     EXPECT_EQ(statistics.violations, 0u);
     const std::vector<std::string> lines = describe(statistics);
-    ASSERT_EQ(lines.size(), 3u);
-    EXPECT_EQ(lines[2], "exit culling check (-de): 1 culled rays re-traced, 0 hit something");
+    ASSERT_EQ(lines.size(), 4u);
+    EXPECT_EQ(lines[3], "exit culling check (-de): 1 culled rays re-traced, 0 hit something");
     EXPECT_EQ(culling.name(), "exit culling over brute force");
 }
 

@@ -81,17 +81,8 @@ DirectionBins::DirectionBins(int side)
     }
 }
 
-int DirectionBins::cell_of(double coordinate) const {
-    // Truncation is floor here: the clamp first makes the value non-negative.
-    const double scaled = std::clamp((coordinate + 1.0) * half_side_, 0.0, top_);
-    return static_cast<int>(scaled);
-}
-
 DirectionBin DirectionBins::bin_of(const Vec3& d) const {
-    const double ax = std::fabs(d.x);
-    const double ay = std::fabs(d.y);
-    const double az = std::fabs(d.z);
-    const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+    const int axis = major_axis(d);
     const double major = std::fabs(d[axis]);
     // |d_b| <= major, so u and v are in [-1, 1] exactly.
     const double u = d[(axis + 1) % 3] / major;
@@ -100,18 +91,8 @@ DirectionBin DirectionBins::bin_of(const Vec3& d) const {
 }
 
 DirectionBin DirectionBins::bin_of(const Vec3& d, const Vec3& inverse) const {
-    const double ax = std::fabs(d.x);
-    const double ay = std::fabs(d.y);
-    const double az = std::fabs(d.z);
-    const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-    const double inverse_major = std::fabs(inverse[axis]);
-    if (!(inverse_major < Box3::kInfinity)) {
-        return bin_of(d);  // a subnormal major component
-    }
-    // Rounded twice, so |u| may pass 1 by an ulp: cell_of() clamps it.
-    const double u = d[(axis + 1) % 3] * inverse_major;
-    const double v = d[(axis + 2) % 3] * inverse_major;
-    return {2 * axis + (d[axis] < 0.0 ? 1 : 0), cell_of(v), cell_of(u)};
+    const int axis = major_axis(d);
+    return bin_with(d, axis, std::fabs(inverse[axis]));
 }
 
 DirectionBins::FaceRect DirectionBins::face_rect(const Box3& box, int face) const {

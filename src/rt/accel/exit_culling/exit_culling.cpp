@@ -25,6 +25,17 @@ ExitCullingTable timed_table(const Scene& scene, const ExitCullingSettings& sett
     return table;
 }
 
+LeavingTable timed_leaving_table(const Scene& scene, const ExitCullingSettings& settings,
+                                 double& seconds) {
+    if (!settings.leaving_table) {
+        return {};
+    }
+    const auto start = std::chrono::steady_clock::now();
+    LeavingTable table(scene, culling_frame(scene), settings.build_threads);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return table;
+}
+
 EyeCoverage timed_coverage(const Scene& scene, const ExitCullingTable& table,
                            const ExitCullingSettings& settings, double& seconds) {
     if (!settings.eye_coverage) {
@@ -47,8 +58,10 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
                          const ExitCullingSettings& settings)
     : wrapped_(std::move(wrapped)),
       table_(timed_table(scene, settings, build_seconds_)),
+      leaving_(timed_leaving_table(scene, settings, build_seconds_)),
       eye_(timed_coverage(scene, table_, settings, build_seconds_)),
       check_culled_(settings.check_culled),
+      scene_polygons_(scene.polygons.size()),
       name_("exit culling over " + std::string(wrapped_->name())) {}
 
 std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
@@ -177,7 +190,8 @@ void ExitCulling::record_if_violated(const Ray& ray, bool violated) const {
 }
 
 std::size_t ExitCulling::memory_bytes() const {
-    return table_.memory_bytes() + eye_.memory_bytes() + wrapped_->memory_bytes();
+    return table_.memory_bytes() + leaving_.memory_bytes() + eye_.memory_bytes() +
+           wrapped_->memory_bytes();
 }
 
 ExitCullingStatistics ExitCulling::statistics() const {
@@ -194,6 +208,13 @@ ExitCullingStatistics ExitCulling::statistics() const {
     s.pixels = eye_.pixels();
     s.covered_pixels = eye_.covered_pixels();
     s.eye_memory_bytes = eye_.memory_bytes();
+    s.leaving_polygons = leaving_.polygons();
+    s.leaving_bins_per_side = leaving_.bins_per_side();
+    s.leaving_patches_per_side = leaving_.patches_per_side();
+    s.leaving_guards = leaving_.guards();
+    s.scene_polygons = scene_polygons_;
+    s.leaving_empty_fraction = leaving_.empty_fraction();
+    s.leaving_memory_bytes = leaving_.memory_bytes();
     s.checking = check_culled_;
     s.checked = checked_.load();
     s.violations = violations_.load();
@@ -218,6 +239,18 @@ std::vector<std::string> describe(const ExitCullingStatistics& s) {
                         s.covered_pixels, s.pixels, 100.0 * share, s.eye_memory_bytes));
     } else if (!s.eye_inactive_reason.empty()) {
         lines.push_back("exit culling of eye rays by the table: " + s.eye_inactive_reason);
+    }
+    if (s.leaving_polygons > 0) {
+        lines.push_back(fmt::format(
+            "exit culling of rays leaving a polygon: {} polygons x {}x{} patches x 6x{}x{} "
+            "direction bins, {} guards, {:.1f}% of bins clear but for guards, {} bytes",
+            s.leaving_polygons, s.leaving_patches_per_side, s.leaving_patches_per_side,
+            s.leaving_bins_per_side, s.leaving_bins_per_side, s.leaving_guards,
+            100.0 * s.leaving_empty_fraction, s.leaving_memory_bytes));
+    } else if (s.scene_polygons > kMostLeavingTablePolygons) {
+        lines.push_back(
+            fmt::format("exit culling of rays leaving a polygon: off (more than {} polygons)",
+                        kMostLeavingTablePolygons));
     }
     if (s.checking) {
         lines.push_back(

@@ -18,6 +18,7 @@
 #include "rt/accel/accelerator.h"
 #include "rt/accel/exit_culling/exit_culling_table.h"
 #include "rt/accel/exit_culling/eye_coverage.h"
+#include "rt/accel/exit_culling/leaving_table.h"
 
 namespace rt {
 
@@ -27,6 +28,8 @@ struct ExitCullingSettings {
     bool check_culled = false;  ///< -de: trace every culled ray with the wrapped accelerator too
     int build_threads = 0;      ///< 0: one a core for a large scene (parallel_parts.h)
     bool eye_coverage = true;   ///< cull eye rays by the pixels the scene covers (eye_coverage.h)
+    /// Cull rays leaving a polygon by the directions that polygon sees (leaving_table.h).
+    bool leaving_table = true;
 };
 
 /// What -p prints for exit culling. The number of culled rays is TraceCounters::culled_exits.
@@ -38,11 +41,18 @@ struct ExitCullingStatistics {
     double empty_fraction = 0.0;     ///< share of (cell, bin) entries saying "nothing ahead"
     std::size_t memory_bytes = 0;    ///< the table alone
     double build_seconds = 0.0;
-    bool eye_coverage = false;          ///< whether eye rays are culled by the pixels covered
-    std::string eye_inactive_reason;    ///< why not, when not
-    std::size_t pixels = 0;             ///< of the view
-    std::size_t covered_pixels = 0;     ///< through which an eye ray may hit something
-    std::size_t eye_memory_bytes = 0;   ///< the coverage alone
+    bool eye_coverage = false;         ///< whether eye rays are culled by the pixels covered
+    std::string eye_inactive_reason;   ///< why not, when not
+    std::size_t pixels = 0;            ///< of the view
+    std::size_t covered_pixels = 0;    ///< through which an eye ray may hit something
+    std::size_t eye_memory_bytes = 0;  ///< the coverage alone
+    std::size_t leaving_polygons = 0;  ///< polygons with a leaving table; 0: none
+    int leaving_bins_per_side = 0;
+    int leaving_patches_per_side = 0;
+    std::size_t leaving_guards = 0;
+    std::size_t scene_polygons = 0;       ///< of the scene, to say why there is none
+    double leaving_empty_fraction = 0.0;  ///< share of (polygon, bin) entries saying "nothing"
+    std::size_t leaving_memory_bytes = 0;
     bool checking = false;              ///< -de
     std::uint64_t checked = 0;          ///< -de: culled rays re-traced
     std::uint64_t violations = 0;       ///< -de: culled rays that did hit something
@@ -83,9 +93,13 @@ public:
     ExitCullingStatistics statistics() const;
 
 private:
-    /// Whether the table says the ray can hit nothing. The first test inline: most rays leave a
-    /// surface and are passed on by it alone.
+    /// Whether the tables say the ray can hit nothing: a ray leaving a polygon by that
+    /// polygon's directions; any other, or one those do not cull, by the cells'. The cells' first
+    /// test inline: a ray leaving a surface starts in a full cell and is passed on by it alone.
     bool culls(const Ray& ray, Interval t) const {
+        if (ray.leaves != kLeavesNoPolygon && leaving_.nothing_ahead(ray, t)) {
+            return true;
+        }
         return !table_.starts_in_full_cell(ray.origin) && table_.nothing_ahead(ray, t);
     }
     /// Whether the coverage, or for a ray that is not an eye ray of the view the table, says the
@@ -115,8 +129,10 @@ private:
     std::unique_ptr<Accelerator> wrapped_;
     double build_seconds_ = 0.0;  ///< set while table_ and eye_ are built: declared before
     ExitCullingTable table_;
+    LeavingTable leaving_;
     EyeCoverage eye_;
     bool check_culled_;
+    std::size_t scene_polygons_;
     std::string name_;
     mutable std::atomic<std::uint64_t> checked_{0};
     mutable std::atomic<std::uint64_t> violations_{0};

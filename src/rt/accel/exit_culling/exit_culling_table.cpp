@@ -22,16 +22,6 @@
 
 namespace rt {
 
-namespace {
-
-// Directions from the cell to the target: the box of differences, widened for the rounding of
-// the subtractions.
-Box3 differences(const Box3& target, const Box3& start, double widen) {
-    return Box3{target.lo - start.hi, target.hi - start.lo}.grown(widen);
-}
-
-}  // namespace
-
 ExitCullingTable::ExitCullingTable(const Scene& scene, int resolution, int bins_per_side,
                                    int threads)
     : ExitCullingTable(culling_frame(scene), scene, resolution, bins_per_side, threads) {}
@@ -81,9 +71,7 @@ void ExitCullingTable::find_full_cells() {
     const int count = static_cast<int>(rows_.size() / static_cast<std::size_t>(bins_.rows()));
     full_.resize(static_cast<std::size_t>(count));
     for (int cell = 0; cell < count; ++cell) {
-        const auto rows = region(cell);
-        full_[static_cast<std::size_t>(cell)] = std::all_of(
-            rows.begin(), rows.end(), [&](std::uint16_t row) { return row == bins_.full_row(); });
+        full_[static_cast<std::size_t>(cell)] = bins_.holds_all(region(cell));
     }
 }
 
@@ -125,7 +113,8 @@ void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::u
                 const std::span<std::uint16_t> set =
                     rows.subspan(static_cast<std::size_t>(cell) * bins_.rows(),
                                  static_cast<std::size_t>(bins_.rows()));
-                bins_.add_directions_of(differences(reach.grazing_box, start, widen), set, band);
+                bins_.add_directions_of(box_of_differences(reach.grazing_box, start, widen), set,
+                                        band);
             }
         }
     }
@@ -145,7 +134,7 @@ void ExitCullingTable::fill_region(int cell) {
     while (!stack.empty()) {
         const OccupiedCells::Node& node = tree[stack.back()];
         stack.pop_back();
-        const Box3 towards = differences(node.box, start, widen);
+        const Box3 towards = box_of_differences(node.box, start, widen);
         if (node.first_child < 0) {
             bins_.add_directions_of(towards, set);
         } else if (!bins_.holds_directions_of(towards, set)) {

@@ -40,33 +40,49 @@ bool slab_meets(const Vec3& normal, const Vec3& point, double half, const Box3& 
 
 }  // namespace
 
-PolygonReach polygon_reach(const Scene& scene, std::uint32_t id, double min_cos, double rounding) {
+PolygonPlane polygon_plane(const Scene& scene, std::uint32_t id, double rounding) {
     const Polygon& polygon = scene.polygons[id];
-    PolygonReach reach;
-    Box3 corners;
+    PolygonPlane plane;
     for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
-        corners.add(scene.corner_position(polygon, k));
+        plane.corners.add(scene.corner_position(polygon, k));
     }
-    const double diameter = length(corners.extent()) * kSlack;
-    rounding = rounding * kSlack + 4e-16 * corners.magnitude();
+    plane.diameter = length(plane.corners.extent()) * kSlack;
+    plane.rounding = rounding * kSlack + 4e-16 * plane.corners.magnitude();
     // The test compares |dot(normal, d)| with 1e-6 |d|: for a normal of length L that is
     // |cos| against 1e-6 / L. A zero or non-finite normal makes every ray grazing.
     const double normal_length = length(polygon.normal);
     if (!std::isfinite(normal_length) || normal_length == 0.0) {
+        return plane;
+    }
+    plane.usable = true;
+    plane.normal = polygon.normal / normal_length;
+    plane.grazing_cosine = std::min(kGrazingCosine / normal_length, 1.0);
+    plane.point = scene.corner_position(polygon, 0);
+    double rho = 0.0;  // the corners' largest distance from the plane through corner 0
+    for (std::uint32_t k = 1; k < polygon.corner_count; ++k) {
+        rho = std::max(
+            rho, std::fabs(dot(plane.normal, scene.corner_position(polygon, k) - plane.point)));
+    }
+    plane.rho = rho * kSlack + plane.rounding;
+    return plane;
+}
+
+PolygonReach polygon_reach(const Scene& scene, std::uint32_t id, double min_cos, double rounding) {
+    const PolygonPlane plane = polygon_plane(scene, id, rounding);
+    const Box3& corners = plane.corners;
+    const double diameter = plane.diameter;
+    rounding = plane.rounding;
+    PolygonReach reach;
+    if (!plane.usable) {
         reach.box = corners.grown(rounding);
         reach.grazing_box = corners.grown(diameter + rounding);
         reach.grazing_cosine = 1.0;
         return reach;
     }
-    const Vec3 n = polygon.normal / normal_length;
-    const double grazing = std::min(kGrazingCosine / normal_length, 1.0);
-    const Vec3 c0 = scene.corner_position(polygon, 0);
-    double rho = 0.0;  // the corners' largest distance from the plane through corner 0
-    for (std::uint32_t k = 1; k < polygon.corner_count; ++k) {
-        rho = std::max(rho, std::fabs(dot(n, scene.corner_position(polygon, k) - c0)));
-    }
-    rho = rho * kSlack + rounding;
-    reach.plane_point = c0;
+    const Vec3& n = plane.normal;
+    const double grazing = plane.grazing_cosine;
+    const double rho = plane.rho;
+    reach.plane_point = plane.point;
     reach.normal = n;
     reach.grazing_cosine = grazing;
 

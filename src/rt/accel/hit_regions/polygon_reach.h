@@ -42,6 +42,22 @@ struct PolygonReach {
 /// the polygon as seen edge-on (kGrazing in ray_polygon.h), with headroom for rounding.
 inline constexpr double kGrazingCosine = 1e-6 * (1.0 + 1e-9);
 
+/// A polygon's plane and how far its corners stray from it, with polygon_reach()'s allowances:
+/// the facts every bound on where a line through the polygon can be starts from.
+struct PolygonPlane {
+    Box3 corners;                 ///< the box of its corners
+    double diameter = 0.0;        ///< of that box, with headroom
+    double rounding = 0.0;        ///< the allowance for the exact test's rounding at its scale
+    bool usable = false;          ///< false for a zero or non-finite normal (every ray grazes it)
+    Vec3 normal;                  ///< unit, when usable
+    Vec3 point;                   ///< corner 0
+    double rho = 0.0;             ///< the corners' largest distance from the plane, plus `rounding`
+    double grazing_cosine = 1.0;  ///< as PolygonReach::grazing_cosine
+};
+
+/// The plane of scene polygon `id`; `rounding` as for polygon_reach().
+PolygonPlane polygon_plane(const Scene& scene, std::uint32_t id, double rounding);
+
 /// The reach of scene polygon `id` for rays whose |cos| with its normal is at least `min_cos`
 /// (0 when rays may come from anywhere). `rounding` is an absolute allowance for the rounding of
 /// the ray-polygon test itself: at least 1e-13 times the largest distance between a ray origin

@@ -42,13 +42,6 @@ struct PlaneGroup {
     std::uint64_t members = 0;  ///< bit k: the cell's k-th polygon
 };
 
-// Bit for bit: the exact test's denominators of two polygons are then the same for any ray.
-bool same_normal(const Vec3& a, const Vec3& b) {
-    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
-           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
-}
-
 std::uint64_t normal_hash(const Vec3& n) {
     return std::bit_cast<std::uint64_t>(n.x) ^ (std::bit_cast<std::uint64_t>(n.y) * 3) ^
            (std::bit_cast<std::uint64_t>(n.z) * 7);
@@ -91,7 +84,7 @@ PlaneGroup plane_group_of(const Scene& scene, std::span<const std::uint32_t> ids
                 continue;
             }
             const Polygon& q = scene.polygons[ids[j]];
-            if (same_normal(q.normal, leader.normal) &&
+            if (same_normal_bits(q.normal, leader.normal) &&
                 in_plane_group(leader.normal, first, scene.corner_position(q, 0))) {
                 group.lanes += q.corner_count - 2;
                 group.members |= std::uint64_t{1} << j;

@@ -1,0 +1,492 @@
+// Why "nothing ahead" is safe for a ray leaving polygon P, from origin o with direction d, at
+// t > t.min >= 0. Every method skips P itself (the ray names it in Ray::leaves). A polygon of P's
+// plane group is missed when plane_group_certainly_missed says so, which the query asks. For any
+// other polygon Q the ray hits, polygon_reach's argument (hit_regions/polygon_reach.cpp) gives
+// the reported point Y = o + t_Y d and X = o + t_X d, where the line crosses Q's hull (grown by
+// Q's rounding r), with Y in Q's reach.
+// - Q not in a guard: its directions are in the bins of the patch of P's start box o lies in
+//   (the query checks that o lies in the start box, and patch_of() finds a patch whose grown box
+//   holds it). For Y in Q's plain box, d points from the patch to Y; for Y in the grazing box,
+//   either X lies ahead of o (then d points to X, in the plain box) or o lies between X and Y,
+//   in the grazing box too, and the bins hold the grazing box's directions seen edge-on from
+//   that part of the patch (as the cell table does, exit_culling_table.cpp).
+// - Q in a guard whose own bins, from that patch, do not hold the ray's: as above.
+// - Q a guard ruled out by plane_certainly_missed (the exact test's own first step), or in a
+//   guarding plane group ruled out by plane_group_certainly_missed.
+// - Q in a guard whose box the ray's line misses: the line meets Q's hull grown by r, and the box
+//   holds Q's corners grown by twice that (polygon_boxes.h argues the same for the voxel
+//   methods' boxes).
+// - Q a guard ruled out from P's plane: on the side s of P's plane the ray goes to (n P's unit
+//   normal), every corner of Q lies at most H (Guard::height, which adds r) up that side, so X
+//   does, and the ray rises at a = s dot(n, d) > 0 from height h = s dot(n, o - c0) (both
+//   checked with their rounding), so t_X <= tau = (H - h) / a. Let g(t) be the ray's signed
+//   distance from Q's plane, which X is within Q's rho (which holds r) of.
+//   - Plane branch: Y lies on Q's plane within r, at t_Y > 0. If t_X >= 0, |g(0)| <= rho +
+//     t_X |g'| <= rho + tau |d|; if t_X < 0 < t_Y, g(0) lies between g(t_X) and g(t_Y), so
+//     |g(0)| <= rho.
+//   - Grazing branch: |g'| <= Q's grazing cosine times |d|, and |t_X| |d| <= L, the largest
+//     distance from P's start box to Q's corners: |g(0)| <= rho + grazing cosine * L.
+//   Guard::clearance is rho + grazing cosine * L; the query asks that the origin be farther than
+//   it plus max(tau, 0) |d| from Q's plane, so Q is hit by neither branch.
+// So a ray the query culls hits nothing.
+#include "rt/accel/exit_culling/leaving_table.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <optional>
+#include <tuple>
+#include <unordered_map>
+
+#include "rt/accel/hit_regions/polygon_reach.h"
+#include "rt/accel/parallel_parts.h"
+#include "rt/accel/voxel/polygon_boxes.h"
+#include "rt/geometry/ray_polygon.h"
+
+namespace rt {
+
+namespace {
+
+// Relative headroom on every bound, for the rounding of computing the bounds themselves.
+constexpr double kSlack = 1.0 + 1e-9;
+// The rounding of a dot product or a difference of doubles, relative to the largest |component|
+// concerned: a few ulps, generously.
+constexpr double kDotRounding = 1e-14;
+constexpr std::uint32_t kNoGroup = 0xffffffffu;
+// Scenes of this many polygons build the table on every core unless told otherwise.
+constexpr std::size_t kThreadedBuildPolygons = 128;
+
+double largest_coordinate(const Vec3& v) {
+    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+}
+
+// A polygon joins a plane group only with a usable normal and finite corner 0.
+bool may_group(const Scene& scene, const Polygon& p) {
+    return p.corner_count >= 3 && is_finite(p.normal) &&
+           (p.normal.x != 0.0 || p.normal.y != 0.0 || p.normal.z != 0.0) &&
+           is_finite(scene.corner_position(p, 0));
+}
+
+std::uint64_t normal_key(const Vec3& n) {
+    return std::bit_cast<std::uint64_t>(n.x) ^ (std::bit_cast<std::uint64_t>(n.y) * 3) ^
+           (std::bit_cast<std::uint64_t>(n.z) * 7);
+}
+
+// How far up side `sign` of P's plane Q's corners reach, with Q's rounding.
+double height_of(const Scene& scene, const PolygonPlane& p, const PolygonPlane& q,
+                 std::uint32_t q_id, double sign) {
+    const Polygon& polygon = scene.polygons[q_id];
+    double height = -Box3::kInfinity;
+    for (std::uint32_t k = 0; k < polygon.corner_count; ++k) {
+        const Vec3 c = scene.corner_position(polygon, k);
+        height = std::max(height, sign * dot(p.normal, c - p.point));
+    }
+    const double rounding =
+        kDotRounding * (q.corners.magnitude() + largest_coordinate(p.point)) + q.rounding;
+    return height + rounding * kSlack;
+}
+
+// How many bins a set of rows holds, eight bytes at a time.
+std::size_t set_bins(std::span<const std::uint16_t> rows) {
+    std::size_t count = 0;
+    std::size_t i = 0;
+    for (; i + 4 <= rows.size(); i += 4) {
+        std::uint64_t chunk = 0;
+        std::memcpy(&chunk, rows.data() + i, sizeof(chunk));
+        count += static_cast<std::size_t>(std::popcount(chunk));
+    }
+    for (; i < rows.size(); ++i) {
+        count += static_cast<std::size_t>(std::popcount(rows[i]));
+    }
+    return count;
+}
+
+// A box as floats rounded outward: lo, then hi.
+std::array<float, 6> outward(const Box3& box) {
+    std::array<float, 6> out{};
+    for (int a = 0; a < 3; ++a) {
+        out[static_cast<std::size_t>(a)] =
+            std::nextafter(static_cast<float>(box.lo[a]), -HUGE_VALF);
+        out[static_cast<std::size_t>(3 + a)] =
+            std::nextafter(static_cast<float>(box.hi[a]), HUGE_VALF);
+    }
+    return out;
+}
+
+}  // namespace
+
+// What the build knows of the whole scene, and how it makes one polygon's entry.
+class LeavingTable::Builder {
+public:
+    Builder(LeavingTable& table, const Scene& scene, const CullingFrame& frame)
+        : table_(table), scene_(scene), count_(scene.polygons.size()) {
+        // Every polygon asks for every other's reach and plane: made once.
+        reaches_.resize(count_);
+        planes_.resize(count_);
+        for (std::size_t id = 0; id < count_; ++id) {
+            const auto q = static_cast<std::uint32_t>(id);
+            reaches_[id] = polygon_reach(scene, q, 0.0, frame.rounding);
+            planes_[id] = polygon_plane(scene, q, frame.rounding);
+        }
+        find_groups();
+        const auto row_count = static_cast<std::size_t>(table.bins_.rows());
+        bands_.assign(count_ * row_count, 0);
+        for (std::size_t id = 0; id < count_; ++id) {
+            if (!reaches_[id].grazing_box.empty()) {
+                table.bins_.band_of(
+                    reaches_[id].normal, reaches_[id].grazing_cosine,
+                    std::span<std::uint16_t>(bands_).subspan(id * row_count, row_count));
+            }
+        }
+        widen_ = 1e-12 * std::max(frame.positions.magnitude(), 1.0);
+        guard_height_ = 1e-8 * length(frame.positions.extent());
+        guards_.resize(count_);
+    }
+
+    /// Fills polygon p's entry, its rows, and its guards (kept here until gather()).
+    void build(std::uint32_t p);
+    /// Moves the guards into the table, in polygon order.
+    void gather();
+
+private:
+    // A unit of the directions from P: one polygon, or a plane group of several.
+    struct Unit {
+        std::uint32_t key = 0;  ///< the polygon, or the group's leader
+        bool touching = false;
+        bool emits = false;
+        std::size_t bins = 0;  ///< set over every patch
+        std::vector<std::uint16_t> rows;
+    };
+
+    void find_groups();
+    /// Adds polygon q's directions from each patch to `rows` (patch by patch).
+    void add_directions(std::uint32_t q, const std::vector<Box3>& patches,
+                        std::vector<std::uint16_t>& rows) const;
+    Guard make_guard(std::uint32_t p, const Unit& unit) const;
+
+    LeavingTable& table_;
+    const Scene& scene_;
+    std::size_t count_;
+    std::vector<PolygonReach> reaches_;
+    std::vector<PolygonPlane> planes_;
+    /// Per polygon, the directions that see it edge-on (DirectionBins::band_of), for its
+    /// grazing hits.
+    std::vector<std::uint16_t> bands_;
+    std::vector<std::uint32_t> leader_;  ///< per polygon: its group's leader, or kNoGroup
+    std::vector<std::vector<std::uint32_t>> members_;  ///< per leader: the group, leader first
+    std::vector<double> group_scale_;  ///< per leader: its members' corners 0's largest |c|
+    double widen_ = 0.0;
+    /// A guard whose corners reach no higher than this up a side of P's plane may be ruled out
+    /// from it; higher, the rise would have to be too steep to pay.
+    double guard_height_ = 0.0;
+    std::vector<std::vector<Guard>> guards_;
+};
+
+// Plane groups: each polygon joins the first earlier leader of its plane (the same normal bit for
+// bit, in_plane_group), or leads a group of its own; groups of one are none.
+void LeavingTable::Builder::find_groups() {
+    leader_.assign(count_, kNoGroup);
+    members_.resize(count_);
+    group_scale_.assign(count_, 0.0);
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> leaders;
+    for (std::uint32_t id = 0; id < count_; ++id) {
+        const Polygon& p = scene_.polygons[id];
+        if (!may_group(scene_, p)) {
+            continue;
+        }
+        std::vector<std::uint32_t>& same_key = leaders[normal_key(p.normal)];
+        const Vec3 first = scene_.corner_position(p, 0);
+        std::uint32_t leader = id;
+        for (const std::uint32_t l : same_key) {
+            const Polygon& candidate = scene_.polygons[l];
+            if (same_normal_bits(candidate.normal, p.normal) &&
+                in_plane_group(candidate.normal, scene_.corner_position(candidate, 0), first)) {
+                leader = l;
+                break;
+            }
+        }
+        if (leader == id) {
+            same_key.push_back(id);
+        }
+        leader_[id] = leader;
+        members_[leader].push_back(id);
+        group_scale_[leader] = std::max(group_scale_[leader], largest_coordinate(first));
+    }
+    for (std::uint32_t id = 0; id < count_; ++id) {
+        if (leader_[id] != kNoGroup && members_[leader_[id]].size() < 2) {
+            leader_[id] = kNoGroup;
+        }
+    }
+}
+
+void LeavingTable::Builder::add_directions(std::uint32_t q, const std::vector<Box3>& patches,
+                                           std::vector<std::uint16_t>& rows) const {
+    const auto& bins = table_.bins_;
+    const PolygonReach& reach = reaches_[q];
+    const std::size_t row_count = static_cast<std::size_t>(bins.rows());
+    for (std::size_t patch = 0; patch < patches.size(); ++patch) {
+        const Box3& from = patches[patch];
+        const auto set = std::span<std::uint16_t>(rows).subspan(patch * row_count, row_count);
+        bins.add_directions_of(box_of_differences(reach.box, from, widen_), set);
+        const Box3 common = intersection(from, reach.grazing_box);
+        if (!reach.grazing_box.empty() && !common.empty() &&
+            grazing_slab_meets_box(reach, common)) {
+            const auto band =
+                std::span<const std::uint16_t>(bands_).subspan(q * row_count, row_count);
+            bins.add_directions_of(box_of_differences(reach.grazing_box, common, widen_), set,
+                                   band);
+        }
+    }
+}
+
+LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Unit& unit) const {
+    Guard g;
+    g.polygon = unit.key;
+    const bool group = leader_[unit.key] == unit.key;
+    Box3 box;
+    for (const std::uint32_t q : group ? std::span<const std::uint32_t>(members_[unit.key])
+                                       : std::span<const std::uint32_t>(&unit.key, 1)) {
+        box.add(planes_[q].corners.grown(2.0 * planes_[q].rounding * kSlack));
+    }
+    g.box = outward(box);
+    g.height = {Box3::kInfinity, Box3::kInfinity};
+    if (group) {
+        g.group_scale = group_scale_[unit.key];
+        return g;
+    }
+    const PolygonPlane& plane = planes_[p];
+    const PolygonPlane& other = planes_[unit.key];
+    if (!plane.usable || !other.usable) {
+        return g;
+    }
+    Box3 both = table_.polygons_[p].start;
+    both.add(other.corners.grown(other.rounding));
+    g.normal = other.normal;
+    g.offset = dot(other.normal, other.point);
+    g.clearance = (other.rho + other.grazing_cosine * length(both.extent())) * kSlack;
+    for (std::size_t side = 0; side < 2; ++side) {
+        const double height = height_of(scene_, plane, other, unit.key, side == 0 ? 1.0 : -1.0);
+        g.height[side] = height <= guard_height_ ? height : Box3::kInfinity;
+    }
+    return g;
+}
+
+void LeavingTable::Builder::build(std::uint32_t p) {
+    LeavingTable& t = table_;
+    const std::size_t row_count = static_cast<std::size_t>(t.bins_.rows());
+    const std::size_t patch_rows = t.patches() * row_count;
+    Leaving& leaving = t.polygons_[p];
+    leaving.start = reaches_[p].box;
+    const Vec3 extent = leaving.start.extent();
+    // The two longest axes, the longer first.
+    const int shortest = extent.x <= extent.y && extent.x <= extent.z ? 0
+                         : extent.y <= extent.z                       ? 1
+                                                                      : 2;
+    leaving.axis = {(shortest + 1) % 3, (shortest + 2) % 3};
+    if (extent[leaving.axis[1]] > extent[leaving.axis[0]]) {
+        std::swap(leaving.axis[0], leaving.axis[1]);
+    }
+    for (std::size_t k = 0; k < 2; ++k) {
+        const double length_k = extent[leaving.axis[k]];
+        leaving.per_length[k] = length_k > 0.0 ? t.patch_side_ / length_k : 0.0;
+    }
+    const PolygonPlane& plane = planes_[p];
+    leaving.normal = plane.usable ? plane.normal : Vec3{};
+    leaving.point = plane.point;
+    const std::uint32_t own_group = leader_[p];
+    if (own_group != kNoGroup) {
+        leaving.group_leader = own_group;
+        leaving.group_scale = group_scale_[own_group];
+    }
+
+    // Each patch grown by a millionth of its size: patch_of() rounds within a few ulps.
+    std::vector<Box3> patches(t.patches());
+    const auto side = static_cast<std::size_t>(t.patch_side_);
+    for (std::size_t patch = 0; patch < patches.size(); ++patch) {
+        Box3 box = leaving.start;
+        const std::array<std::size_t, 2> index{patch / side, patch % side};
+        for (std::size_t k = 0; k < 2; ++k) {
+            const int a = leaving.axis[k];
+            const double size = extent[a] / t.patch_side_;
+            const double lo = leaving.start.lo[a] + static_cast<double>(index[k]) * size;
+            box.lo[a] = std::max(leaving.start.lo[a], lo - 1e-6 * size);
+            box.hi[a] = index[k] + 1 == side
+                            ? leaving.start.hi[a]
+                            : std::min(leaving.start.hi[a], lo + size * (1 + 1e-6));
+        }
+        patches[patch] = box;
+    }
+
+    // Every other polygon's directions, by unit.
+    std::vector<Unit> units;
+    std::vector<std::size_t> unit_of(count_, ~std::size_t{0});
+    for (std::uint32_t q = 0; q < count_; ++q) {
+        if (q == p || (own_group != kNoGroup && leader_[q] == own_group)) {
+            continue;
+        }
+        const std::uint32_t key = leader_[q] != kNoGroup ? leader_[q] : q;
+        if (unit_of[key] == ~std::size_t{0}) {
+            unit_of[key] = units.size();
+            units.push_back({key, false, false, 0, std::vector<std::uint16_t>(patch_rows, 0)});
+        }
+        Unit& unit = units[unit_of[key]];
+        unit.touching = unit.touching || !intersection(leaving.start, reaches_[q].box).empty();
+        unit.emits = unit.emits || scene_.attribute_of(scene_.polygons[q]).emission > 0.0;
+        add_directions(q, patches, unit.rows);
+    }
+    for (Unit& unit : units) {
+        unit.bins = set_bins(unit.rows);
+    }
+    // Guards first: the units that touch P, then lights, then by the directions they cover (a
+    // single polygon needs a usable normal to be told apart by its plane).
+    std::vector<std::size_t> order(units.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const auto rank = [&](const Unit& u) {
+        return std::make_tuple(u.touching, u.emits, u.bins, -static_cast<double>(u.key));
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return rank(units[a]) > rank(units[b]); });
+    // Each guard's bins as its bit in the masks, the others' together as kOthers. Rows are per
+    // patch and face row; a row's bit k is column k.
+    const auto side_bins = static_cast<std::size_t>(t.bins_.side());
+    const auto masks = std::span<std::uint16_t>(t.masks_).subspan(
+        p * t.patches() * 6 * side_bins * side_bins, t.patches() * 6 * side_bins * side_bins);
+    const auto scatter = [&](std::span<const std::uint16_t> rows, std::uint16_t bit) {
+        for (std::size_t row = 0; row < patch_rows; ++row) {
+            for (std::uint32_t columns = rows[row]; columns != 0; columns &= columns - 1) {
+                masks[row * side_bins + static_cast<std::size_t>(std::countr_zero(columns))] |= bit;
+            }
+        }
+    };
+    std::vector<std::uint16_t> others(patch_rows, 0);
+    for (const std::size_t u : order) {
+        const Unit& unit = units[u];
+        const bool group = leader_[unit.key] == unit.key;
+        if (unit.bins > 0 && guards_[p].size() < kMostGuards &&
+            (group || planes_[unit.key].usable)) {
+            scatter(unit.rows, static_cast<std::uint16_t>(1u << guards_[p].size()));
+            guards_[p].push_back(make_guard(p, unit));
+            continue;
+        }
+        for (std::size_t row = 0; row < patch_rows; ++row) {
+            others[row] |= unit.rows[row];
+        }
+    }
+    scatter(others, kOthers);
+}
+
+void LeavingTable::Builder::gather() {
+    for (std::size_t p = 0; p < count_; ++p) {
+        table_.polygons_[p].first_guard = static_cast<std::uint32_t>(table_.guards_.size());
+        table_.polygons_[p].guards = static_cast<std::uint32_t>(guards_[p].size());
+        table_.guards_.insert(table_.guards_.end(), guards_[p].begin(), guards_[p].end());
+    }
+}
+
+LeavingTable::LeavingTable(const Scene& scene, const CullingFrame& frame, int threads,
+                           int bins_per_side)
+    : scene_(&scene), bins_(bins_per_side) {
+    const std::size_t count = scene.polygons.size();
+    if (count == 0 || count > kMostLeavingTablePolygons) {
+        return;
+    }
+    patch_side_ = count <= kFinePatchPolygons ? kMostPatchesPerSide : 1;
+    polygons_.resize(count);
+    masks_.assign(count * patches() * 6 * static_cast<std::size_t>(bins_.side() * bins_.side()), 0);
+    Builder builder(*this, scene, frame);
+    // Each polygon writes only its own slots.
+    // Its work grows as the square of the polygons: every core from kThreadedBuildPolygons on.
+    const int parts =
+        threads > 0 ? std::min(threads, 64) : (count >= kThreadedBuildPolygons ? every_core() : 1);
+    share_out(count, parts,
+              [&](std::size_t id, int) { builder.build(static_cast<std::uint32_t>(id)); });
+    builder.gather();
+}
+
+bool LeavingTable::nothing_ahead(const Ray& ray, Interval t) const {
+    const std::uint32_t id = ray.leaves;
+    if (id >= polygons_.size() || !(t.min >= 0.0)) {
+        return false;
+    }
+    const Leaving& p = polygons_[id];
+    if (!p.start.contains(ray.origin)) {
+        return false;
+    }
+    const Vec3& d = ray.direction;
+    if (!is_finite(d) || (d.x == 0.0 && d.y == 0.0 && d.z == 0.0)) {
+        return false;
+    }
+    // The line's reciprocals serve the direction's bin and every guard's box.
+    const LineProbe line(ray);
+    const std::uint16_t may_meet = mask(id, patch_of(p, ray.origin), bins_.bin_of(d, line.inverse));
+    if ((may_meet & kOthers) != 0) {
+        return false;
+    }
+    // Each guard the ray's bin may meet must be missed: its box first, a cheap test.
+    for (std::uint32_t bits = may_meet; bits != 0; bits &= bits - 1) {
+        const Guard& g =
+            guards_[p.first_guard + static_cast<std::uint32_t>(std::countr_zero(bits))];
+        if (line_may_meet_box(line, g.box.data()) && !misses_guard(ray, t, p, g)) {
+            return false;
+        }
+    }
+    if (p.group_scale < 0.0) {
+        return true;
+    }
+    const Polygon& leader = scene_->polygons[p.group_leader];
+    return plane_group_certainly_missed(ray, leader.normal, scene_->corner_position(leader, 0),
+                                        p.group_scale, t.min);
+}
+
+bool LeavingTable::misses_guard(const Ray& ray, Interval t, const Leaving& p,
+                                const Guard& g) const {
+    const Polygon& q = scene_->polygons[g.polygon];
+    const Vec3 first = scene_->corner_position(q, 0);
+    if (g.group_scale >= 0.0) {
+        return plane_group_certainly_missed(ray, q.normal, first, g.group_scale, t.min);
+    }
+    if (plane_certainly_missed(ray, q.normal, first, t)) {
+        return true;
+    }
+    const Vec3& o = ray.origin;
+    const Vec3& d = ray.direction;
+    const double toward = dot(p.normal, d);
+    const std::size_t side = toward < 0.0 ? 1 : 0;
+    if (!(g.height[side] < Box3::kInfinity)) {
+        return false;
+    }
+    const double sign = side == 0 ? 1.0 : -1.0;
+    const double o_size = largest_coordinate(o);
+    const double d_size = largest_coordinate(d);
+    // Lower bounds on the rise a and the origin's height h; tau |d| <= (H - h) |d|_1 / a.
+    const double rise = sign * toward - kDotRounding * d_size;
+    if (!(rise > 0.0)) {
+        return false;
+    }
+    const double height =
+        sign * dot(p.normal, o - p.point) - kDotRounding * (o_size + largest_coordinate(p.point));
+    const double d_sum = std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
+    const double above = g.height[side] - height;
+    const double climb = above > 0.0 ? above * (d_sum / rise) * kSlack : 0.0;
+    const double distance =
+        std::fabs(dot(g.normal, o) - g.offset) - kDotRounding * (o_size + std::fabs(g.offset));
+    return std::isfinite(climb) && distance > (g.clearance + climb) * kSlack;
+}
+
+double LeavingTable::empty_fraction() const {
+    if (masks_.empty()) {
+        return 0.0;
+    }
+    const auto empty = std::count_if(masks_.begin(), masks_.end(),
+                                     [](std::uint16_t m) { return (m & kOthers) == 0; });
+    return static_cast<double>(empty) / static_cast<double>(masks_.size());
+}
+
+std::size_t LeavingTable::memory_bytes() const {
+    return polygons_.capacity() * sizeof(Leaving) + guards_.capacity() * sizeof(Guard) +
+           masks_.capacity() * sizeof(std::uint16_t);
+}
+
+}  // namespace rt

@@ -1,0 +1,143 @@
+// Exit culling for rays that leave a polygon (Ray::leaves): reflected, refracted and diffuse rays,
+// rim probes and shadow feelers. The cell table (exit_culling_table.h) passes all of them on, as
+// the cell they start in holds the polygon they leave and so has every direction. This table
+// asks instead, for each polygon P and each patch of the box its rays start in, in which
+// directions a ray leaving P can hit anything:
+// - P itself never, as every method skips it for such a ray;
+// - the polygons of P's plane group (in_plane_group, geometry/ray_polygon.h) not when the ray
+//   passes plane_group_certainly_missed: a checkerboard's other squares;
+// - a few "guards" chosen per polygon keep their directions apart, and a ray in one of them is
+//   checked against the guard itself: the polygons whose boxes touch P's (which would put every
+//   direction in P's set), lights' polygons (which every shadow feeler ends on) and the polygons
+//   and plane groups that cover the most directions from P. A guard is missed when its plane is
+//   left behind or not reached (the exact test's first step), when the ray's line misses its
+//   box, or, for a neighbour behind P's plane, when the ray rises from P far enough from it;
+// - every other polygon by its directions.
+// A ray leaving a checkerboard's square, or a box's face, into the sky, or towards a light past a
+// box, then ends at once, where it used to walk the whole structure. Conservative like the cell
+// table, so the picture never changes (leaving_table.cpp argues why); -de checks the rays it culls.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rt/accel/exit_culling/direction_bins.h"
+#include "rt/accel/exit_culling/occupied_cells.h"
+#include "rt/core/bounds.h"
+#include "rt/core/ray.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+/// Scenes of more polygons get no table: the build looks at every pair of polygons, and a big
+/// mesh's neighbours touch, which fills a polygon's directions anyway.
+inline constexpr std::size_t kMostLeavingTablePolygons = 512;
+/// Guards per polygon, at most: one bit each in a direction's mask, beside the others' bit.
+inline constexpr std::size_t kMostGuards = 15;
+/// A polygon's start box is cut into this many patches a side (along its two longest axes), each
+/// with its own directions, in scenes of up to kFinePatchPolygons polygons; else not cut. From a
+/// patch, a nearby polygon covers fewer directions.
+inline constexpr int kMostPatchesPerSide = 2;
+inline constexpr std::size_t kFinePatchPolygons = 128;
+/// Direction bins along each edge of a face of the direction cube: finer than the cell table's,
+/// as a light seen past a box's edge is the usual case here.
+inline constexpr int kLeavingBinsPerSide = 16;
+
+class LeavingTable {
+public:
+    /// No table: nothing_ahead() is always false.
+    LeavingTable() = default;
+    /// The table for `scene` (which must outlive it), with `frame`'s rounding allowances; none
+    /// for a scene of more than kMostLeavingTablePolygons polygons. `threads` build it (the same
+    /// table for any number).
+    LeavingTable(const Scene& scene, const CullingFrame& frame, int threads,
+                 int bins_per_side = kLeavingBinsPerSide);
+
+    bool active() const { return !polygons_.empty(); }
+
+    /// True only if the ray, leaving polygon ray.leaves, can hit no polygon at any t > t.min.
+    /// False for a ray that names no polygon, starts outside the box a hit on its polygon can
+    /// lie in, has t.min < 0, or a zero or non-finite direction.
+    bool nothing_ahead(const Ray& ray, Interval t) const;
+
+    std::size_t polygons() const { return polygons_.size(); }
+    int bins_per_side() const { return bins_.side(); }
+    int patches_per_side() const { return patch_side_; }
+    std::size_t guards() const { return guards_.size(); }
+    /// The share of (polygon, patch, bin) entries that say "nothing ahead", guards aside.
+    double empty_fraction() const;
+    std::size_t memory_bytes() const;
+
+private:
+    /// A polygon, or a plane group, kept apart from a polygon's directions (leaving_table.cpp).
+    struct Guard {
+        std::uint32_t polygon = 0;  ///< the polygon, or the group's leader
+        /// For a group, the largest |coordinate| of its corners 0; negative for one polygon.
+        double group_scale = -1.0;
+        std::array<float, 6> box{};  ///< lo, hi: every member's corners, grown, rounded outward
+        // Only for one polygon:
+        Vec3 normal;             ///< unit
+        double offset = 0.0;     ///< dot(normal, its corner 0)
+        double clearance = 0.0;  ///< the least distance from its plane, before the ray's own term
+        /// How far its corners reach up each side of P's plane (the side P's normal points to,
+        /// then the other); infinite when it is not ruled out that way.
+        std::array<double, 2> height{};
+    };
+    struct Leaving {
+        Box3 start;  ///< a ray must start here to be culled: a hit on P away from edge-on lies here
+        /// The start box's two longest axes, and the patches per unit length along each (0 for
+        /// an axis of no extent).
+        std::array<int, 2> axis{0, 1};
+        std::array<double, 2> per_length{};
+        Vec3 normal;  ///< unit; zero when P's normal is unusable
+        Vec3 point;   ///< corner 0
+        /// The leader of P's plane group, and the largest |coordinate| of the group's corners 0;
+        /// negative when P is alone in its plane.
+        std::uint32_t group_leader = 0;
+        double group_scale = -1.0;
+        std::uint32_t first_guard = 0;
+        std::uint32_t guards = 0;
+    };
+    class Builder;
+
+    std::size_t patches() const {
+        return static_cast<std::size_t>(patch_side_) * static_cast<std::size_t>(patch_side_);
+    }
+    /// The patch of `p`'s start box holding `origin` (a point of it). The index along each axis
+    /// is a rounded product, a few ulps of the start box's length from the exact one: the
+    /// patches are grown by a millionth of their length, so the one it names holds the origin.
+    std::size_t patch_of(const Leaving& p, const Vec3& origin) const {
+        const double top = patch_side_ - 1;
+        const double first = (origin[p.axis[0]] - p.start.lo[p.axis[0]]) * p.per_length[0];
+        const double second = (origin[p.axis[1]] - p.start.lo[p.axis[1]]) * p.per_length[1];
+        return static_cast<std::size_t>(std::clamp(first, 0.0, top)) *
+                   static_cast<std::size_t>(patch_side_) +
+               static_cast<std::size_t>(std::clamp(second, 0.0, top));
+    }
+    /// Which of the polygon's guards (bit g), and whether any other polygon (kOthers), may be
+    /// met in the bin's directions from the patch.
+    std::uint16_t mask(std::uint32_t polygon, std::size_t patch, const DirectionBin& bin) const {
+        const auto side = static_cast<std::size_t>(bins_.side());
+        return masks_[((polygon * patches() + patch) * 6 + static_cast<std::size_t>(bin.face)) *
+                          side * side +
+                      static_cast<std::size_t>(bin.row) * side +
+                      static_cast<std::size_t>(bin.column)];
+    }
+    static constexpr std::uint16_t kOthers = 0x8000;
+    /// Whether the ray leaving `p` surely misses the guard (its directions aside).
+    bool misses_guard(const Ray& ray, Interval t, const Leaving& p, const Guard& g) const;
+
+    const Scene* scene_ = nullptr;
+    DirectionBins bins_{1};
+    int patch_side_ = 1;
+    std::vector<Leaving> polygons_;
+    std::vector<Guard> guards_;
+    /// Per polygon, patch and bin (face, row, column): mask().
+    std::vector<std::uint16_t> masks_;
+};
+
+}  // namespace rt
