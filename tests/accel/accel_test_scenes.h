@@ -63,22 +63,26 @@ inline Scene make_soup(std::uint64_t seed, int count, bool warped = false) {
     return b.scene();
 }
 
+/// Adds the closed axis-aligned box [lo, hi]: six quads with outward normals, sharing corners.
+inline void add_box(SceneBuilder& b, const Vec3& lo, const Vec3& hi) {
+    auto quad = [&](Vec3 a, Vec3 c, Vec3 d, Vec3 e, Vec3 out) { b.add_polygon({a, c, d, e}, out); };
+    const double x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
+    quad({x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1}, {-1, 0, 0});
+    quad({x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0}, {1, 0, 0});
+    quad({x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0}, {0, -1, 0});
+    quad({x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1}, {0, 1, 0});
+    quad({x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0}, {0, 0, -1});
+    quad({x0, y0, z1}, {x0, y1, z1}, {x1, y1, z1}, {x1, y0, z1}, {0, 0, 1});
+}
+
 /// Axis-aligned boxes scattered on a floor: closed quads sharing corners.
 inline Scene make_boxes(std::uint64_t seed, int count) {
     std::mt19937_64 rng(seed);
     SceneBuilder b;
-    auto quad = [&](Vec3 a, Vec3 c, Vec3 d, Vec3 e, Vec3 out) { b.add_polygon({a, c, d, e}, out); };
     b.add_polygon({{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}}, {0, 1, 0});
     for (int i = 0; i < count; ++i) {
         const Vec3 lo = random_point(rng, {-15, 0, -15}, {13, 2, 13});
-        const Vec3 hi = lo + random_point(rng, {0.5, 0.5, 0.5}, {3, 6, 3});
-        const double x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
-        quad({x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1}, {-1, 0, 0});
-        quad({x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0}, {1, 0, 0});
-        quad({x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0}, {0, -1, 0});
-        quad({x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1}, {0, 1, 0});
-        quad({x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0}, {0, 0, -1});
-        quad({x0, y0, z1}, {x0, y1, z1}, {x1, y1, z1}, {x1, y0, z1}, {0, 0, 1});
+        add_box(b, lo, lo + random_point(rng, {0.5, 0.5, 0.5}, {3, 6, 3}));
     }
     return b.scene();
 }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "accel/accel_test_scenes.h"
+#include "accel/exit_culling/culling_equals_brute_force.h"
 
 namespace rt::test {
 namespace {
@@ -89,27 +90,7 @@ TEST_P(ExitCullingNeverCullsAHit, WithAnyTableSize) {
 // The decorator answers exactly as the accelerator it wraps, and -de finds nothing to report.
 TEST_P(ExitCullingNeverCullsAHit, DecoratorEqualsBruteForce) {
     const Scene scene = GetParam().make();
-    const BruteForce brute(scene);
-    ExitCullingSettings settings;
-    settings.check_culled = true;
-    const ExitCulling culling(scene, make_brute_force(scene), settings);
-    TraceCounters brute_counters;
-    TraceCounters culling_counters;
-    for (const TestRay& r : make_test_rays(scene, 23, 4000)) {
-        const std::optional<Hit> expected = brute.closest_hit(r.ray, r.t, brute_counters);
-        const std::optional<Hit> got = culling.closest_hit(r.ray, r.t, culling_counters);
-        ASSERT_EQ(expected.has_value(), got.has_value());
-        if (expected) {
-            EXPECT_EQ(expected->t, got->t);
-            EXPECT_EQ(expected->polygon, got->polygon);
-        }
-        EXPECT_EQ(brute.occluded(r.ray, r.t, brute_counters),
-                  culling.occluded(r.ray, r.t, culling_counters));
-    }
-    const ExitCullingStatistics statistics = culling.statistics();
-    EXPECT_EQ(statistics.checked, culling_counters.culled_exits);
-    EXPECT_EQ(statistics.violations, 0u);
-    EXPECT_TRUE(statistics.first_violations.empty());
+    expect_culling_equals_brute_force(scene, make_test_rays(scene, 23, 4000));
 }
 
 INSTANTIATE_TEST_SUITE_P(

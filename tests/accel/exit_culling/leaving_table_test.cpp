@@ -1,6 +1,8 @@
 // Exit culling of rays leaving a polygon (leaving_table.h) must never cull a ray that hits
 // anything, for rays as the renderer makes them (reflected, refracted, grazing, shadow feelers),
 // and must cull most of those that leave a surface into the sky: it exists for them.
+#include "rt/accel/exit_culling/leaving_table.h"
+
 #include <cstdint>
 #include <random>
 #include <string>
@@ -8,11 +10,11 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/exit_culling/exit_culling.h"
-#include "rt/accel/exit_culling/leaving_table.h"
 
 #include <gtest/gtest.h>
 
 #include "accel/accel_test_scenes.h"
+#include "accel/exit_culling/culling_equals_brute_force.h"
 #include "accel/surface_rays.h"
 #include "support/scene_builder.h"
 
@@ -34,21 +36,9 @@ Scene checkerboard_with_boxes() {
             b.add_polygon({{x, 0, z}, {x + 2, 0, z}, {x + 2, 0, z + 2}, {x, 0, z + 2}}, {0, 1, 0});
         }
     }
-    const auto box = [&](Vec3 lo, Vec3 hi) {
-        const double x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
-        const auto quad = [&](Vec3 p, Vec3 q, Vec3 r, Vec3 s, Vec3 out) {
-            b.add_polygon({p, q, r, s}, out);
-        };
-        quad({x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1}, {-1, 0, 0});
-        quad({x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0}, {1, 0, 0});
-        quad({x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0}, {0, -1, 0});
-        quad({x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1}, {0, 1, 0});
-        quad({x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0}, {0, 0, -1});
-        quad({x0, y0, z1}, {x0, y1, z1}, {x1, y1, z1}, {x1, y0, z1}, {0, 0, 1});
-    };
-    box({-3, 0, -3}, {-1, 2, -1});       // standing on the floor, on tile corners
-    box({1.5, 1, 1.5}, {3.5, 2.5, 2.5});  // floating
-    box({-6, -1, 3}, {-5, 1, 5});         // sunk into the floor
+    add_box(b, {-3, 0, -3}, {-1, 2, -1});        // standing on the floor, on tile corners
+    add_box(b, {1.5, 1, 1.5}, {3.5, 2.5, 2.5});  // floating
+    add_box(b, {-6, -1, 3}, {-5, 1, 5});         // sunk into the floor
     b.add_polygon({{-1, 8, -1}, {1, 8, -1}, {1, 8, 1}, {-1, 8, 1}}, {0, -1, 0}, light_attribute);
     return b.scene();
 }
@@ -139,24 +129,7 @@ TEST_P(LeavingTableNeverCullsAHit, WithCoarseBins) {
 // The whole layer answers as brute force on the same rays, nearest hits and feelers alike.
 TEST_P(LeavingTableNeverCullsAHit, ExitCullingEqualsBruteForce) {
     const Scene scene = GetParam().make();
-    const BruteForce brute(scene);
-    ExitCullingSettings settings;
-    settings.check_culled = true;
-    const ExitCulling culling(scene, make_brute_force(scene), settings);
-    TraceCounters brute_counters;
-    TraceCounters culling_counters;
-    for (const SurfaceRay& r : leaving_rays(scene, 4000, 53)) {
-        const std::optional<Hit> expected = brute.closest_hit(r.ray, r.t, brute_counters);
-        const std::optional<Hit> got = culling.closest_hit(r.ray, r.t, culling_counters);
-        ASSERT_EQ(expected.has_value(), got.has_value());
-        if (expected) {
-            EXPECT_EQ(expected->t, got->t);
-            EXPECT_EQ(expected->polygon, got->polygon);
-        }
-        EXPECT_EQ(brute.occluded(r.ray, r.t, brute_counters),
-                  culling.occluded(r.ray, r.t, culling_counters));
-    }
-    EXPECT_EQ(culling.statistics().violations, 0u);
+    expect_culling_equals_brute_force(scene, leaving_rays(scene, 4000, 53));
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -105,14 +105,12 @@ std::size_t set_bins(std::span<const std::uint16_t> rows) {
 
 // A box as floats rounded outward: lo, then hi.
 std::array<float, 6> outward(const Box3& box) {
-    std::array<float, 6> out{};
-    for (int a = 0; a < 3; ++a) {
-        out[static_cast<std::size_t>(a)] =
-            std::nextafter(static_cast<float>(box.lo[a]), -HUGE_VALF);
-        out[static_cast<std::size_t>(3 + a)] =
-            std::nextafter(static_cast<float>(box.hi[a]), HUGE_VALF);
-    }
-    return out;
+    return {std::nextafter(static_cast<float>(box.lo.x), -HUGE_VALF),
+            std::nextafter(static_cast<float>(box.lo.y), -HUGE_VALF),
+            std::nextafter(static_cast<float>(box.lo.z), -HUGE_VALF),
+            std::nextafter(static_cast<float>(box.hi.x), HUGE_VALF),
+            std::nextafter(static_cast<float>(box.hi.y), HUGE_VALF),
+            std::nextafter(static_cast<float>(box.hi.z), HUGE_VALF)};
 }
 
 }  // namespace
@@ -145,7 +143,7 @@ public:
         guards_.resize(count_);
     }
 
-    /// Fills polygon p's entry, its rows, and its guards (kept here until gather()).
+    /// Fills polygon p's entry, its masks, and its guards (kept here until gather()).
     void build(std::uint32_t p);
     /// Moves the guards into the table, in polygon order.
     void gather();
@@ -161,6 +159,12 @@ private:
     };
 
     void find_groups();
+    /// Fills p's entry but for its guards; returns its patches.
+    std::vector<Box3> set_up(std::uint32_t p);
+    /// Every other polygon's directions from p's patches, by unit.
+    std::vector<Unit> units_seen_from(std::uint32_t p, const std::vector<Box3>& patches) const;
+    /// Chooses p's guards among the units and writes its masks.
+    void place(std::uint32_t p, const std::vector<Unit>& units);
     /// Adds polygon q's directions from each patch to `rows` (patch by patch).
     void add_directions(std::uint32_t q, const std::vector<Box3>& patches,
                         std::vector<std::uint16_t>& rows) const;
@@ -266,17 +270,24 @@ LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Uni
     g.normal = other.normal;
     g.offset = dot(other.normal, other.point);
     g.clearance = (other.rho + other.grazing_cosine * length(both.extent())) * kSlack;
+    constexpr std::array<double, 2> kSign{1.0, -1.0};
     for (std::size_t side = 0; side < 2; ++side) {
-        const double height = height_of(scene_, plane, other, unit.key, side == 0 ? 1.0 : -1.0);
-        g.height[side] = height <= guard_height_ ? height : Box3::kInfinity;
+        const double height = height_of(scene_, plane, other, unit.key, kSign[side]);
+        if (height <= guard_height_) {
+            g.height[side] = height;
+        }
     }
     return g;
 }
 
 void LeavingTable::Builder::build(std::uint32_t p) {
+    const std::vector<Box3> patches = set_up(p);
+    std::vector<Unit> units = units_seen_from(p, patches);
+    place(p, units);
+}
+
+std::vector<Box3> LeavingTable::Builder::set_up(std::uint32_t p) {
     LeavingTable& t = table_;
-    const std::size_t row_count = static_cast<std::size_t>(t.bins_.rows());
-    const std::size_t patch_rows = t.patches() * row_count;
     Leaving& leaving = t.polygons_[p];
     leaving.start = reaches_[p].box;
     const Vec3 extent = leaving.start.extent();
@@ -295,12 +306,10 @@ void LeavingTable::Builder::build(std::uint32_t p) {
     const PolygonPlane& plane = planes_[p];
     leaving.normal = plane.usable ? plane.normal : Vec3{};
     leaving.point = plane.point;
-    const std::uint32_t own_group = leader_[p];
-    if (own_group != kNoGroup) {
-        leaving.group_leader = own_group;
-        leaving.group_scale = group_scale_[own_group];
+    if (leader_[p] != kNoGroup) {
+        leaving.group_leader = leader_[p];
+        leaving.group_scale = group_scale_[leader_[p]];
     }
-
     // Each patch grown by a millionth of its size: patch_of() rounds within a few ulps.
     std::vector<Box3> patches(t.patches());
     const auto side = static_cast<std::size_t>(t.patch_side_);
@@ -318,8 +327,14 @@ void LeavingTable::Builder::build(std::uint32_t p) {
         }
         patches[patch] = box;
     }
+    return patches;
+}
 
-    // Every other polygon's directions, by unit.
+std::vector<LeavingTable::Builder::Unit> LeavingTable::Builder::units_seen_from(
+    std::uint32_t p, const std::vector<Box3>& patches) const {
+    const Leaving& leaving = table_.polygons_[p];
+    const std::size_t patch_rows = patches.size() * static_cast<std::size_t>(table_.bins_.rows());
+    const std::uint32_t own_group = leader_[p];
     std::vector<Unit> units;
     std::vector<std::size_t> unit_of(count_, ~std::size_t{0});
     for (std::uint32_t q = 0; q < count_; ++q) {
@@ -339,8 +354,14 @@ void LeavingTable::Builder::build(std::uint32_t p) {
     for (Unit& unit : units) {
         unit.bins = set_bins(unit.rows);
     }
-    // Guards first: the units that touch P, then lights, then by the directions they cover (a
-    // single polygon needs a usable normal to be told apart by its plane).
+    return units;
+}
+
+// Guards first: the units that touch P, then lights, then by the directions they cover (a single
+// polygon needs a usable normal to be told apart by its plane). Each guard's bins go into the
+// masks as its bit, the others' together as kOthers.
+void LeavingTable::Builder::place(std::uint32_t p, const std::vector<Unit>& units) {
+    LeavingTable& t = table_;
     std::vector<std::size_t> order(units.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     const auto rank = [&](const Unit& u) {
@@ -348,11 +369,11 @@ void LeavingTable::Builder::build(std::uint32_t p) {
     };
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return rank(units[a]) > rank(units[b]); });
-    // Each guard's bins as its bit in the masks, the others' together as kOthers. Rows are per
-    // patch and face row; a row's bit k is column k.
+    // Rows are per patch and face row; a row's bit k is column k.
+    const std::size_t patch_rows = t.patches() * static_cast<std::size_t>(t.bins_.rows());
     const auto side_bins = static_cast<std::size_t>(t.bins_.side());
-    const auto masks = std::span<std::uint16_t>(t.masks_).subspan(
-        p * t.patches() * 6 * side_bins * side_bins, t.patches() * 6 * side_bins * side_bins);
+    const auto masks = std::span<std::uint16_t>(t.masks_).subspan(p * patch_rows * side_bins,
+                                                                  patch_rows * side_bins);
     const auto scatter = [&](std::span<const std::uint16_t> rows, std::uint16_t bit) {
         for (std::size_t row = 0; row < patch_rows; ++row) {
             for (std::uint32_t columns = rows[row]; columns != 0; columns &= columns - 1) {
