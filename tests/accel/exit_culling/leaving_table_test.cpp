@@ -56,7 +56,7 @@ Scene boxes() {
     return make_boxes(13, 12);
 }
 Scene soup() {
-    return make_soup(11, 300);
+    return make_soup(11, 150);
 }
 Scene warped_soup() {
     return make_soup(14, 100, true);
