@@ -4,6 +4,7 @@
 #include "rt/accel/exit_culling/leaving_table.h"
 
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -233,6 +234,21 @@ TEST(LeavingTable, NoneForScenesOfManyPolygons) {
     EXPECT_FALSE(table.active());
     const Ray ray{scene.corner_position(scene.polygons[0], 0), {0, 1, 0}, 0};
     EXPECT_FALSE(table.nothing_ahead(ray, {1e-9, kBeyondAnyScene}));
+}
+
+// A polygon out of the doubles' range, or with a NaN corner (which the exact test may report
+// hit, and which no box holds), leaves the scene without a table. (The scene readers refuse
+// both; a scene made in code may hold them.)
+TEST(LeavingTable, NoneWithCornersOutOfRange) {
+    for (const double bad : {1e308, std::numeric_limits<double>::quiet_NaN()}) {
+        SceneBuilder b;
+        b.scene() = checkerboard_with_boxes();
+        b.add_polygon({{0, 1, 0}, {bad, 1, 0}, {0, 1, 1}}, {0, 1, 0});
+        const LeavingTable table(b.scene(), culling_frame(b.scene()), 1);
+        EXPECT_FALSE(table.active()) << bad;
+        const Ray up{{0.5, 0, 0.5}, {0.3, 1, 0.2}, 36};
+        EXPECT_FALSE(table.nothing_ahead(up, {1e-9, kBeyondAnyScene})) << bad;
+    }
 }
 
 // Turned off, the layer culls no ray leaving a polygon (they all start in full cells).

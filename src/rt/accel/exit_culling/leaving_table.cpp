@@ -143,6 +143,22 @@ public:
         guards_.resize(count_);
     }
 
+    /// Whether every polygon's corners are finite and its reach (both boxes) too. A NaN corner
+    /// is left out of the boxes, yet the exact test may report the polygon hit.
+    bool finite() const {
+        for (const Polygon& p : scene_.polygons) {
+            for (std::uint32_t k = 0; k < p.corner_count; ++k) {
+                if (!is_finite(scene_.corner_position(p, k))) {
+                    return false;
+                }
+            }
+        }
+        return std::all_of(reaches_.begin(), reaches_.end(), [](const PolygonReach& r) {
+            return is_finite(r.box.lo) && is_finite(r.box.hi) &&
+                   (r.grazing_box.empty() ||
+                    (is_finite(r.grazing_box.lo) && is_finite(r.grazing_box.hi)));
+        });
+    }
     /// Fills polygon p's entry, its masks, and its guards (kept here until gather()).
     void build(std::uint32_t p);
     /// Moves the guards into the table, in polygon order.
@@ -417,8 +433,14 @@ LeavingTable::LeavingTable(const Scene& scene, const CullingFrame& frame, int th
     polygons_.resize(count);
     masks_.assign(count * patches() * 6 * static_cast<std::size_t>(bins_.side() * bins_.side()), 0);
     Builder builder(*this, scene, frame);
-    // Each polygon writes only its own slots.
-    // Its work grows as the square of the polygons: every core from kThreadedBuildPolygons on.
+    if (!builder.finite()) {
+        // A corner or a reach beyond the doubles' range has no directions to bin: no table.
+        polygons_.clear();
+        masks_.clear();
+        return;
+    }
+    // Each polygon writes only its own slots. Its work grows as the square of the polygons:
+    // every core from kThreadedBuildPolygons on.
     const int parts =
         threads > 0 ? std::min(threads, 64) : (count >= kThreadedBuildPolygons ? every_core() : 1);
     share_out(count, parts,
