@@ -25,13 +25,14 @@ ExitCullingTable timed_table(const Scene& scene, const ExitCullingSettings& sett
     return table;
 }
 
-LeavingTable timed_leaving_table(const Scene& scene, const ExitCullingSettings& settings,
-                                 double& seconds) {
+// With the cell table's rounding allowances (its frame), made once.
+LeavingTable timed_leaving_table(const Scene& scene, const ExitCullingTable& cells,
+                                 const ExitCullingSettings& settings, double& seconds) {
     if (!settings.leaving_table) {
         return {};
     }
     const auto start = std::chrono::steady_clock::now();
-    LeavingTable table(scene, culling_frame(scene), settings.build_threads);
+    LeavingTable table(scene, cells.cells().frame(), settings.build_threads);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return table;
 }
@@ -58,7 +59,7 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
                          const ExitCullingSettings& settings)
     : wrapped_(std::move(wrapped)),
       table_(timed_table(scene, settings, build_seconds_)),
-      leaving_(timed_leaving_table(scene, settings, build_seconds_)),
+      leaving_(timed_leaving_table(scene, table_, settings, build_seconds_)),
       eye_(timed_coverage(scene, table_, settings, build_seconds_)),
       check_culled_(settings.check_culled),
       scene_polygons_(scene.polygons.size()),
