@@ -149,6 +149,12 @@ inline bool same_normal_bits(const Vec3& a, const Vec3& b) {
            std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
 }
 
+/// A hash of a normal's bits, to find normals that may be the same bit for bit quickly.
+inline std::uint64_t normal_bits_hash(const Vec3& n) {
+    return std::bit_cast<std::uint64_t>(n.x) ^ (std::bit_cast<std::uint64_t>(n.y) * 3) ^
+           (std::bit_cast<std::uint64_t>(n.z) * 7);
+}
+
 /// Whether a polygon with unit normal `normal` and corner 0 `first` lies in the plane group of a
 /// polygon with the same normal (bit for bit: the caller compares them) and corner 0 `leader`:
 /// dot(normal, first) within 2^-40 |normal|_1 max(|first|, |leader|) (largest |coordinate|s) of

@@ -69,11 +69,6 @@ bool may_group(const Scene& scene, const Polygon& p) {
            is_finite(scene.corner_position(p, 0));
 }
 
-std::uint64_t normal_key(const Vec3& n) {
-    return std::bit_cast<std::uint64_t>(n.x) ^ (std::bit_cast<std::uint64_t>(n.y) * 3) ^
-           (std::bit_cast<std::uint64_t>(n.z) * 7);
-}
-
 // How far up side `sign` of P's plane Q's corners reach, with Q's rounding.
 double height_of(const Scene& scene, const PolygonPlane& p, const PolygonPlane& q,
                  std::uint32_t q_id, double sign) {
@@ -216,7 +211,7 @@ void LeavingTable::Builder::find_groups() {
         if (!may_group(scene_, p)) {
             continue;
         }
-        std::vector<std::uint32_t>& same_key = leaders[normal_key(p.normal)];
+        std::vector<std::uint32_t>& same_key = leaders[normal_bits_hash(p.normal)];
         const Vec3 first = scene_.corner_position(p, 0);
         std::uint32_t leader = id;
         for (const std::uint32_t l : same_key) {

@@ -42,11 +42,6 @@ struct PlaneGroup {
     std::uint64_t members = 0;  ///< bit k: the cell's k-th polygon
 };
 
-std::uint64_t normal_hash(const Vec3& n) {
-    return std::bit_cast<std::uint64_t>(n.x) ^ (std::bit_cast<std::uint64_t>(n.y) * 3) ^
-           (std::bit_cast<std::uint64_t>(n.z) * 7);
-}
-
 bool corners_are_floats(const Scene& scene, const Polygon& p) {
     for (std::uint32_t k = 0; k < p.corner_count; ++k) {
         const Vec3 c = scene.corner_position(p, k);
@@ -67,7 +62,7 @@ PlaneGroup plane_group_of(const Scene& scene, std::span<const std::uint32_t> ids
     std::uint64_t joining = 0;
     for (std::size_t i = 0; i < ids.size(); ++i) {
         const Polygon& p = scene.polygons[ids[i]];
-        hash[i] = normal_hash(p.normal);
+        hash[i] = normal_bits_hash(p.normal);
         if (p.corner_count >= 3 && corners_are_floats(scene, p)) {
             joining |= std::uint64_t{1} << i;
         }
