@@ -24,6 +24,8 @@ struct TraceCounters {
     std::uint64_t nodes_visited = 0;   ///< BVH nodes entered
     std::uint64_t near_hits = 0;       ///< hits found outside the current voxel (manual 3.1)
     std::uint64_t culled_exits = 0;    ///< rays ended by exit-ray culling
+    /// Rays exit culling confined to a few polygons, answered by their exact tests alone.
+    std::uint64_t guard_answers = 0;
 
     TraceCounters& operator+=(const TraceCounters& o) {
         rays += o.rays;
@@ -33,6 +35,7 @@ struct TraceCounters {
         nodes_visited += o.nodes_visited;
         near_hits += o.near_hits;
         culled_exits += o.culled_exits;
+        guard_answers += o.guard_answers;
         return *this;
     }
 };

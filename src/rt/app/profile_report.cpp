@@ -7,17 +7,18 @@ namespace rt {
 namespace {
 
 std::string row(std::string_view name, const TraceCounters& c) {
-    return fmt::format("  {:<14}{:>12}{:>13}{:>11}{:>14}{:>11}{:>10}{:>10}\n", name, c.rays,
+    return fmt::format("  {:<14}{:>12}{:>13}{:>11}{:>14}{:>11}{:>10}{:>10}{:>10}\n", name, c.rays,
                        c.voxels_stepped, c.nodes_visited, c.polygon_tests, c.hits, c.near_hits,
-                       c.culled_exits);
+                       c.culled_exits, c.guard_answers);
 }
 
 }  // namespace
 
 std::string profile_report(const ProfileInputs& in) {
     std::string text = fmt::format("profile: {} over {} polygons\n", in.method, in.polygons);
-    text += fmt::format("  {:<14}{:>12}{:>13}{:>11}{:>14}{:>11}{:>10}{:>10}\n", "rays", "traced",
-                        "voxels", "nodes", "poly tests", "hits", "near", "culled");
+    text +=
+        fmt::format("  {:<14}{:>12}{:>13}{:>11}{:>14}{:>11}{:>10}{:>10}{:>10}\n", "rays", "traced",
+                    "voxels", "nodes", "poly tests", "hits", "near", "culled", "guarded");
     if (in.counters != nullptr) {
         for (std::size_t k = 0; k < kRayKinds; ++k) {
             const TraceCounters& c = in.counters->kinds[k];

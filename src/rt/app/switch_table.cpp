@@ -426,8 +426,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .apply = [](Options& o, A) { o.accel.check_exit_culling = true; },
      .summary = "Debug exit ray culling",
      .details = "Traces every culled ray with the intersection method as well and counts those that "
-                "hit something (there should be none); prints the statistics at the end of the "
-                "run, as -p does.", .section = "App.",
+                "hit something, and every ray answered from the few polygons a leaving ray may "
+                "meet and counts those the method answers otherwise (there should be none of "
+                "either); prints the statistics at the end of the run, as -p does.",
+     .section = "App.",
      .example = "-de"},
     {.spelling = "--output", .form = Text, .topic = Program, .first = {"FILE", {}},
      .repeatable = true, .apply = [](Options& o, A a) { o.outputs.push_back(a.text); },

@@ -87,9 +87,52 @@ bool same(const std::optional<Hit>& a, const std::optional<Hit>& b) {
 struct Tally {
     int mismatches = 0;
     int culled_lanes = 0;
+    int guarded_lanes = 0;  ///< answered from their guards
     int passed_lanes = 0;
     int mixed_packets = 0;  ///< packets with lanes both culled and passed on
 };
+
+// What a lane the packet does not ask holds before and after.
+constexpr Hit kUnasked{-1.0, 0xdeadu};
+
+struct LaneRoutes {
+    std::uint32_t culled = 0;
+    std::uint32_t guarded = 0;
+};
+
+// Each lane of the packet against the single ray's answer through `single`: the lanes not asked
+// must keep kUnasked. Returns the lanes the single path culled and answered from their guards.
+LaneRoutes check_lanes(const ExitCulling& single, const RayPacket& packet, const PacketHits& got,
+                       std::uint32_t blocked, std::size_t index, TraceCounters& single_counters,
+                       Tally& tally) {
+    LaneRoutes routes;
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+        const bool asked = ((packet.active >> lane) & 1u) != 0;
+        const bool lane_blocked = ((blocked >> lane) & 1u) != 0;
+        if (!asked) {
+            if (!same(got[lane], kUnasked) || lane_blocked) {
+                ++tally.mismatches;
+                ADD_FAILURE() << "lane " << lane << " was not asked but changed";
+            }
+            continue;
+        }
+        const std::uint64_t culled_before = single_counters.culled_exits;
+        const std::uint64_t guarded_before = single_counters.guard_answers;
+        const std::optional<Hit> want =
+            single.closest_hit(packet.rays[lane], packet.t[lane], single_counters);
+        const bool want_blocked =
+            single.occluded(packet.rays[lane], packet.t[lane], single_counters);
+        // A culled ray is culled as a nearest-hit ray and as a feeler alike.
+        routes.culled |= single_counters.culled_exits != culled_before ? 1u << lane : 0u;
+        // So is a ray answered from its guards.
+        routes.guarded |= single_counters.guard_answers != guarded_before ? 1u << lane : 0u;
+        if ((!same(want, got[lane]) || want_blocked != lane_blocked) && ++tally.mismatches <= 5) {
+            ADD_FAILURE() << "lane " << lane << " of packet " << index
+                          << " differs from the single ray";
+        }
+    }
+    return routes;
+}
 
 // The rays eight to a packet through `packed`, against single rays through `single` (built the
 // same way); both counters are compared where the method counts a packet as its rays.
@@ -103,7 +146,6 @@ Tally compare(const Scene& scene, Method method, bool some_only, bool check_cull
     const std::vector<TestRay> rays = rays_for(scene, 31);
     TraceCounters packet_counters;
     TraceCounters single_counters;
-    const Hit marker{-1.0, 0xdeadu};
     Tally tally;
     for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
         RayPacket packet;
@@ -114,56 +156,41 @@ Tally compare(const Scene& scene, Method method, bool some_only, bool check_cull
         }
         packet.active &= asked_lanes(first / kPacketSize, some_only);
         PacketHits got;
-        got.fill(marker);
+        got.fill(kUnasked);
         recorded.masks.clear();
         packed.closest_hit_packet(packet, got, packet_counters);
         const std::uint32_t blocked = packed.occluded_packet(packet, packet_counters);
-        std::uint32_t culled = 0;
-        for (int lane = 0; lane < kPacketSize; ++lane) {
-            const bool asked = ((packet.active >> lane) & 1u) != 0;
-            const bool lane_blocked = ((blocked >> lane) & 1u) != 0;
-            if (!asked) {
-                if (!same(got[lane], marker) || lane_blocked) {
-                    ++tally.mismatches;
-                    ADD_FAILURE() << "lane " << lane << " was not asked but changed";
-                }
-                continue;
-            }
-            const std::uint64_t culled_before = single_counters.culled_exits;
-            const std::optional<Hit> want =
-                single.closest_hit(packet.rays[lane], packet.t[lane], single_counters);
-            const bool want_blocked =
-                single.occluded(packet.rays[lane], packet.t[lane], single_counters);
-            // A culled ray is culled as a nearest-hit ray and as a feeler alike.
-            culled |= single_counters.culled_exits != culled_before ? 1u << lane : 0u;
-            if ((!same(want, got[lane]) || want_blocked != lane_blocked) &&
-                ++tally.mismatches <= 5) {
-                ADD_FAILURE() << "lane " << lane << " of packet " << first / kPacketSize
-                              << " differs from the single ray";
-            }
-        }
-        const std::uint32_t passed = packet.active & ~culled;
+        const auto [culled, guarded] =
+            check_lanes(single, packet, got, blocked, first / kPacketSize, single_counters, tally);
+        const std::uint32_t passed = packet.active & ~(culled | guarded);
         tally.culled_lanes += std::popcount(culled);
+        tally.guarded_lanes += std::popcount(guarded);
         tally.passed_lanes += std::popcount(passed);
         tally.mixed_packets += culled != 0 && passed != 0 ? 1 : 0;
-        // One closest-hit and one occlusion packet with the lanes not culled, or none at all.
+        // One closest-hit and one occlusion packet with the lanes neither culled nor answered from
+        // their guards, or none at all.
         const std::vector<std::uint32_t> want_masks =
             passed != 0 ? std::vector<std::uint32_t>{passed, passed} : std::vector<std::uint32_t>{};
         EXPECT_EQ(recorded.masks, want_masks) << "packet " << first / kPacketSize;
     }
     EXPECT_EQ(packet_counters.culled_exits, single_counters.culled_exits);
+    EXPECT_EQ(packet_counters.guard_answers, single_counters.guard_answers);
     if (method == Method::BruteForce) {  // the BVH's packet walk counts nodes its own way
         EXPECT_EQ(packet_counters.polygon_tests, single_counters.polygon_tests);
         EXPECT_EQ(packet_counters.nodes_visited, single_counters.nodes_visited);
         EXPECT_EQ(packet_counters.hits, single_counters.hits);
     }
-    // With -de a culled ray is traced again one at a time, as the single path does; else never.
-    EXPECT_EQ(recorded.single_rays, check_culled ? 2 * tally.culled_lanes : 0);
+    // With -de a culled or guarded ray is traced again one at a time, as the single path does;
+    // else never.
+    EXPECT_EQ(recorded.single_rays,
+              check_culled ? 2 * (tally.culled_lanes + tally.guarded_lanes) : 0);
     const ExitCullingStatistics p = packed.statistics();
     const ExitCullingStatistics s = single.statistics();
     EXPECT_EQ(p.checked, s.checked);
     EXPECT_EQ(p.checked, check_culled ? 2u * static_cast<unsigned>(tally.culled_lanes) : 0u);
     EXPECT_EQ(p.violations, 0u);
+    EXPECT_EQ(p.guards_checked, s.guards_checked);
+    EXPECT_EQ(p.guard_violations, 0u);
     return tally;
 }
 
@@ -200,6 +227,9 @@ TEST_P(ExitCullingPackets, EachLaneIsTheSingleRaysAnswer) {
                 EXPECT_GT(tally.mixed_packets, 0) << "the test would prove nothing";
                 EXPECT_GT(tally.culled_lanes, 0);
                 EXPECT_GT(tally.passed_lanes, 0);
+                if (scene.polygons.size() <= kMostLeavingTablePolygons) {
+                    EXPECT_GT(tally.guarded_lanes, 0);
+                }
             }
         }
     }

@@ -3,6 +3,7 @@
 // and must cull most of those that leave a surface into the sky: it exists for them.
 #include "rt/accel/exit_culling/leaving_table.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -11,6 +12,7 @@
 
 #include "rt/accel/brute_force.h"
 #include "rt/accel/exit_culling/exit_culling.h"
+#include "rt/geometry/ray_polygon.h"
 
 #include <gtest/gtest.h>
 
@@ -48,6 +50,8 @@ struct SceneCase {
     std::string name;
     Scene (*make)();
     bool must_cull;  ///< whether some rays surely leave it into the void
+    /// Whether some rays surely meet only a few guards (a flat fan's meet nothing but edge-on).
+    bool must_confine = must_cull;
 };
 
 Scene twocubes() {
@@ -127,6 +131,32 @@ TEST_P(LeavingTableNeverCullsAHit, WithCoarseBins) {
     EXPECT_EQ(wrong, 0);
 }
 
+// A ray the table confines to some of its guards hits no polygon but those: every polygon the
+// exact test reports hit is among them.
+TEST_P(LeavingTableNeverCullsAHit, ConfinesRaysToPolygonsThatHoldEveryHit) {
+    const Scene scene = GetParam().make();
+    const LeavingTable table(scene, culling_frame(scene), 1);
+    std::uint64_t confined = 0;
+    for (const SurfaceRay& r : leaving_rays(scene, 5000, 58)) {
+        LeavingVerdict verdict;
+        table.verdict(r.ray, r.t, verdict);
+        if (verdict.kind != LeavingVerdict::Kind::AmongGuards) {
+            continue;
+        }
+        ++confined;
+        const std::span<const std::uint32_t> named = verdict.candidates();
+        for (std::uint32_t id = 0; id < scene.polygons.size(); ++id) {
+            if (id != r.from && intersect_polygon(r.ray, scene.polygon_view(id), r.t)) {
+                ASSERT_NE(std::find(named.begin(), named.end(), id), named.end())
+                    << "polygon " << id << " hit but not named, leaving " << r.from;
+            }
+        }
+    }
+    if (GetParam().must_confine) {
+        EXPECT_GT(confined, 0u) << "the test would prove nothing";
+    }
+}
+
 // The whole layer answers as brute force on the same rays, nearest hits and feelers alike.
 TEST_P(LeavingTableNeverCullsAHit, ExitCullingEqualsBruteForce) {
     const Scene scene = GetParam().make();
@@ -141,7 +171,8 @@ INSTANTIATE_TEST_SUITE_P(
                       SceneCase{"warped_soup", warped_soup, false},
                       SceneCase{"closed_box", closed_box, true},
                       SceneCase{"closed_box_of_triangles", closed_box_of_triangles, true},
-                      SceneCase{"sphere", sphere, false}, SceneCase{"flat_fan", flat_fan, true}),
+                      SceneCase{"sphere", sphere, false},
+                      SceneCase{"flat_fan", flat_fan, true, false}),
     [](const auto& param_info) { return param_info.param.name; });
 
 // Rays leaving the checkerboard upwards: most of those that meet nothing are culled, and each
@@ -197,6 +228,23 @@ TEST(LeavingTable, CullsShadowFeelersThatReachTheLight) {
     }
     EXPECT_GT(reaching, 2000);
     EXPECT_GT(culled, reaching / 2) << culled << " of " << reaching << " feelers culled";
+}
+
+// Rays leaving the boxes' faces downwards meet the checkerboard (a guarding plane group) or a
+// neighbouring face: the layer answers most of them from those few polygons alone, as brute force
+// does, without a walk.
+TEST(LeavingTable, AnswersRaysTowardTheFloorFromTheirGuards) {
+    const Scene scene = checkerboard_with_boxes();
+    const auto light = static_cast<std::uint32_t>(scene.polygons.size() - 1);
+    std::vector<SurfaceRay> down;
+    for (const SurfaceRay& r : leaving_rays(scene, 20000, 57)) {
+        if (r.from >= 64 && r.from != light && r.ray.direction.y < 0.0) {
+            down.push_back(r);
+        }
+    }
+    ASSERT_GT(down.size(), 1000u);
+    const std::uint64_t answered = expect_culling_equals_brute_force(scene, down);
+    EXPECT_GT(answered, down.size() / 2) << answered << " of " << down.size();
 }
 
 TEST(LeavingTable, SameAnswersOnAnyNumberOfThreads) {

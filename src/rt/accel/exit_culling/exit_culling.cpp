@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "rt/accel/exit_culling/guard_hits.h"
+
 #include <fmt/format.h>
 
 namespace rt {
@@ -57,7 +59,8 @@ int default_exit_culling_resolution(std::size_t polygon_count) {
 
 ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrapped,
                          const ExitCullingSettings& settings)
-    : wrapped_(std::move(wrapped)),
+    : scene_(&scene),
+      wrapped_(std::move(wrapped)),
       table_(timed_table(scene, settings, build_seconds_)),
       leaving_(timed_leaving_table(scene, table_, settings, build_seconds_)),
       eye_(timed_coverage(scene, table_, settings, build_seconds_)),
@@ -67,18 +70,30 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
 
 std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
                                             TraceCounters& counters) const {
-    if (!culls(ray, t)) {
-        return wrapped_->closest_hit(ray, t, counters);
+    LeavingVerdict verdict;
+    switch (route(ray, t, verdict)) {
+        case Route::Culled:
+            return culled_closest_hit(ray, t, false, counters);
+        case Route::AmongGuards:
+            return guarded_closest_hit(ray, t, verdict, false, counters);
+        case Route::Wrapped:
+            break;
     }
-    return culled_closest_hit(ray, t, false, counters);
+    return wrapped_->closest_hit(ray, t, counters);
 }
 
 std::optional<Hit> ExitCulling::eye_ray_closest_hit(const Ray& ray, Interval t,
                                                     TraceCounters& counters) const {
-    if (!culls_eye_ray(ray, t)) {
-        return wrapped_->eye_ray_closest_hit(ray, t, counters);
+    LeavingVerdict verdict;
+    switch (route_eye_ray(ray, t, verdict)) {
+        case Route::Culled:
+            return culled_closest_hit(ray, t, true, counters);
+        case Route::AmongGuards:
+            return guarded_closest_hit(ray, t, verdict, true, counters);
+        case Route::Wrapped:
+            break;
     }
-    return culled_closest_hit(ray, t, true, counters);
+    return wrapped_->eye_ray_closest_hit(ray, t, counters);
 }
 
 std::optional<Hit> ExitCulling::culled_closest_hit(const Ray& ray, Interval t, bool eye_ray,
@@ -94,9 +109,32 @@ std::optional<Hit> ExitCulling::culled_closest_hit(const Ray& ray, Interval t, b
     return truth;  // a wrong cull is reported, but the picture stays right
 }
 
+std::optional<Hit> ExitCulling::guarded_closest_hit(const Ray& ray, Interval t,
+                                                    const LeavingVerdict& verdict, bool eye_ray,
+                                                    TraceCounters& counters) const {
+    ++counters.guard_answers;
+    std::optional<Hit> found = closest_hit_among(*scene_, ray, t, verdict.candidates(), counters);
+    if (!check_culled_) {
+        return found;
+    }
+    TraceCounters ignored;
+    std::optional<Hit> truth = eye_ray ? wrapped_->eye_ray_closest_hit(ray, t, ignored)
+                                       : wrapped_->closest_hit(ray, t, ignored);
+    const bool same = truth.has_value() == found.has_value() &&
+                      (!truth || (truth->t == found->t && truth->polygon == found->polygon));
+    record_if_violated(ray, !same, true);
+    return truth;  // a wrong answer is reported, but the picture stays right
+}
+
 bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    if (!culls(ray, t)) {
-        return wrapped_->occluded(ray, t, counters);
+    LeavingVerdict verdict;
+    switch (route(ray, t, verdict)) {
+        case Route::Culled:
+            break;
+        case Route::AmongGuards:
+            return guarded_occluded(ray, t, verdict, counters);
+        case Route::Wrapped:
+            return wrapped_->occluded(ray, t, counters);
     }
     ++counters.culled_exits;
     if (check_culled_) {
@@ -106,6 +144,19 @@ bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) 
         return truth;
     }
     return false;
+}
+
+bool ExitCulling::guarded_occluded(const Ray& ray, Interval t, const LeavingVerdict& verdict,
+                                   TraceCounters& counters) const {
+    ++counters.guard_answers;
+    const bool found = any_hit_among(*scene_, ray, t, verdict.candidates(), counters);
+    if (!check_culled_) {
+        return found;
+    }
+    TraceCounters ignored;
+    const bool truth = wrapped_->occluded(ray, t, ignored);
+    record_if_violated(ray, truth != found, true);
+    return truth;
 }
 
 void ExitCulling::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
@@ -118,15 +169,19 @@ void ExitCulling::eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits
     packet_closest_hit(packet, hits, true, counters);
 }
 
-std::uint32_t ExitCulling::culled_lanes(const RayPacket& packet, bool eye_rays) const {
-    std::uint32_t culled = 0;
+ExitCulling::PacketRoutes ExitCulling::packet_routes(const RayPacket& packet, bool eye_rays) const {
+    PacketRoutes routes;
     for (std::uint32_t a = packet.active & kAllLanes; a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
         const Ray& ray = packet.rays[lane];
         const Interval t = packet.t[lane];
-        culled |= (eye_rays ? culls_eye_ray(ray, t) : culls(ray, t)) ? 1u << lane : 0u;
+        LeavingVerdict& verdict = routes.verdicts[static_cast<std::size_t>(lane)];
+        verdict.kind = LeavingVerdict::Kind::Unknown;
+        const Route r = eye_rays ? route_eye_ray(ray, t, verdict) : route(ray, t, verdict);
+        routes.culled |= r == Route::Culled ? 1u << lane : 0u;
+        routes.guarded |= r == Route::AmongGuards ? 1u << lane : 0u;
     }
-    return culled;
+    return routes;
 }
 
 void ExitCulling::packet_closest_hit(const RayPacket& packet, PacketHits& hits, bool eye_rays,
@@ -138,9 +193,9 @@ void ExitCulling::packet_closest_hit(const RayPacket& packet, PacketHits& hits, 
             wrapped_->closest_hit_packet(lanes, hits, counters);
         }
     };
-    const std::uint32_t culled = culled_lanes(packet, eye_rays);
-    const std::uint32_t passed = packet.active & kAllLanes & ~culled;
-    if (culled == 0) {
+    const PacketRoutes routes = packet_routes(packet, eye_rays);
+    const std::uint32_t passed = packet.active & kAllLanes & ~(routes.culled | routes.guarded);
+    if (passed == (packet.active & kAllLanes)) {
         pass_on(packet);
         return;
     }
@@ -149,16 +204,22 @@ void ExitCulling::packet_closest_hit(const RayPacket& packet, PacketHits& hits, 
         rest.active = passed;
         pass_on(rest);
     }
-    for (std::uint32_t a = culled; a != 0; a &= a - 1) {
+    for (std::uint32_t a = routes.culled; a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
         hits[lane] = culled_closest_hit(packet.rays[lane], packet.t[lane], eye_rays, counters);
+    }
+    for (std::uint32_t a = routes.guarded; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        hits[lane] = guarded_closest_hit(packet.rays[lane], packet.t[lane],
+                                         routes.verdicts[static_cast<std::size_t>(lane)], eye_rays,
+                                         counters);
     }
 }
 
 std::uint32_t ExitCulling::occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
-    const std::uint32_t culled = culled_lanes(packet, false);
-    const std::uint32_t passed = packet.active & kAllLanes & ~culled;
-    if (culled == 0) {
+    const PacketRoutes routes = packet_routes(packet, false);
+    const std::uint32_t passed = packet.active & kAllLanes & ~(routes.culled | routes.guarded);
+    if (passed == (packet.active & kAllLanes)) {
         return wrapped_->occluded_packet(packet, counters);
     }
     std::uint32_t blocked = 0;
@@ -167,23 +228,30 @@ std::uint32_t ExitCulling::occluded_packet(const RayPacket& packet, TraceCounter
         rest.active = passed;
         blocked = wrapped_->occluded_packet(rest, counters);
     }
-    counters.culled_exits += static_cast<std::uint64_t>(std::popcount(culled));
-    for (std::uint32_t a = culled; check_culled_ && a != 0; a &= a - 1) {
+    counters.culled_exits += static_cast<std::uint64_t>(std::popcount(routes.culled));
+    for (std::uint32_t a = routes.culled; check_culled_ && a != 0; a &= a - 1) {
         const int lane = std::countr_zero(a);
         TraceCounters ignored;
         const bool truth = wrapped_->occluded(packet.rays[lane], packet.t[lane], ignored);
         record_if_violated(packet.rays[lane], truth);
         blocked |= truth ? 1u << lane : 0u;
     }
+    for (std::uint32_t a = routes.guarded; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        const bool hit =
+            guarded_occluded(packet.rays[lane], packet.t[lane],
+                             routes.verdicts[static_cast<std::size_t>(lane)], counters);
+        blocked |= hit ? 1u << lane : 0u;
+    }
     return blocked;
 }
 
-void ExitCulling::record_if_violated(const Ray& ray, bool violated) const {
-    checked_.fetch_add(1, std::memory_order_relaxed);
+void ExitCulling::record_if_violated(const Ray& ray, bool violated, bool guarded) const {
+    (guarded ? guards_checked_ : checked_).fetch_add(1, std::memory_order_relaxed);
     if (!violated) {
         return;
     }
-    violations_.fetch_add(1, std::memory_order_relaxed);
+    (guarded ? guard_violations_ : violations_).fetch_add(1, std::memory_order_relaxed);
     const std::lock_guard lock(violations_mutex_);
     if (first_violations_.size() < kViolationsKept) {
         first_violations_.push_back(ray);
@@ -219,6 +287,8 @@ ExitCullingStatistics ExitCulling::statistics() const {
     s.checking = check_culled_;
     s.checked = checked_.load();
     s.violations = violations_.load();
+    s.guards_checked = guards_checked_.load();
+    s.guard_violations = guard_violations_.load();
     const std::lock_guard lock(violations_mutex_);
     s.first_violations = first_violations_;
     return s;
@@ -255,13 +325,13 @@ std::vector<std::string> describe(const ExitCullingStatistics& s) {
     }
     if (s.checking) {
         lines.push_back(
-            fmt::format("exit culling check (-de): {} culled rays re-traced, {} hit "
-                        "something",
-                        s.checked, s.violations));
+            fmt::format("exit culling check (-de): {} culled rays re-traced, {} hit something; {} "
+                        "rays answered from their guards re-traced, {} answered otherwise",
+                        s.checked, s.violations, s.guards_checked, s.guard_violations));
         for (const Ray& r : s.first_violations) {
             lines.push_back(fmt::format(
-                "  wrongly culled: origin ({:.17g}, {:.17g}, {:.17g}) direction ({:.17g}, "
-                "{:.17g}, {:.17g})",
+                "  wrongly culled or answered: origin ({:.17g}, {:.17g}, {:.17g}) direction "
+                "({:.17g}, {:.17g}, {:.17g})",
                 r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z));
         }
     }

@@ -8,6 +8,7 @@
 // (eye_coverage.h), and only go to the table when they are not eye rays of the scene's view.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -53,10 +54,12 @@ struct ExitCullingStatistics {
     std::size_t scene_polygons = 0;       ///< of the scene, to say why there is none
     double leaving_empty_fraction = 0.0;  ///< share of (polygon, bin) entries saying "nothing"
     std::size_t leaving_memory_bytes = 0;
-    bool checking = false;              ///< -de
-    std::uint64_t checked = 0;          ///< -de: culled rays re-traced
-    std::uint64_t violations = 0;       ///< -de: culled rays that did hit something
-    std::vector<Ray> first_violations;  ///< -de: up to 10 of them, to reproduce
+    bool checking = false;               ///< -de
+    std::uint64_t checked = 0;           ///< -de: culled rays re-traced
+    std::uint64_t violations = 0;        ///< -de: culled rays that did hit something
+    std::uint64_t guards_checked = 0;    ///< -de: rays answered from their guards, re-traced
+    std::uint64_t guard_violations = 0;  ///< -de: of those, answered otherwise by the method
+    std::vector<Ray> first_violations;   ///< -de: up to 10 of either, to reproduce
 };
 
 /// The lines -p (and -de at the end of a run) prints, without trailing newlines.
@@ -93,39 +96,66 @@ public:
     ExitCullingStatistics statistics() const;
 
 private:
-    /// Whether the tables say the ray can hit nothing: a ray leaving a polygon by that
-    /// polygon's directions; any other, or one those do not cull, by the cells'. The cells' first
-    /// test inline: a ray leaving a surface starts in a full cell and is passed on by it alone.
-    bool culls(const Ray& ray, Interval t) const {
-        if (ray.leaves != kLeavesNoPolygon && leaving_.nothing_ahead(ray, t)) {
-            return true;
+    /// How a ray is answered: ended at once, from its guards' exact tests, or by the wrapped
+    /// method's walk.
+    enum class Route : std::uint8_t { Culled, AmongGuards, Wrapped };
+    /// The route the tables give the ray: a ray leaving a polygon is culled, or confined to some
+    /// of its guards, by that polygon's directions (the verdict is left in `verdict`); any other,
+    /// or one those do not cull, is culled by the cells' directions. The cells' first test
+    /// inline: a ray leaving a surface starts in a full cell and is passed on by it alone.
+    Route route(const Ray& ray, Interval t, LeavingVerdict& verdict) const {
+        if (ray.leaves != kLeavesNoPolygon) {
+            leaving_.verdict(ray, t, verdict);
+            if (verdict.kind == LeavingVerdict::Kind::NothingAhead) {
+                return Route::Culled;
+            }
         }
-        return !table_.starts_in_full_cell(ray.origin) && table_.nothing_ahead(ray, t);
+        if (!table_.starts_in_full_cell(ray.origin) && table_.nothing_ahead(ray, t)) {
+            return Route::Culled;
+        }
+        return verdict.kind == LeavingVerdict::Kind::AmongGuards ? Route::AmongGuards
+                                                                 : Route::Wrapped;
     }
-    /// Whether the coverage, or for a ray that is not an eye ray of the view the table, says the
-    /// ray can hit nothing.
-    bool culls_eye_ray(const Ray& ray, Interval t) const {
+    /// The route of an eye ray: by the coverage when it is an eye ray of the scene's view.
+    Route route_eye_ray(const Ray& ray, Interval t, LeavingVerdict& verdict) const {
         switch (eye_.verdict(ray, t)) {
             case EyeCoverage::Verdict::MayHit:
-                return false;
+                return Route::Wrapped;
             case EyeCoverage::Verdict::HitsNothing:
-                return true;
+                return Route::Culled;
             case EyeCoverage::Verdict::NotAnEyeRay:
                 break;
         }
-        return culls(ray, t);
+        return route(ray, t, verdict);
     }
     /// The answer for a culled ray: none, or under -de the wrapped accelerator's, checked.
     std::optional<Hit> culled_closest_hit(const Ray& ray, Interval t, bool eye_ray,
                                           TraceCounters& counters) const;
-    /// The active lanes of the packet that the table (or for eye rays the coverage) culls.
-    std::uint32_t culled_lanes(const RayPacket& packet, bool eye_rays) const;
+    /// closest_hit for a ray confined to its guards: their exact tests alone, or under -de the
+    /// wrapped accelerator's answer, checked against theirs.
+    std::optional<Hit> guarded_closest_hit(const Ray& ray, Interval t,
+                                           const LeavingVerdict& verdict, bool eye_ray,
+                                           TraceCounters& counters) const;
+    /// occluded for a ray confined to its guards, as guarded_closest_hit.
+    bool guarded_occluded(const Ray& ray, Interval t, const LeavingVerdict& verdict,
+                          TraceCounters& counters) const;
+    /// The routes of a packet's active lanes: the culled and the guarded lanes as bits, and the
+    /// guarded lanes' verdicts.
+    struct PacketRoutes {
+        std::uint32_t culled = 0;
+        std::uint32_t guarded = 0;
+        std::array<LeavingVerdict, kPacketSize> verdicts;
+    };
+    PacketRoutes packet_routes(const RayPacket& packet, bool eye_rays) const;
     /// closest_hit_packet and eye_ray_closest_hit_packet.
     void packet_closest_hit(const RayPacket& packet, PacketHits& hits, bool eye_rays,
                             TraceCounters& counters) const;
-    /// -de: whether the wrapped accelerator finds a hit on a culled ray; records it if so.
-    void record_if_violated(const Ray& ray, bool violated) const;
+    /// -de: records a culled ray (violated: the wrapped accelerator finds a hit on it), or with
+    /// `guarded` a ray answered from its guards (violated: the wrapped accelerator answers
+    /// otherwise).
+    void record_if_violated(const Ray& ray, bool violated, bool guarded = false) const;
 
+    const Scene* scene_;
     std::unique_ptr<Accelerator> wrapped_;
     double build_seconds_ = 0.0;  ///< set while table_ and eye_ are built: declared before
     ExitCullingTable table_;
@@ -136,6 +166,8 @@ private:
     std::string name_;
     mutable std::atomic<std::uint64_t> checked_{0};
     mutable std::atomic<std::uint64_t> violations_{0};
+    mutable std::atomic<std::uint64_t> guards_checked_{0};
+    mutable std::atomic<std::uint64_t> guard_violations_{0};
     mutable std::mutex violations_mutex_;
     mutable std::vector<Ray> first_violations_;
 };

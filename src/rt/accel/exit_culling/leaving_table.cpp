@@ -40,6 +40,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "rt/accel/exit_culling/plane_group_grid.h"
 #include "rt/accel/hit_regions/polygon_reach.h"
 #include "rt/accel/parallel_parts.h"
 #include "rt/accel/voxel/polygon_boxes.h"
@@ -124,6 +125,7 @@ public:
             planes_[id] = polygon_plane(scene, q, frame.rounding);
         }
         find_groups();
+        grid_groups();
         const auto row_count = static_cast<std::size_t>(table.bins_.rows());
         bands_.assign(count_ * row_count, 0);
         for (std::size_t id = 0; id < count_; ++id) {
@@ -170,6 +172,8 @@ private:
     };
 
     void find_groups();
+    /// The grid of each plane group, in the table (plane_group_grid.h).
+    void grid_groups();
     /// Fills p's entry but for its guards; returns its patches.
     std::vector<Box3> set_up(std::uint32_t p);
     /// Every other polygon's directions from p's patches, by unit.
@@ -192,6 +196,7 @@ private:
     std::vector<std::uint32_t> leader_;  ///< per polygon: its group's leader, or kNoGroup
     std::vector<std::vector<std::uint32_t>> members_;  ///< per leader: the group, leader first
     std::vector<double> group_scale_;  ///< per leader: its members' corners 0's largest |c|
+    std::vector<std::uint32_t> grid_of_leader_;  ///< per leader: its group's grid
     double widen_ = 0.0;
     /// A guard whose corners reach no higher than this up a side of P's plane may be ruled out
     /// from it; higher, the rise would have to be too steep to pay.
@@ -236,6 +241,20 @@ void LeavingTable::Builder::find_groups() {
     }
 }
 
+void LeavingTable::Builder::grid_groups() {
+    grid_of_leader_.assign(count_, PlaneGroupGrids::kNoGrid);
+    std::vector<Box3> boxes(count_);
+    for (std::size_t id = 0; id < count_; ++id) {
+        boxes[id] = reaches_[id].box;
+    }
+    for (std::uint32_t id = 0; id < count_; ++id) {
+        if (leader_[id] == id) {
+            grid_of_leader_[id] =
+                table_.group_grids_.add(scene_.polygons[id].normal, members_[id], boxes);
+        }
+    }
+}
+
 void LeavingTable::Builder::add_directions(std::uint32_t q, const std::vector<Box3>& patches,
                                            std::vector<std::uint16_t>& rows) const {
     const auto& bins = table_.bins_;
@@ -269,6 +288,7 @@ LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Uni
     g.height = {Box3::kInfinity, Box3::kInfinity};
     if (group) {
         g.group_scale = group_scale_[unit.key];
+        g.grid = grid_of_leader_[unit.key];
         return g;
     }
     const PolygonPlane& plane = planes_[p];
@@ -320,6 +340,7 @@ std::vector<Box3> LeavingTable::Builder::set_up(std::uint32_t p) {
     if (leader_[p] != kNoGroup) {
         leaving.group_leader = leader_[p];
         leaving.group_scale = group_scale_[leader_[p]];
+        leaving.group_grid = grid_of_leader_[leader_[p]];
     }
     // Each patch grown by a millionth of its size: patch_of() rounds within a few ulps.
     std::vector<Box3> patches(t.patches());
@@ -432,6 +453,7 @@ LeavingTable::LeavingTable(const Scene& scene, const CullingFrame& frame, int th
         // A corner or a reach beyond the doubles' range has no directions to bin: no table.
         polygons_.clear();
         masks_.clear();
+        group_grids_ = {};
         return;
     }
     // Each polygon writes only its own slots. Its work grows as the square of the polygons:
@@ -443,39 +465,64 @@ LeavingTable::LeavingTable(const Scene& scene, const CullingFrame& frame, int th
     builder.gather();
 }
 
-bool LeavingTable::nothing_ahead(const Ray& ray, Interval t) const {
+void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) const {
+    verdict.kind = LeavingVerdict::Kind::Unknown;
+    verdict.count = 0;
     const std::uint32_t id = ray.leaves;
     if (id >= polygons_.size() || !(t.min >= 0.0)) {
-        return false;
+        return;
     }
     const Leaving& p = polygons_[id];
     if (!p.start.contains(ray.origin)) {
-        return false;
+        return;
     }
     const Vec3& d = ray.direction;
     if (!is_finite(d) || (d.x == 0.0 && d.y == 0.0 && d.z == 0.0)) {
-        return false;
+        return;
     }
     // The line's reciprocals serve the direction's bin and every guard's box.
     const LineProbe line(ray);
     const std::uint16_t may_meet = mask(id, patch_of(p, ray.origin), bins_.bin_of(d, line.inverse));
     if ((may_meet & kOthers) != 0) {
-        return false;
+        return;
     }
-    // Each guard the ray's bin may meet must be missed: its box first, a cheap test.
+    // Each guard the ray's bin may meet is missed, or kept as a candidate: a single polygon
+    // itself, a plane group by those of its polygons near where the ray crosses their plane.
+    // Its box first, a cheap test.
     for (std::uint32_t bits = may_meet; bits != 0; bits &= bits - 1) {
         const Guard& g =
             guards_[p.first_guard + static_cast<std::uint32_t>(std::countr_zero(bits))];
-        if (line_may_meet_box(line, g.box.data()) && !misses_guard(ray, t, p, g)) {
-            return false;
+        if (!line_may_meet_box(line, g.box.data()) || misses_guard(ray, t, p, g)) {
+            continue;
+        }
+        if (g.group_scale >= 0.0) {
+            // The group's polygons near where the ray crosses their plane.
+            if (!group_grids_.add_candidates(
+                    g.grid, ray, scene_->corner_position(scene_->polygons[g.polygon], 0),
+                    g.group_scale, verdict.polygons, verdict.count)) {
+                verdict.count = 0;
+                return;  // unsure
+            }
+            continue;
+        }
+        if (verdict.count == verdict.polygons.size()) {
+            verdict.count = 0;
+            return;  // unsure
+        }
+        verdict.polygons[verdict.count++] = g.polygon;
+    }
+    if (p.group_scale >= 0.0) {
+        const Vec3 leader = scene_->corner_position(scene_->polygons[p.group_leader], 0);
+        if (!plane_group_certainly_missed(ray, scene_->polygons[p.group_leader].normal, leader,
+                                          p.group_scale, t.min) &&
+            !group_grids_.add_candidates(p.group_grid, ray, leader, p.group_scale, verdict.polygons,
+                                         verdict.count)) {
+            verdict.count = 0;
+            return;  // unsure
         }
     }
-    if (p.group_scale < 0.0) {
-        return true;
-    }
-    const Polygon& leader = scene_->polygons[p.group_leader];
-    return plane_group_certainly_missed(ray, leader.normal, scene_->corner_position(leader, 0),
-                                        p.group_scale, t.min);
+    verdict.kind =
+        verdict.count == 0 ? LeavingVerdict::Kind::NothingAhead : LeavingVerdict::Kind::AmongGuards;
 }
 
 bool LeavingTable::misses_guard(const Ray& ray, Interval t, const Leaving& p,
@@ -524,7 +571,7 @@ double LeavingTable::empty_fraction() const {
 
 std::size_t LeavingTable::memory_bytes() const {
     return polygons_.capacity() * sizeof(Leaving) + guards_.capacity() * sizeof(Guard) +
-           masks_.capacity() * sizeof(std::uint16_t);
+           masks_.capacity() * sizeof(std::uint16_t) + group_grids_.memory_bytes();
 }
 
 }  // namespace rt

@@ -27,6 +27,7 @@
 
 #include "rt/accel/exit_culling/direction_bins.h"
 #include "rt/accel/exit_culling/occupied_cells.h"
+#include "rt/accel/exit_culling/plane_group_grid.h"
 #include "rt/core/bounds.h"
 #include "rt/core/ray.h"
 #include "rt/scene/scene.h"
@@ -40,6 +41,8 @@ namespace rt {
 inline constexpr std::size_t kMostLeavingTablePolygons = 160;
 /// Guards per polygon, at most: one bit each in a direction's mask, beside the others' bit.
 inline constexpr std::size_t kMostGuards = 15;
+/// Polygons a ray may be confined to, at most: more, and the table says it cannot tell.
+inline constexpr std::size_t kMostLeavingCandidates = 16;
 /// A polygon's start box is cut into this many patches a side (along its two longest axes), each
 /// with its own directions, in scenes of up to kFinePatchPolygons polygons; else not cut. From a
 /// patch, a nearby polygon covers fewer directions.
@@ -48,6 +51,23 @@ inline constexpr std::size_t kFinePatchPolygons = 128;
 /// Direction bins along each edge of a face of the direction cube: finer than the cell table's,
 /// as a light seen past a box's edge is the usual case here.
 inline constexpr int kLeavingBinsPerSide = 16;
+
+/// What the table says of a ray leaving a polygon (LeavingTable::verdict). `polygons` is left
+/// unset past `count`: a verdict is made for every ray leaving a polygon.
+struct LeavingVerdict {  // NOLINT(cppcoreguidelines-pro-type-member-init)
+    enum class Kind : std::uint8_t {
+        Unknown,       ///< the table cannot tell: the method must walk the ray
+        NothingAhead,  ///< the ray hits no polygon at any t > t.min
+        /// Any hit it has is on one of `polygons`: single polygons that guard the one it leaves,
+        /// and the polygons of guarding plane groups near where it crosses their plane.
+        AmongGuards,
+    };
+    Kind kind = Kind::Unknown;
+    std::uint32_t count = 0;  ///< of `polygons`, for AmongGuards
+    std::array<std::uint32_t, kMostLeavingCandidates> polygons;
+
+    std::span<const std::uint32_t> candidates() const { return {polygons.data(), count}; }
+};
 
 class LeavingTable {
 public:
@@ -61,10 +81,18 @@ public:
 
     bool active() const { return !polygons_.empty(); }
 
-    /// True only if the ray, leaving polygon ray.leaves, can hit no polygon at any t > t.min.
-    /// False for a ray that names no polygon, starts outside the box a hit on its polygon can
-    /// lie in, has t.min < 0, or a zero or non-finite direction.
-    bool nothing_ahead(const Ray& ray, Interval t) const;
+    /// Which polygons the ray, leaving polygon ray.leaves, may hit at t > t.min: none, only some
+    /// of its polygon's guards that are single polygons (those whose own tests could not rule
+    /// them out), or it cannot tell. Unknown for a ray that names no polygon, starts outside the
+    /// box a hit on its polygon can lie in, has t.min < 0, or a zero or non-finite direction.
+    /// Written into `verdict`, which a caller keeps from ray to ray.
+    void verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) const;
+    /// True only if the ray can hit no polygon at any t > t.min (verdict NothingAhead).
+    bool nothing_ahead(const Ray& ray, Interval t) const {
+        LeavingVerdict v;
+        verdict(ray, t, v);
+        return v.kind == LeavingVerdict::Kind::NothingAhead;
+    }
 
     std::size_t polygons() const { return polygons_.size(); }
     int bins_per_side() const { return bins_.side(); }
@@ -85,6 +113,7 @@ private:
         Vec3 normal;             ///< unit
         double offset = 0.0;     ///< dot(normal, its corner 0)
         double clearance = 0.0;  ///< the least distance from its plane, before the ray's own term
+        std::uint32_t grid = PlaneGroupGrids::kNoGrid;  ///< for a group, its grid
         /// How far its corners reach up each side of P's plane (the side P's normal points to,
         /// then the other); infinite when it is not ruled out that way.
         std::array<double, 2> height{};
@@ -101,6 +130,7 @@ private:
         /// negative when P is alone in its plane.
         std::uint32_t group_leader = 0;
         double group_scale = -1.0;
+        std::uint32_t group_grid = PlaneGroupGrids::kNoGrid;
         std::uint32_t first_guard = 0;
         std::uint32_t guards = 0;
     };
@@ -138,6 +168,7 @@ private:
     int patch_side_ = 1;
     std::vector<Leaving> polygons_;
     std::vector<Guard> guards_;
+    PlaneGroupGrids group_grids_;  ///< per plane group, which of its polygons a crossing is near
     /// Per polygon, patch and bin (face, row, column): mask().
     std::vector<std::uint16_t> masks_;
 };
