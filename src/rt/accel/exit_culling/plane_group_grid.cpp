@@ -12,7 +12,7 @@ namespace {
 // Relative headroom on a bound, for the rounding of computing it.
 constexpr double kSlack = 1.0 + 1e-9;
 // Cells a side, at most: a group of n polygons gets about sqrt(n) a side.
-constexpr int kMostCellsPerSide = 16;
+constexpr int kMostCellsPerSide = 32;
 // The reach boxes are listed grown by this share of the group's extent (and at least its
 // rounding): a query whose tolerance is larger says it is unsure. Away from edge-on the
 // tolerance is about 2^-40 / 1e-6 of the scale at most, far below.
@@ -47,8 +47,8 @@ std::uint32_t PlaneGroupGrids::add(const Vec3& normal, std::span<const std::uint
     grid.margin = std::max(kMarginShare * all.largest_extent(), 1e-12 * all.magnitude());
     const Box3 grown = all.grown(grid.margin);
     const int side =
-        std::clamp(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(members.size())))), 1,
-                   kMostCellsPerSide);
+        std::clamp(2 * static_cast<int>(std::ceil(std::sqrt(static_cast<double>(members.size())))),
+                   1, kMostCellsPerSide);
     for (std::size_t k = 0; k < 2; ++k) {
         const int axis = grid.axis[k];
         const double length = grown.hi[axis] - grown.lo[axis];
