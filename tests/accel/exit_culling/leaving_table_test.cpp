@@ -46,6 +46,23 @@ Scene checkerboard_with_boxes() {
     return b.scene();
 }
 
+// A closed room (its walls facing out, as add_box makes them) with three boxes and a light
+// inside: its floor sees 23 units, more than 15, so its masks are 32 bits wide.
+Scene room_with_boxes() {
+    SceneBuilder b;
+    Attribute light;
+    light.emission = 1.0;
+    b.scene().attributes.push_back(light);
+    const auto light_attribute = static_cast<std::uint32_t>(b.scene().attributes.size() - 1);
+    add_box(b, {-5, 0, -5}, {5, 6, 5});
+    add_box(b, {-3, 0, -3}, {-1, 3, -1});
+    add_box(b, {1, 0, 1}, {3, 1.5, 3.5});
+    add_box(b, {-2, 2, 2}, {-1, 3, 3});  // floating
+    b.add_polygon({{-1, 5.9, -1}, {1, 5.9, -1}, {1, 5.9, 1}, {-1, 5.9, 1}}, {0, -1, 0},
+                  light_attribute);
+    return b.scene();
+}
+
 struct SceneCase {
     std::string name;
     Scene (*make)();
@@ -170,6 +187,7 @@ INSTANTIATE_TEST_SUITE_P(
                       SceneCase{"boxes", boxes, true}, SceneCase{"soup", soup, true},
                       SceneCase{"warped_soup", warped_soup, false},
                       SceneCase{"closed_box", closed_box, true},
+                      SceneCase{"room_with_boxes", room_with_boxes, true},
                       SceneCase{"closed_box_of_triangles", closed_box_of_triangles, true},
                       SceneCase{"sphere", sphere, false},
                       SceneCase{"flat_fan", flat_fan, true, false}),
@@ -245,6 +263,20 @@ TEST(LeavingTable, AnswersRaysTowardTheFloorFromTheirGuards) {
     ASSERT_GT(down.size(), 1000u);
     const std::uint64_t answered = expect_culling_equals_brute_force(scene, down);
     EXPECT_GT(answered, down.size() / 2) << answered << " of " << down.size();
+}
+
+// A polygon that sees more than 15 others keeps each as a guard (32-bit masks), so none of its
+// bins says "any other polygon"; a scene whose polygons see at most 15 keeps 16-bit masks.
+TEST(LeavingTable, KeepsEveryUnitAsAGuardUpToThirtyOne) {
+    const Scene room = room_with_boxes();
+    const LeavingTable wide(room, culling_frame(room), 1);
+    EXPECT_EQ(wide.empty_fraction(), 1.0);
+    EXPECT_GT(wide.guards(), 15u * 4);
+    const Scene cubes = twocubes();
+    const LeavingTable narrow(cubes, culling_frame(cubes), 1);
+    EXPECT_EQ(narrow.empty_fraction(), 1.0);
+    const std::size_t masks = cubes.polygons.size() * 4 * 6 * 16 * 16;
+    EXPECT_LT(narrow.memory_bytes(), masks * 3) << "16-bit masks, not 32";
 }
 
 TEST(LeavingTable, SameAnswersOnAnyNumberOfThreads) {

@@ -404,9 +404,9 @@ void LeavingTable::Builder::place(std::uint32_t p, const std::vector<Unit>& unit
     // Rows are per patch and face row; a row's bit k is column k.
     const std::size_t patch_rows = t.patches() * static_cast<std::size_t>(t.bins_.rows());
     const auto side_bins = static_cast<std::size_t>(t.bins_.side());
-    const auto masks = std::span<std::uint16_t>(t.masks_).subspan(p * patch_rows * side_bins,
-                                                                  patch_rows * side_bins);
-    const auto scatter = [&](std::span<const std::uint16_t> rows, std::uint16_t bit) {
+    const auto masks =
+        std::span<GuardMask>(t.masks_).subspan(p * patch_rows * side_bins, patch_rows * side_bins);
+    const auto scatter = [&](std::span<const std::uint16_t> rows, GuardMask bit) {
         for (std::size_t row = 0; row < patch_rows; ++row) {
             for (std::uint32_t columns = rows[row]; columns != 0; columns &= columns - 1) {
                 masks[row * side_bins + static_cast<std::size_t>(std::countr_zero(columns))] |= bit;
@@ -419,7 +419,7 @@ void LeavingTable::Builder::place(std::uint32_t p, const std::vector<Unit>& unit
         const bool group = leader_[unit.key] == unit.key;
         if (unit.bins > 0 && guards_[p].size() < kMostGuards &&
             (group || planes_[unit.key].usable)) {
-            scatter(unit.rows, static_cast<std::uint16_t>(1u << guards_[p].size()));
+            scatter(unit.rows, GuardMask{1} << guards_[p].size());
             guards_[p].push_back(make_guard(p, unit));
             continue;
         }
@@ -463,6 +463,23 @@ LeavingTable::LeavingTable(const Scene& scene, const CullingFrame& frame, int th
     share_out(count, parts,
               [&](std::size_t id, int) { builder.build(static_cast<std::uint32_t>(id)); });
     builder.gather();
+    narrow_masks_if_they_fit();
+}
+
+void LeavingTable::narrow_masks_if_they_fit() {
+    constexpr std::size_t kNarrowGuards = 15;
+    if (std::any_of(polygons_.begin(), polygons_.end(),
+                    [](const Leaving& p) { return p.guards > kNarrowGuards; })) {
+        return;
+    }
+    constexpr GuardMask kNarrowOthers = GuardMask{1} << kNarrowGuards;
+    narrow_masks_.resize(masks_.size());
+    std::transform(masks_.begin(), masks_.end(), narrow_masks_.begin(), [](GuardMask m) {
+        return static_cast<std::uint16_t>((m & (kNarrowOthers - 1)) |
+                                          ((m & kOthers) != 0 ? kNarrowOthers : 0));
+    });
+    std::vector<GuardMask>().swap(masks_);  // its memory too
+    others_bit_ = kNarrowOthers;
 }
 
 void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) const {
@@ -482,8 +499,8 @@ void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) 
     }
     // The line's reciprocals serve the direction's bin and every guard's box.
     const LineProbe line(ray);
-    const std::uint16_t may_meet = mask(id, patch_of(p, ray.origin), bins_.bin_of(d, line.inverse));
-    if ((may_meet & kOthers) != 0) {
+    const GuardMask may_meet = mask(id, patch_of(p, ray.origin), bins_.bin_of(d, line.inverse));
+    if ((may_meet & others_bit_) != 0) {
         return;
     }
     // Each guard the ray's bin may meet is missed, or kept as a candidate: a single polygon
@@ -561,17 +578,21 @@ bool LeavingTable::misses_guard(const Ray& ray, Interval t, const Leaving& p,
 }
 
 double LeavingTable::empty_fraction() const {
-    if (masks_.empty()) {
-        return 0.0;
-    }
-    const auto empty = std::count_if(masks_.begin(), masks_.end(),
-                                     [](std::uint16_t m) { return (m & kOthers) == 0; });
-    return static_cast<double>(empty) / static_cast<double>(masks_.size());
+    const auto share = [this](const auto& masks) {
+        if (masks.empty()) {
+            return 0.0;
+        }
+        const auto empty = std::count_if(masks.begin(), masks.end(),
+                                         [this](GuardMask m) { return (m & others_bit_) == 0; });
+        return static_cast<double>(empty) / static_cast<double>(masks.size());
+    };
+    return narrow_masks_.empty() ? share(masks_) : share(narrow_masks_);
 }
 
 std::size_t LeavingTable::memory_bytes() const {
     return polygons_.capacity() * sizeof(Leaving) + guards_.capacity() * sizeof(Guard) +
-           masks_.capacity() * sizeof(std::uint16_t) + group_grids_.memory_bytes();
+           masks_.capacity() * sizeof(GuardMask) +
+           narrow_masks_.capacity() * sizeof(std::uint16_t) + group_grids_.memory_bytes();
 }
 
 }  // namespace rt
