@@ -269,6 +269,8 @@ TEST(RtProfile, DashPPrintsCountersPerKindOfRay) {
     EXPECT_NE(r.out.find("shadow feeler"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("structure:"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("time: load"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Mrays/s of every kind"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("guarded"), std::string::npos) << r.out;
 }
 
 TEST(RtProfile, DashRFiresRandomRaysAndWritesNoPicture) {

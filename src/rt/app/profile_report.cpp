@@ -35,6 +35,12 @@ std::string profile_report(const ProfileInputs& in) {
     text += fmt::format("  time: load {:.3f} s, build {:.3f} s, trace {:.3f} s, write {:.3f} s\n",
                         in.times.load_seconds, in.times.build_seconds, in.times.trace_seconds,
                         in.times.write_seconds);
+    if (in.counters != nullptr && in.times.trace_seconds > 0.0) {
+        // Every kind of ray in the table, over the trace's wall time: the renderer's rate.
+        const double rays = static_cast<double>(in.counters->total().rays);
+        text += fmt::format("  rate: {:.2f} Mrays/s of every kind over the trace's wall time\n",
+                            rays / in.times.trace_seconds * 1e-6);
+    }
     return text;
 }
 

@@ -26,7 +26,8 @@ struct ProfileInputs {
 };
 
 /// A table: one row per kind of ray that was traced (rays, voxels, nodes, polygon tests, hits,
-/// near hits, culled exits), a total row, then the build's memory and the time of each phase.
+/// near hits, culled exits, rays answered from a leaving polygon's guards), a total row, then the
+/// build's memory, the time of each phase and the rays traced per second.
 std::string profile_report(const ProfileInputs& inputs);
 
 }  // namespace rt

@@ -136,8 +136,10 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .summary = "Profile ddda operation.",
      .details = "Prints, at the end of the run on standard output, per kind of ray (eye, reflected, "
                 "refracted, diffuse, shadow feeler, probe, random): rays traced, voxels stepped, "
-                "nodes visited, polygons tested, hits, near hits and culled exits; the intersection "
-                "structure's memory; and the time of each phase.",
+                "nodes visited, polygons tested, hits, near hits, culled exits and rays answered "
+                "from the few polygons a leaving ray may meet (guarded); the intersection "
+                "structure's memory; the time of each phase; and the rays of every kind traced "
+                "per second of the trace's wall time.",
      .section = "App.", .example = "-p"},
     {.spelling = "-r", .topic = SpatialEncoding,
      .apply = [](Options& o, A) { o.random_rays = true; }, .summary = "Fire random rays.",
