@@ -136,6 +136,7 @@ bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) 
         case Route::Wrapped:
             return wrapped_->occluded(ray, t, counters);
     }
+    // Culled: nothing ahead, which -de checks.
     ++counters.culled_exits;
     if (check_culled_) {
         TraceCounters ignored;

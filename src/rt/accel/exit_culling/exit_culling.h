@@ -1,11 +1,14 @@
 // Exit-ray culling (manual part three; -De disables it, -de debugs it): an Accelerator wrapping
 // another. A ray the inclusion-cone table says can hit nothing ends at once, counted in
-// TraceCounters::culled_exits; every other ray goes to the wrapped accelerator. The table is
-// conservative, so the picture never changes; -de re-traces every culled ray to prove it.
-// A packet is tested lane by lane against the table, and its lanes that are not culled go on as
-// one packet, so that the wrapped method's packet walk (the BVH's) still serves them. Eye rays
-// (Accelerator::eye_ray_closest_hit) are culled by the pixels the scene covers instead
-// (eye_coverage.h), and only go to the table when they are not eye rays of the scene's view.
+// TraceCounters::culled_exits. A ray leaving a polygon that the leaving table confines to a few
+// polygons is answered by their exact tests alone (guard_hits.h), counted in
+// TraceCounters::guard_answers; every other ray goes to the wrapped accelerator. The tables are
+// conservative, so the picture never changes; -de re-traces every culled or answered ray to
+// prove it. A packet is tested lane by lane against the tables, and its lanes that are neither
+// culled nor answered go on as one packet, so that the wrapped method's packet walk (the BVH's)
+// still serves them. Eye rays (Accelerator::eye_ray_closest_hit) are culled by the pixels the scene
+// covers instead (eye_coverage.h), and only go to the table when they are not eye rays of the
+// scene's view.
 #pragma once
 
 #include <array>

@@ -14,8 +14,11 @@
 //   box, or, for a neighbour behind P's plane, when the ray rises from P far enough from it;
 // - every other polygon by its directions.
 // A ray leaving a checkerboard's square, or a box's face, into the sky, or towards a light past a
-// box, then ends at once, where it used to walk the whole structure. Conservative like the cell
-// table, so the picture never changes (leaving_table.cpp argues why); -de checks the rays it culls.
+// box, then ends at once, where it used to walk the whole structure. A ray whose directions hold
+// only guards, some of which it may meet, is confined to those (a plane group's to its polygons
+// near the crossing, plane_group_grid.h): ExitCulling answers it by their exact tests alone.
+// Conservative like the cell table, so the picture never changes (leaving_table.cpp argues why);
+// -de checks the rays it culls.
 #pragma once
 
 #include <algorithm>
@@ -36,8 +39,8 @@ namespace rt {
 
 /// Scenes of more polygons get no table: the build looks at every pair of polygons, about a
 /// quarter of a microsecond each, and a big mesh's neighbours touch, which fills a polygon's
-/// directions anyway. (The gallery, 224 polygons in a closed room, built it in 18 ms on one
-/// thread and traced 5 % faster with it, which did not pay.)
+/// directions anyway. (The gallery, 224 polygons in a closed room, built it in 17 ms on one
+/// thread and traced 16 ms faster with it, answers from guards included: no gain.)
 inline constexpr std::size_t kMostLeavingTablePolygons = 160;
 /// A direction's mask: which guards, and whether any other polygon, may be met there.
 using GuardMask = std::uint32_t;
@@ -83,11 +86,11 @@ public:
 
     bool active() const { return !polygons_.empty(); }
 
-    /// Which polygons the ray, leaving polygon ray.leaves, may hit at t > t.min: none, only some
-    /// of its polygon's guards that are single polygons (those whose own tests could not rule
-    /// them out), or it cannot tell. Unknown for a ray that names no polygon, starts outside the
-    /// box a hit on its polygon can lie in, has t.min < 0, or a zero or non-finite direction.
-    /// Written into `verdict`, which a caller keeps from ray to ray.
+    /// Which polygons the ray, leaving polygon ray.leaves, may hit at t > t.min: none, only a few
+    /// named ones (guards its own tests could not rule out, and polygons of guarding plane groups
+    /// near where it crosses their plane), or it cannot tell. Unknown for a ray that names no
+    /// polygon, starts outside the box a hit on its polygon can lie in, has t.min < 0, or a zero or
+    /// non-finite direction. Written into `verdict`, which a caller keeps from ray to ray.
     void verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) const;
     /// True only if the ray can hit no polygon at any t > t.min (verdict NothingAhead).
     bool nothing_ahead(const Ray& ray, Interval t) const {
