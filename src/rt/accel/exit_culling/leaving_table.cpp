@@ -278,6 +278,8 @@ void LeavingTable::Builder::add_directions(std::uint32_t q, const std::vector<Bo
 LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Unit& unit) const {
     Guard g;
     g.polygon = unit.key;
+    g.scene_normal = scene_.polygons[unit.key].normal;
+    g.first = scene_.corner_position(scene_.polygons[unit.key], 0);
     const bool group = leader_[unit.key] == unit.key;
     Box3 box;
     for (const std::uint32_t q : group ? std::span<const std::uint32_t>(members_[unit.key])
@@ -339,6 +341,8 @@ std::vector<Box3> LeavingTable::Builder::set_up(std::uint32_t p) {
     leaving.point = plane.point;
     if (leader_[p] != kNoGroup) {
         leaving.group_leader = leader_[p];
+        leaving.group_normal = scene_.polygons[leader_[p]].normal;
+        leaving.group_point = scene_.corner_position(scene_.polygons[leader_[p]], 0);
         leaving.group_scale = group_scale_[leader_[p]];
         leaving.group_grid = grid_of_leader_[leader_[p]];
     }
@@ -440,7 +444,7 @@ void LeavingTable::Builder::gather() {
 
 LeavingTable::LeavingTable(const Scene& scene, const CullingFrame& frame, int threads,
                            int bins_per_side)
-    : scene_(&scene), bins_(bins_per_side) {
+    : bins_(bins_per_side) {
     const std::size_t count = scene.polygons.size();
     if (count == 0 || count > kMostLeavingTablePolygons) {
         return;
@@ -514,9 +518,8 @@ void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) 
         }
         if (g.group_scale >= 0.0) {
             // The group's polygons near where the ray crosses their plane.
-            if (!group_grids_.add_candidates(
-                    g.grid, ray, scene_->corner_position(scene_->polygons[g.polygon], 0),
-                    g.group_scale, verdict.polygons, verdict.count)) {
+            if (!group_grids_.add_candidates(g.grid, ray, g.first, g.group_scale, verdict.polygons,
+                                             verdict.count)) {
                 verdict.count = 0;
                 return;  // unsure
             }
@@ -529,9 +532,8 @@ void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) 
         verdict.polygons[verdict.count++] = g.polygon;
     }
     if (p.group_scale >= 0.0) {
-        const Vec3 leader = scene_->corner_position(scene_->polygons[p.group_leader], 0);
-        if (!plane_group_certainly_missed(ray, scene_->polygons[p.group_leader].normal, leader,
-                                          p.group_scale, t.min) &&
+        const Vec3& leader = p.group_point;
+        if (!plane_group_certainly_missed(ray, p.group_normal, leader, p.group_scale, t.min) &&
             !group_grids_.add_candidates(p.group_grid, ray, leader, p.group_scale, verdict.polygons,
                                          verdict.count)) {
             verdict.count = 0;
@@ -544,12 +546,10 @@ void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) 
 
 bool LeavingTable::misses_guard(const Ray& ray, Interval t, const Leaving& p,
                                 const Guard& g) const {
-    const Polygon& q = scene_->polygons[g.polygon];
-    const Vec3 first = scene_->corner_position(q, 0);
     if (g.group_scale >= 0.0) {
-        return plane_group_certainly_missed(ray, q.normal, first, g.group_scale, t.min);
+        return plane_group_certainly_missed(ray, g.scene_normal, g.first, g.group_scale, t.min);
     }
-    if (plane_certainly_missed(ray, q.normal, first, t)) {
+    if (plane_certainly_missed(ray, g.scene_normal, g.first, t)) {
         return true;
     }
     const Vec3& o = ray.origin;

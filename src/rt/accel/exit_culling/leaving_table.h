@@ -78,9 +78,9 @@ class LeavingTable {
 public:
     /// No table: nothing_ahead() is always false.
     LeavingTable() = default;
-    /// The table for `scene` (which must outlive it), with `frame`'s rounding allowances; none
-    /// for a scene of more than kMostLeavingTablePolygons polygons. `threads` build it (the same
-    /// table for any number).
+    /// The table for `scene` (it keeps what it needs of it), with `frame`'s rounding allowances;
+    /// none for a scene of more than kMostLeavingTablePolygons polygons. `threads` build it (the
+    /// same table for any number).
     LeavingTable(const Scene& scene, const CullingFrame& frame, int threads,
                  int bins_per_side = kLeavingBinsPerSide);
 
@@ -111,6 +111,10 @@ private:
     /// A polygon, or a plane group, kept apart from a polygon's directions (leaving_table.cpp).
     struct Guard {
         std::uint32_t polygon = 0;  ///< the polygon, or the group's leader
+        /// Its scene normal and corner 0, as the exact test reads them: kept here, a query reads
+        /// them at once instead of through the polygon's record and its corner list.
+        Vec3 scene_normal;
+        Vec3 first;
         /// For a group, the largest |coordinate| of its corners 0; negative for one polygon.
         double group_scale = -1.0;
         std::array<float, 6> box{};  ///< lo, hi: every member's corners, grown, rounded outward
@@ -134,6 +138,8 @@ private:
         /// The leader of P's plane group, and the largest |coordinate| of the group's corners 0;
         /// negative when P is alone in its plane.
         std::uint32_t group_leader = 0;
+        Vec3 group_normal;  ///< the leader's scene normal and corner 0, as for a guard
+        Vec3 group_point;
         double group_scale = -1.0;
         std::uint32_t group_grid = PlaneGroupGrids::kNoGrid;
         std::uint32_t first_guard = 0;
@@ -172,7 +178,6 @@ private:
     /// Whether the ray leaving `p` surely misses the guard (its directions aside).
     bool misses_guard(const Ray& ray, Interval t, const Leaving& p, const Guard& g) const;
 
-    const Scene* scene_ = nullptr;
     DirectionBins bins_{1};
     int patch_side_ = 1;
     std::vector<Leaving> polygons_;
