@@ -22,9 +22,14 @@ double largest_coordinate(const Vec3& v) {
     return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
 }
 
+// The cell along one axis, clamped to the grid. NaN only for an axis of one cell (0 times an
+// infinite difference), whose cell is 0.
 int cell_along(double coordinate, double lo, double per_length, int cells) {
     const double at = std::floor((coordinate - lo) * per_length);
-    return static_cast<int>(std::clamp(at, 0.0, static_cast<double>(cells - 1)));
+    if (!(at > 0.0)) {
+        return 0;
+    }
+    return at < cells - 1 ? static_cast<int>(at) : cells - 1;
 }
 
 }  // namespace
@@ -53,8 +58,11 @@ std::uint32_t PlaneGroupGrids::add(const Vec3& normal, std::span<const std::uint
         const int axis = grid.axis[k];
         const double length = grown.hi[axis] - grown.lo[axis];
         grid.lo[k] = grown.lo[axis];
-        grid.cells[k] = length > 0.0 ? side : 1;
-        grid.per_length[k] = length > 0.0 ? side / length : 0.0;
+        // One cell along an axis of no length, or of so little that its cells would be
+        // infinitely many a unit.
+        const bool cut = length > 0.0 && std::isfinite(side / length);
+        grid.cells[k] = cut ? side : 1;
+        grid.per_length[k] = cut ? side / length : 0.0;
     }
     grid.first_cell = static_cast<std::uint32_t>(cell_starts_.size() - 1);
     for (int i = 0; i < grid.cells[0]; ++i) {
