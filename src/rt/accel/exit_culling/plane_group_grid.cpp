@@ -118,7 +118,8 @@ bool PlaneGroupGrids::add_candidates(std::uint32_t grid_index, const Ray& ray, c
     const double tolerance = (spread / std::fabs(denominator) * d_size +
                               0x1p-50 * (o_size + std::fabs(along) * d_size)) *
                              kSlack;
-    if (!is_finite(x) || !(tolerance <= grid.margin)) {
+    // Half the margin: the other half covers the rounding of x's cell (see the header).
+    if (!is_finite(x) || !(tolerance <= 0.5 * grid.margin)) {
         return false;
     }
     const int i = cell_along(x[grid.axis[0]], grid.lo[0], grid.per_length[0], grid.cells[0]);

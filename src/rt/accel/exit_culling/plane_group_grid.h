@@ -15,9 +15,12 @@
 // coordinate of x is within 2^-52 (|o| + |t_L| |d|) of o + t_L d. Each coordinate of o + t_Q d
 // is then within tol = (S / |D| |d|_max + 2^-50 (|o|_max + |t_L| |d|_max)) (1 + 1e-9) of x's:
 // Q's reach box grown by tol holds x. The grid lists, in each cell, every polygon whose reach box
-// grown by the grid's margin (at least tol, or the query says it is unsure) meets the cell grown
-// by a millionth of its size, more than the rounding of the cell's index; x's cell (clamped to
-// the grid) therefore lists Q, and the query keeps Q when its box grown by tol holds x.
+// grown by the grid's margin G meets the cell grown by a millionth of its size, and the query
+// answers only when tol <= G / 2. x's computed cell index (one subtraction and one product,
+// clamped to the grid) puts x at most 2^-52 (2 |x| + the grid's length) from the cell it names,
+// where |x| is at most the group's magnitude plus G inside the grid (the edge cells reach to
+// infinity). That is under G / 2, which is at least 1e-12 times the magnitude; so Q's box grown
+// by G meets the named cell, which lists Q, and the query keeps Q as its box grown by tol holds x.
 #pragma once
 
 #include <array>
