@@ -24,14 +24,19 @@
 namespace rt::test {
 namespace {
 
+// An emitting attribute for the scene's light; its index.
+std::uint32_t add_light_attribute(SceneBuilder& b) {
+    Attribute light;
+    light.emission = 1.0;
+    b.scene().attributes.push_back(light);
+    return static_cast<std::uint32_t>(b.scene().attributes.size() - 1);
+}
+
 // A checkerboard of coplanar tiles (one plane group), boxes standing on it, floating above it and
 // sunk into it, and an emitting square above: every kind of guard.
 Scene checkerboard_with_boxes() {
     SceneBuilder b;
-    Attribute light;
-    light.emission = 1.0;
-    b.scene().attributes.push_back(light);
-    const auto light_attribute = static_cast<std::uint32_t>(b.scene().attributes.size() - 1);
+    const std::uint32_t light_attribute = add_light_attribute(b);
     for (int i = -4; i < 4; ++i) {
         for (int k = -4; k < 4; ++k) {
             const double x = 2.0 * i;
@@ -50,10 +55,7 @@ Scene checkerboard_with_boxes() {
 // inside: its floor sees 23 units, more than 15, so its masks are 32 bits wide.
 Scene room_with_boxes() {
     SceneBuilder b;
-    Attribute light;
-    light.emission = 1.0;
-    b.scene().attributes.push_back(light);
-    const auto light_attribute = static_cast<std::uint32_t>(b.scene().attributes.size() - 1);
+    const std::uint32_t light_attribute = add_light_attribute(b);
     add_box(b, {-5, 0, -5}, {5, 6, 5});
     add_box(b, {-3, 0, -3}, {-1, 3, -1});
     add_box(b, {1, 0, 1}, {3, 1.5, 3.5});
