@@ -55,7 +55,7 @@ TEST(ExitCullingTable, TwocubesTableIsSmall) {
               "exit culling of eye rays: 30818 of 204800 pixels covered (15.0%), 25600 bytes");
     EXPECT_EQ(lines[2],
               "exit culling of rays leaving a polygon: 71 polygons x 2x2 patches x 6x16x16 "
-              "direction bins, 497 guards, 100.0% of bins clear but for guards, 1034448 bytes");
+              "direction bins, 497 guards, 100.0% of bins clear but for guards, 1037520 bytes");
 }
 
 TEST(ExitCulling, DebugModeReportsItsChecks) {

@@ -138,6 +138,7 @@ public:
         widen_ = 1e-12 * std::max(frame.positions.magnitude(), 1.0);
         guard_height_ = 1e-8 * length(frame.positions.extent());
         guards_.resize(count_);
+        guard_boxes_.resize(count_);
     }
 
     /// Whether every polygon's corners are finite and its reach (both boxes) too. A NaN corner
@@ -183,7 +184,8 @@ private:
     /// Adds polygon q's directions from each patch to `rows` (patch by patch).
     void add_directions(std::uint32_t q, const std::vector<Box3>& patches,
                         std::vector<std::uint16_t>& rows) const;
-    Guard make_guard(std::uint32_t p, const Unit& unit) const;
+    /// The guard, and its box in `box`.
+    Guard make_guard(std::uint32_t p, const Unit& unit, std::array<float, 6>& box) const;
 
     LeavingTable& table_;
     const Scene& scene_;
@@ -202,6 +204,7 @@ private:
     /// from it; higher, the rise would have to be too steep to pay.
     double guard_height_ = 0.0;
     std::vector<std::vector<Guard>> guards_;
+    std::vector<std::vector<std::array<float, 6>>> guard_boxes_;  ///< each guard's box
 };
 
 // Plane groups: each polygon joins the first earlier leader of its plane (the same normal bit for
@@ -275,7 +278,8 @@ void LeavingTable::Builder::add_directions(std::uint32_t q, const std::vector<Bo
     }
 }
 
-LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Unit& unit) const {
+LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Unit& unit,
+                                                      std::array<float, 6>& guard_box) const {
     Guard g;
     g.polygon = unit.key;
     g.scene_normal = scene_.polygons[unit.key].normal;
@@ -286,7 +290,7 @@ LeavingTable::Guard LeavingTable::Builder::make_guard(std::uint32_t p, const Uni
                                        : std::span<const std::uint32_t>(&unit.key, 1)) {
         box.add(planes_[q].corners.grown(2.0 * planes_[q].rounding * kSlack));
     }
-    g.box = outward(box);
+    guard_box = outward(box);
     g.height = {Box3::kInfinity, Box3::kInfinity};
     if (group) {
         g.group_scale = group_scale_[unit.key];
@@ -424,7 +428,7 @@ void LeavingTable::Builder::place(std::uint32_t p, const std::vector<Unit>& unit
         if (unit.bins > 0 && guards_[p].size() < kMostGuards &&
             (group || planes_[unit.key].usable)) {
             scatter(unit.rows, GuardMask{1} << guards_[p].size());
-            guards_[p].push_back(make_guard(p, unit));
+            guards_[p].push_back(make_guard(p, unit, guard_boxes_[p].emplace_back()));
             continue;
         }
         for (std::size_t row = 0; row < patch_rows; ++row) {
@@ -439,6 +443,7 @@ void LeavingTable::Builder::gather() {
         table_.polygons_[p].first_guard = static_cast<std::uint32_t>(table_.guards_.size());
         table_.polygons_[p].guards = static_cast<std::uint32_t>(guards_[p].size());
         table_.guards_.insert(table_.guards_.end(), guards_[p].begin(), guards_[p].end());
+        table_.polygons_[p].first_box_block = table_.guard_boxes_.add(guard_boxes_[p]);
     }
 }
 
@@ -509,11 +514,12 @@ void LeavingTable::verdict(const Ray& ray, Interval t, LeavingVerdict& verdict) 
     }
     // Each guard the ray's bin may meet is missed, or kept as a candidate: a single polygon
     // itself, a plane group by those of its polygons near where the ray crosses their plane.
-    // Its box first, a cheap test.
-    for (std::uint32_t bits = may_meet; bits != 0; bits &= bits - 1) {
+    // Their boxes first, all at once (guard_boxes.h).
+    for (std::uint32_t bits = guard_boxes_.met(line, p.first_box_block, may_meet); bits != 0;
+         bits &= bits - 1) {
         const Guard& g =
             guards_[p.first_guard + static_cast<std::uint32_t>(std::countr_zero(bits))];
-        if (!line_may_meet_box(line, g.box.data()) || misses_guard(ray, t, p, g)) {
+        if (misses_guard(ray, t, p, g)) {
             continue;
         }
         if (g.group_scale >= 0.0) {
@@ -591,7 +597,7 @@ double LeavingTable::empty_fraction() const {
 
 std::size_t LeavingTable::memory_bytes() const {
     return polygons_.capacity() * sizeof(Leaving) + guards_.capacity() * sizeof(Guard) +
-           masks_.capacity() * sizeof(GuardMask) +
+           guard_boxes_.memory_bytes() + masks_.capacity() * sizeof(GuardMask) +
            narrow_masks_.capacity() * sizeof(std::uint16_t) + group_grids_.memory_bytes();
 }
 

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "rt/accel/exit_culling/direction_bins.h"
+#include "rt/accel/exit_culling/guard_boxes.h"
 #include "rt/accel/exit_culling/occupied_cells.h"
 #include "rt/accel/exit_culling/plane_group_grid.h"
 #include "rt/core/bounds.h"
@@ -116,8 +117,8 @@ private:
         Vec3 scene_normal;
         Vec3 first;
         /// For a group, the largest |coordinate| of its corners 0; negative for one polygon.
+        /// (Its box, every member's corners grown and rounded outward, is in guard_boxes_.)
         double group_scale = -1.0;
-        std::array<float, 6> box{};  ///< lo, hi: every member's corners, grown, rounded outward
         // Only for one polygon:
         Vec3 normal;             ///< unit
         double offset = 0.0;     ///< dot(normal, its corner 0)
@@ -144,6 +145,7 @@ private:
         std::uint32_t group_grid = PlaneGroupGrids::kNoGrid;
         std::uint32_t first_guard = 0;
         std::uint32_t guards = 0;
+        std::uint32_t first_box_block = 0;  ///< its guards' boxes in guard_boxes_
     };
     class Builder;
 
@@ -182,6 +184,7 @@ private:
     int patch_side_ = 1;
     std::vector<Leaving> polygons_;
     std::vector<Guard> guards_;
+    GuardBoxes guard_boxes_;
     PlaneGroupGrids group_grids_;  ///< per plane group, which of its polygons a crossing is near
     /// Per polygon, patch and bin (face, row, column): mask(). In masks_, or in narrow_masks_
     /// (bit 15 for the others) when they fit.
