@@ -203,14 +203,23 @@ bool neighbours_see(RenderJob& job, int x, int y, const SurfaceSeen& seen, Sampl
 // and taken in progressive order until the chi-square rule (-Xp) is satisfied, or all of them
 // with -Dx. The rule may stop early only where every sample so far, and the centres of the four
 // neighbouring pixels, see the same surface. The first samples' hits are in `first`.
-Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, KindCounters& counters,
-                 PixelReport& report, CentreMemo* memo) {
+// Room for a pixel's samples found eight at a time once the rule cannot stop early: kept by
+// the thread from pixel to pixel, as making its 1.4 kB afresh for every pixel cost about 2 % of
+// twocubes4's render. A pixel reads only what it wrote.
+struct EyeRaysAhead {
+    std::array<EyeSample, kPacketSize> samples;
+    std::array<Ray, kPacketSize> rays;
+    std::array<std::optional<Hit>, kPacketSize> hits;
+};
+
+Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, EyeRaysAhead& room,
+                 KindCounters& counters, PixelReport& report, CentreMemo* memo) {
     const SamplingSettings& sampling = job.settings.shading.sampling;
     const std::uint32_t total = job.pixel_strata.size();
     // Once the rule cannot stop early, the rest of the samples are found eight at a time too.
-    std::array<EyeSample, kPacketSize> ahead;
-    std::array<Ray, kPacketSize> ahead_rays;
-    std::array<std::optional<Hit>, kPacketSize> ahead_hits;
+    std::array<EyeSample, kPacketSize>& ahead = room.samples;
+    std::array<Ray, kPacketSize>& ahead_rays = room.rays;
+    std::array<std::optional<Hit>, kPacketSize>& ahead_hits = room.hits;
     std::uint32_t ahead_first = 0;
     std::uint32_t ahead_count = 0;
     const auto take = [&](std::uint32_t k, std::uint32_t certain) {
@@ -288,6 +297,7 @@ void render_rows(RenderJob& job, KindCounters& counters) {
         memo.emplace(job.scene.view.width);
     }
     FirstEyeRays first(job);
+    EyeRaysAhead ahead;
     RowBand band;
     while (!job.stopping) {
         int y = 0;
@@ -318,7 +328,8 @@ void render_rows(RenderJob& job, KindCounters& counters) {
             }
             PixelReport report;
             job.film.set_pixel(
-                x, y, render_pixel(job, x, y, first, counters, report, memo ? &*memo : nullptr));
+                x, y,
+                render_pixel(job, x, y, first, ahead, counters, report, memo ? &*memo : nullptr));
             samples += report.samples;
             if (sample_events) {
                 std::lock_guard lock(job.observer_mutex);
