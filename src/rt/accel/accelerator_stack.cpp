@@ -68,6 +68,14 @@ AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSet
         ExitCullingSettings culling;
         culling.check_culled = s.check_exit_culling;
         culling.build_threads = static_cast<int>(s.method.build_threads);
+        // Near hits unverified (-on), no fudge (-of) and giving up after some voxels (-tv) make the
+        // method answer otherwise than brute force on purpose, and -ds and -dl watch its answers:
+        // then every ray exit culling does not cull goes to it.
+        const bool method_as_asked = s.method.accept_near_hits || s.method.no_fudge ||
+                                     s.method.terminate_after_voxels.has_value();
+        const bool watched =
+            s.strike_check || s.strike_print || s.strike_voxels || s.log_intersections;
+        culling.answers = !method_as_asked && !watched;
         auto wrapped = std::make_unique<ExitCulling>(scene, std::move(base_), culling);
         culling_ = wrapped.get();
         base_ = std::move(wrapped);

@@ -137,7 +137,8 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
      .details = "Prints, at the end of the run on standard output, per kind of ray (eye, reflected, "
                 "refracted, diffuse, shadow feeler, probe, random): rays traced, voxels stepped, "
                 "nodes visited, polygons tested, hits, near hits, culled exits and rays answered "
-                "from the few polygons a leaving ray may meet (guarded); the intersection "
+                "from the few polygons a leaving ray may meet or an eye ray's tile of pixels "
+                "may see (guarded); the intersection "
                 "structure's memory; the time of each phase; and the rays of every kind traced "
                 "per second of the trace's wall time.",
      .section = "App.", .example = "-p"},

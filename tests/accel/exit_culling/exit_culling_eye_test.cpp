@@ -21,15 +21,19 @@ namespace {
 
 struct EyeCounts {
     int culled = 0;
+    int answered = 0;  ///< from the item buffer, without the method
     int hits = 0;
 };
 
 // Asks eye rays of ExitCulling over brute force, one at a time and in packets of eight, and
-// compares each answer with brute force's; -de re-traces every culled ray.
+// compares each answer with brute force's: its own answers, and under -de, which re-traces every
+// culled ray and every ray answered from the item buffer, the checks' findings.
 class EyeRayChecker {
 public:
     explicit EyeRayChecker(const Scene& scene)
-        : brute_(scene), culling_(scene, make_brute_force(scene), checking()) {}
+        : brute_(scene),
+          culling_(scene, make_brute_force(scene), checking()),
+          answering_(scene, make_brute_force(scene)) {}
 
     const ExitCulling& culling() const { return culling_; }
     const EyeCounts& counts() const { return counts_; }
@@ -40,6 +44,9 @@ public:
         const std::optional<Hit> got = culling_.eye_ray_closest_hit(ray, t, counters_);
         counts_.culled += static_cast<int>(counters_.culled_exits - culled_before);
         expect_same(expected, got);
+        const std::uint64_t answered_before = answering_counters_.guard_answers;
+        expect_same(expected, answering_.eye_ray_closest_hit(ray, t, answering_counters_));
+        counts_.answered += static_cast<int>(answering_counters_.guard_answers - answered_before);
         counts_.hits += expected && got ? 1 : 0;
         const int lane = static_cast<int>(expected_lanes_.size());
         packet_.rays[lane] = ray;
@@ -65,16 +72,20 @@ private:
         }
     }
     void check_packet() {
-        PacketHits hits;
-        culling_.eye_ray_closest_hit_packet(packet_, hits, counters_);
-        for (int lane = 0; lane < kPacketSize; ++lane) {
-            expect_same(expected_lanes_[static_cast<std::size_t>(lane)], hits[lane]);
+        for (const ExitCulling* culling : {&culling_, &answering_}) {
+            PacketHits hits;
+            culling->eye_ray_closest_hit_packet(packet_, hits, counters_);
+            for (int lane = 0; lane < kPacketSize; ++lane) {
+                expect_same(expected_lanes_[static_cast<std::size_t>(lane)], hits[lane]);
+            }
         }
         expected_lanes_.clear();
     }
 
     BruteForce brute_;
     ExitCulling culling_;
+    ExitCulling answering_;  ///< without -de: the answers are its own
+    TraceCounters answering_counters_;
     TraceCounters brute_counters_;
     TraceCounters counters_;
     EyeCounts counts_;
@@ -95,8 +106,10 @@ EyeCounts expect_brute_force_answers(const Scene& scene, int step = 1, bool expe
         checker.check(ray, {0.0, 7.5});
     });
     EXPECT_EQ(checker.culling().statistics().violations, 0u);
+    EXPECT_EQ(checker.culling().statistics().guard_violations, 0u);
     if (expect_hits) {
         EXPECT_GT(checker.counts().hits, 0) << "the test would prove nothing";
+        EXPECT_GT(checker.counts().answered, 0) << "no eye ray was answered from the item buffer";
     }
     return checker.counts();
 }

@@ -52,7 +52,8 @@ TEST(ExitCullingTable, TwocubesTableIsSmall) {
     const std::vector<std::string> lines = describe(statistics);
     ASSERT_EQ(lines.size(), 3u);
     EXPECT_EQ(lines[1],
-              "exit culling of eye rays: 30818 of 204800 pixels covered (15.0%), 25600 bytes");
+              "exit culling of eye rays: 30818 of 204800 pixels covered (15.0%), 25600 bytes; item "
+              "buffer of 8x8-pixel tiles: 1071 entries (at most 9 in a tile), 18624 bytes");
     EXPECT_EQ(lines[2],
               "exit culling of rays leaving a polygon: 71 polygons x 2x2 patches x 6x16x16 "
               "direction bins, 497 guards, 100.0% of bins clear but for guards, 1037520 bytes");
@@ -74,7 +75,7 @@ TEST(ExitCulling, DebugModeReportsItsChecks) {
     ASSERT_EQ(lines.size(), 4u);
     EXPECT_EQ(lines[3],
               "exit culling check (-de): 1 culled rays re-traced, 0 hit something; 0 rays "
-              "answered from their guards re-traced, 0 answered otherwise");
+              "answered from a few polygons (guards, tiles) re-traced, 0 answered otherwise");
     EXPECT_EQ(culling.name(), "exit culling over brute force");
 }
 

@@ -32,19 +32,19 @@ std::uint32_t one_by_one(const LineProbe& line, const std::vector<Box>& boxes,
 
 // A coordinate from a small set of awkward values, or a random one in [-4, 4].
 double coordinate(std::mt19937_64& random) {
-    static const std::array<double, 9> kAwkward{0.0,
-                                                -0.0,
-                                                1.0,
-                                                -1.0,
-                                                0.5,
-                                                1e-30,
-                                                1e30,
-                                                std::numeric_limits<double>::infinity(),
-                                                std::numeric_limits<double>::quiet_NaN()};
+    static const std::array<double, 9> awkward{0.0,
+                                               -0.0,
+                                               1.0,
+                                               -1.0,
+                                               0.5,
+                                               1e-30,
+                                               1e30,
+                                               std::numeric_limits<double>::infinity(),
+                                               std::numeric_limits<double>::quiet_NaN()};
     std::uniform_int_distribution<int> pick(0, 19);
     const int which = pick(random);
-    if (which < static_cast<int>(kAwkward.size())) {
-        return kAwkward[static_cast<std::size_t>(which)];
+    if (which < static_cast<int>(awkward.size())) {
+        return awkward[static_cast<std::size_t>(which)];
     }
     return std::uniform_real_distribution<double>(-4.0, 4.0)(random);
 }
@@ -68,6 +68,7 @@ TEST(GuardBoxes, AnswerAsTheSingleBoxTestForEveryBox) {
     for (int round = 0; round < 400; ++round) {
         const int count = std::uniform_int_distribution<int>(1, 31)(random);
         std::vector<Box> boxes;
+        boxes.reserve(static_cast<std::size_t>(count));
         for (int g = 0; g < count; ++g) {
             boxes.push_back(random_box(random));
         }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "rt/accel/exit_culling/guard_hits.h"
+#include "rt/geometry/ray_polygon.h"
 
 #include <fmt/format.h>
 
@@ -50,6 +51,23 @@ EyeCoverage timed_coverage(const Scene& scene, const ExitCullingTable& table,
     return coverage;
 }
 
+// The eye rays' item buffer, of tiles of kEyeTileSide pixels, for a scene of at most
+// kMostEyeItemPolygons polygons whose eye rays the coverage serves; none otherwise.
+std::unique_ptr<ItemBuffer> timed_eye_items(const Scene& scene, const EyeCoverage& coverage,
+                                            const ExitCullingSettings& settings, double& seconds) {
+    if (!settings.eye_items || !settings.answers || !coverage.active() ||
+        scene.polygons.size() > kMostEyeItemPolygons) {
+        return nullptr;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    ZBufferSettings tiles;
+    tiles.tile_side = kEyeTileSide;
+    tiles.max_bytes = kMostEyeItemBytes;
+    auto items = std::make_unique<ItemBuffer>(scene, coverage.view().camera(), tiles);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return items->active() ? std::move(items) : nullptr;
+}
+
 }  // namespace
 
 int default_exit_culling_resolution(std::size_t polygon_count) {
@@ -64,6 +82,8 @@ ExitCulling::ExitCulling(const Scene& scene, std::unique_ptr<Accelerator> wrappe
       table_(timed_table(scene, settings, build_seconds_)),
       leaving_(timed_leaving_table(scene, table_, settings, build_seconds_)),
       eye_(timed_coverage(scene, table_, settings, build_seconds_)),
+      eye_items_(timed_eye_items(scene, eye_, settings, build_seconds_)),
+      answers_(settings.answers),
       check_culled_(settings.check_culled),
       scene_polygons_(scene.polygons.size()),
       name_("exit culling over " + std::string(wrapped_->name())) {}
@@ -76,6 +96,7 @@ std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
             return culled_closest_hit(ray, t, false, counters);
         case Route::AmongGuards:
             return guarded_closest_hit(ray, t, verdict, false, counters);
+        case Route::InItemBuffer:  // route() gives it to eye rays only
         case Route::Wrapped:
             break;
     }
@@ -85,11 +106,14 @@ std::optional<Hit> ExitCulling::closest_hit(const Ray& ray, Interval t,
 std::optional<Hit> ExitCulling::eye_ray_closest_hit(const Ray& ray, Interval t,
                                                     TraceCounters& counters) const {
     LeavingVerdict verdict;
-    switch (route_eye_ray(ray, t, verdict)) {
+    ViewPixel pixel;
+    switch (route_eye_ray(ray, t, verdict, pixel)) {
         case Route::Culled:
             return culled_closest_hit(ray, t, true, counters);
         case Route::AmongGuards:
             return guarded_closest_hit(ray, t, verdict, true, counters);
+        case Route::InItemBuffer:
+            return item_closest_hit(ray, t, pixel, counters);
         case Route::Wrapped:
             break;
     }
@@ -113,10 +137,26 @@ std::optional<Hit> ExitCulling::guarded_closest_hit(const Ray& ray, Interval t,
                                                     const LeavingVerdict& verdict, bool eye_ray,
                                                     TraceCounters& counters) const {
     ++counters.guard_answers;
-    std::optional<Hit> found = closest_hit_among(*scene_, ray, t, verdict.candidates(), counters);
-    if (!check_culled_) {
-        return found;
+    const std::optional<Hit> found =
+        closest_hit_among(*scene_, ray, t, verdict.candidates(), counters);
+    return check_culled_ ? checked_answer(ray, t, found, eye_ray) : found;
+}
+
+std::optional<Hit> ExitCulling::item_closest_hit(const Ray& ray, Interval t, const ViewPixel& pixel,
+                                                 TraceCounters& counters) const {
+    ++counters.guard_answers;
+    const RaySpace space(ray);
+    std::optional<Hit> found;
+    if (space.valid()) {  // else no hit, as brute force answers such a ray
+        const EyeRayPixel at{pixel.x, pixel.y, length(ray.origin - eye_.view().camera().eye)};
+        found = closest_hit_in_buffer(*scene_, *eye_items_, space, t, at, counters);
     }
+    return check_culled_ ? checked_answer(ray, t, found, true) : found;
+}
+
+std::optional<Hit> ExitCulling::checked_answer(const Ray& ray, Interval t,
+                                               const std::optional<Hit>& found,
+                                               bool eye_ray) const {
     TraceCounters ignored;
     std::optional<Hit> truth = eye_ray ? wrapped_->eye_ray_closest_hit(ray, t, ignored)
                                        : wrapped_->closest_hit(ray, t, ignored);
@@ -133,6 +173,7 @@ bool ExitCulling::occluded(const Ray& ray, Interval t, TraceCounters& counters) 
             break;
         case Route::AmongGuards:
             return guarded_occluded(ray, t, verdict, counters);
+        case Route::InItemBuffer:  // route() gives it to eye rays only
         case Route::Wrapped:
             return wrapped_->occluded(ray, t, counters);
     }
@@ -178,9 +219,12 @@ ExitCulling::PacketRoutes ExitCulling::packet_routes(const RayPacket& packet, bo
         const Interval t = packet.t[lane];
         LeavingVerdict& verdict = routes.verdicts[static_cast<std::size_t>(lane)];
         verdict.kind = LeavingVerdict::Kind::Unknown;
-        const Route r = eye_rays ? route_eye_ray(ray, t, verdict) : route(ray, t, verdict);
+        const Route r =
+            eye_rays ? route_eye_ray(ray, t, verdict, routes.pixels[static_cast<std::size_t>(lane)])
+                     : route(ray, t, verdict);
         routes.culled |= r == Route::Culled ? 1u << lane : 0u;
         routes.guarded |= r == Route::AmongGuards ? 1u << lane : 0u;
+        routes.in_items |= r == Route::InItemBuffer ? 1u << lane : 0u;
     }
     return routes;
 }
@@ -195,7 +239,8 @@ void ExitCulling::packet_closest_hit(const RayPacket& packet, PacketHits& hits, 
         }
     };
     const PacketRoutes routes = packet_routes(packet, eye_rays);
-    const std::uint32_t passed = packet.active & kAllLanes & ~(routes.culled | routes.guarded);
+    const std::uint32_t passed =
+        packet.active & kAllLanes & ~(routes.culled | routes.guarded | routes.in_items);
     if (passed == (packet.active & kAllLanes)) {
         pass_on(packet);
         return;
@@ -215,11 +260,17 @@ void ExitCulling::packet_closest_hit(const RayPacket& packet, PacketHits& hits, 
                                          routes.verdicts[static_cast<std::size_t>(lane)], eye_rays,
                                          counters);
     }
+    for (std::uint32_t a = routes.in_items; a != 0; a &= a - 1) {
+        const int lane = std::countr_zero(a);
+        hits[lane] = item_closest_hit(packet.rays[lane], packet.t[lane],
+                                      routes.pixels[static_cast<std::size_t>(lane)], counters);
+    }
 }
 
 std::uint32_t ExitCulling::occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
     const PacketRoutes routes = packet_routes(packet, false);
-    const std::uint32_t passed = packet.active & kAllLanes & ~(routes.culled | routes.guarded);
+    const std::uint32_t passed =
+        packet.active & kAllLanes & ~(routes.culled | routes.guarded | routes.in_items);
     if (passed == (packet.active & kAllLanes)) {
         return wrapped_->occluded_packet(packet, counters);
     }
@@ -261,7 +312,7 @@ void ExitCulling::record_if_violated(const Ray& ray, bool violated, bool guarded
 
 std::size_t ExitCulling::memory_bytes() const {
     return table_.memory_bytes() + leaving_.memory_bytes() + eye_.memory_bytes() +
-           wrapped_->memory_bytes();
+           (eye_items_ ? eye_items_->memory_bytes() : 0) + wrapped_->memory_bytes();
 }
 
 ExitCullingStatistics ExitCulling::statistics() const {
@@ -278,6 +329,11 @@ ExitCullingStatistics ExitCulling::statistics() const {
     s.pixels = eye_.pixels();
     s.covered_pixels = eye_.covered_pixels();
     s.eye_memory_bytes = eye_.memory_bytes();
+    if (eye_items_) {
+        s.eye_item_entries = eye_items_->entries();
+        s.eye_item_longest = eye_items_->longest_list();
+        s.eye_item_memory_bytes = eye_items_->memory_bytes();
+    }
     s.leaving_polygons = leaving_.polygons();
     s.leaving_bins_per_side = leaving_.bins_per_side();
     s.leaving_patches_per_side = leaving_.patches_per_side();
@@ -306,9 +362,16 @@ std::vector<std::string> describe(const ExitCullingStatistics& s) {
         const double share =
             s.pixels > 0 ? static_cast<double>(s.covered_pixels) / static_cast<double>(s.pixels)
                          : 0.0;
-        lines.push_back(
+        std::string line =
             fmt::format("exit culling of eye rays: {} of {} pixels covered ({:.1f}%), {} bytes",
-                        s.covered_pixels, s.pixels, 100.0 * share, s.eye_memory_bytes));
+                        s.covered_pixels, s.pixels, 100.0 * share, s.eye_memory_bytes);
+        if (s.eye_item_memory_bytes > 0) {
+            line += fmt::format(
+                "; item buffer of {}x{}-pixel tiles: {} entries (at most {} in a tile), {} bytes",
+                kEyeTileSide, kEyeTileSide, s.eye_item_entries, s.eye_item_longest,
+                s.eye_item_memory_bytes);
+        }
+        lines.push_back(std::move(line));
     } else if (!s.eye_inactive_reason.empty()) {
         lines.push_back("exit culling of eye rays by the table: " + s.eye_inactive_reason);
     }
@@ -327,7 +390,8 @@ std::vector<std::string> describe(const ExitCullingStatistics& s) {
     if (s.checking) {
         lines.push_back(
             fmt::format("exit culling check (-de): {} culled rays re-traced, {} hit something; {} "
-                        "rays answered from their guards re-traced, {} answered otherwise",
+                        "rays answered from a few polygons (guards, tiles) re-traced, {} answered "
+                        "otherwise",
                         s.checked, s.violations, s.guards_checked, s.guard_violations));
         for (const Ray& r : s.first_violations) {
             lines.push_back(fmt::format(

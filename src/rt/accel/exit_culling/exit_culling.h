@@ -23,6 +23,7 @@
 #include "rt/accel/exit_culling/exit_culling_table.h"
 #include "rt/accel/exit_culling/eye_coverage.h"
 #include "rt/accel/exit_culling/leaving_table.h"
+#include "rt/accel/zbuffer/item_buffer.h"
 
 namespace rt {
 
@@ -32,6 +33,15 @@ struct ExitCullingSettings {
     bool check_culled = false;  ///< -de: trace every culled ray with the wrapped accelerator too
     int build_threads = 0;      ///< 0: one a core for a large scene (parallel_parts.h)
     bool eye_coverage = true;   ///< cull eye rays by the pixels the scene covers (eye_coverage.h)
+    /// Answer the eye rays the coverage does not cull from an item buffer of tiles of pixels
+    /// (zbuffer/item_buffer.h), as the z-buffer answers them from its pixels', with `answers`.
+    bool eye_items = true;
+    /// Answer rays from a few exact tests (their guards, the eye rays' item buffer) where the
+    /// tables allow: brute force's answers. Off where the method is to answer every ray it is
+    /// given, as a switch that makes it answer otherwise on purpose, or a debugging layer
+    /// watching it, asks (accelerator_stack.cpp). Culling stays: such a method finds nothing on a
+    /// ray that meets nothing too.
+    bool answers = true;
     /// Cull rays leaving a polygon by the directions that polygon sees (leaving_table.h).
     bool leaving_table = true;
 };
@@ -45,12 +55,15 @@ struct ExitCullingStatistics {
     double empty_fraction = 0.0;     ///< share of (cell, bin) entries saying "nothing ahead"
     std::size_t memory_bytes = 0;    ///< the table alone
     double build_seconds = 0.0;
-    bool eye_coverage = false;         ///< whether eye rays are culled by the pixels covered
-    std::string eye_inactive_reason;   ///< why not, when not
-    std::size_t pixels = 0;            ///< of the view
-    std::size_t covered_pixels = 0;    ///< through which an eye ray may hit something
-    std::size_t eye_memory_bytes = 0;  ///< the coverage alone
-    std::size_t leaving_polygons = 0;  ///< polygons with a leaving table; 0: none
+    bool eye_coverage = false;              ///< whether eye rays are culled by the pixels covered
+    std::string eye_inactive_reason;        ///< why not, when not
+    std::size_t pixels = 0;                 ///< of the view
+    std::size_t covered_pixels = 0;         ///< through which an eye ray may hit something
+    std::size_t eye_memory_bytes = 0;       ///< the coverage alone
+    std::size_t eye_item_entries = 0;       ///< the eye rays' item buffer: its entries,
+    std::size_t eye_item_longest = 0;       ///< the most in a tile,
+    std::size_t eye_item_memory_bytes = 0;  ///< and its size; 0: none
+    std::size_t leaving_polygons = 0;       ///< polygons with a leaving table; 0: none
     int leaving_bins_per_side = 0;
     int leaving_patches_per_side = 0;
     std::size_t leaving_guards = 0;
@@ -60,7 +73,7 @@ struct ExitCullingStatistics {
     bool checking = false;               ///< -de
     std::uint64_t checked = 0;           ///< -de: culled rays re-traced
     std::uint64_t violations = 0;        ///< -de: culled rays that did hit something
-    std::uint64_t guards_checked = 0;    ///< -de: rays answered from their guards, re-traced
+    std::uint64_t guards_checked = 0;    ///< -de: rays answered from guards or tiles, re-traced
     std::uint64_t guard_violations = 0;  ///< -de: of those, answered otherwise by the method
     std::vector<Ray> first_violations;   ///< -de: up to 10 of either, to reproduce
 };
@@ -99,9 +112,9 @@ public:
     ExitCullingStatistics statistics() const;
 
 private:
-    /// How a ray is answered: ended at once, from its guards' exact tests, or by the wrapped
-    /// method's walk.
-    enum class Route : std::uint8_t { Culled, AmongGuards, Wrapped };
+    /// How a ray is answered: ended at once, from its guards' exact tests, from the eye rays'
+    /// item buffer, or by the wrapped method's walk.
+    enum class Route : std::uint8_t { Culled, AmongGuards, InItemBuffer, Wrapped };
     /// The route the tables give the ray: a ray leaving a polygon is culled, or confined to some
     /// of its guards, by that polygon's directions (the verdict is left in `verdict`); any other,
     /// or one those do not cull, is culled by the cells' directions. The cells' first test
@@ -116,14 +129,16 @@ private:
         if (!table_.starts_in_full_cell(ray.origin) && table_.nothing_ahead(ray, t)) {
             return Route::Culled;
         }
-        return verdict.kind == LeavingVerdict::Kind::AmongGuards ? Route::AmongGuards
-                                                                 : Route::Wrapped;
+        return verdict.kind == LeavingVerdict::Kind::AmongGuards && answers_ ? Route::AmongGuards
+                                                                             : Route::Wrapped;
     }
-    /// The route of an eye ray: by the coverage when it is an eye ray of the scene's view.
-    Route route_eye_ray(const Ray& ray, Interval t, LeavingVerdict& verdict) const {
-        switch (eye_.verdict(ray, t)) {
+    /// The route of an eye ray: by the coverage when it is an eye ray of the scene's view (its
+    /// pixel then in `pixel`), through the item buffer when it may hit something.
+    Route route_eye_ray(const Ray& ray, Interval t, LeavingVerdict& verdict,
+                        ViewPixel& pixel) const {
+        switch (eye_.verdict(ray, t, pixel)) {
             case EyeCoverage::Verdict::MayHit:
-                return Route::Wrapped;
+                return eye_items_ ? Route::InItemBuffer : Route::Wrapped;
             case EyeCoverage::Verdict::HitsNothing:
                 return Route::Culled;
             case EyeCoverage::Verdict::NotAnEyeRay:
@@ -139,6 +154,13 @@ private:
     std::optional<Hit> guarded_closest_hit(const Ray& ray, Interval t,
                                            const LeavingVerdict& verdict, bool eye_ray,
                                            TraceCounters& counters) const;
+    /// closest_hit for an eye ray through `pixel` from the item buffer's candidates, or under -de
+    /// as guarded_closest_hit.
+    std::optional<Hit> item_closest_hit(const Ray& ray, Interval t, const ViewPixel& pixel,
+                                        TraceCounters& counters) const;
+    /// -de: the wrapped accelerator's answer, and whether `found` is the same recorded.
+    std::optional<Hit> checked_answer(const Ray& ray, Interval t, const std::optional<Hit>& found,
+                                      bool eye_ray) const;
     /// occluded for a ray confined to its guards, as guarded_closest_hit.
     bool guarded_occluded(const Ray& ray, Interval t, const LeavingVerdict& verdict,
                           TraceCounters& counters) const;
@@ -147,7 +169,9 @@ private:
     struct PacketRoutes {
         std::uint32_t culled = 0;
         std::uint32_t guarded = 0;
+        std::uint32_t in_items = 0;
         std::array<LeavingVerdict, kPacketSize> verdicts;
+        std::array<ViewPixel, kPacketSize> pixels;  ///< of the lanes in_items
     };
     PacketRoutes packet_routes(const RayPacket& packet, bool eye_rays) const;
     /// closest_hit_packet and eye_ray_closest_hit_packet.
@@ -164,6 +188,8 @@ private:
     ExitCullingTable table_;
     LeavingTable leaving_;
     EyeCoverage eye_;
+    std::unique_ptr<ItemBuffer> eye_items_;  ///< null: none
+    bool answers_;                           ///< ExitCullingSettings::answers
     bool check_culled_;
     std::size_t scene_polygons_;
     std::string name_;
@@ -178,5 +204,11 @@ private:
 /// The grid resolution used when the settings leave it at 0: about twice the cube root of the
 /// polygon count, within 4..8 (build time grows as its sixth power).
 int default_exit_culling_resolution(std::size_t polygon_count);
+
+/// The eye rays' item buffer: pixels a side of its tiles, the most polygons a scene may have for
+/// one, and the most memory it may take.
+inline constexpr int kEyeTileSide = 8;
+inline constexpr std::size_t kMostEyeItemPolygons = 4096;
+inline constexpr std::size_t kMostEyeItemBytes = std::size_t{16} << 20;
 
 }  // namespace rt

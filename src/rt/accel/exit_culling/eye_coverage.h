@@ -36,13 +36,21 @@ public:
     EyeCoverage(const Camera& camera, const Box3& scene_bounds, const OccupiedCells& cells);
 
     Verdict verdict(const Ray& ray, Interval t) const {
-        const std::optional<ViewPixel> pixel = eye_.pixel_of(ray, t);
-        if (!pixel) {
+        ViewPixel pixel;
+        return verdict(ray, t, pixel);
+    }
+    /// The same, with the eye ray's pixel in `pixel` (unset for NotAnEyeRay).
+    Verdict verdict(const Ray& ray, Interval t, ViewPixel& pixel) const {
+        const std::optional<ViewPixel> seen = eye_.pixel_of(ray, t);
+        if (!seen) {
             return Verdict::NotAnEyeRay;
         }
-        const std::size_t bit = static_cast<std::size_t>(pixel->y) * width_ + pixel->x;
+        pixel = *seen;
+        const std::size_t bit = static_cast<std::size_t>(pixel.y) * width_ + pixel.x;
         return ((bits_[bit / 64] >> (bit % 64)) & 1u) != 0 ? Verdict::MayHit : Verdict::HitsNothing;
     }
+    /// The view, unusable when there is no coverage.
+    const EyeView& view() const { return eye_; }
 
     /// False when there is no coverage (see inactive_reason(), empty when none was made).
     bool active() const { return eye_.usable(); }

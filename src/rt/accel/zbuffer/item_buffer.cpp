@@ -17,18 +17,24 @@
 #include <numeric>
 
 #include "rt/accel/hit_regions/polygon_reach.h"
+#include "rt/accel/lane_exact_hit.h"
 
 #include <fmt/format.h>
 
 namespace rt {
 
 ItemBuffer::ItemBuffer(const Scene& scene, const Camera& view, const ZBufferSettings& settings)
-    : eye_(view, scene.bounds()), max_bytes_(settings.max_bytes) {
+    : eye_(view, scene.bounds()),
+      max_bytes_(settings.max_bytes),
+      tile_side_(std::max(settings.tile_side, 1)) {
     if (!eye_.usable()) {
         active_ = false;
         inactive_reason_ = "the view has no area";
         return;
     }
+    const auto side = static_cast<std::size_t>(tile_side_);
+    tiles_across_ = (static_cast<std::size_t>(view.width) + side - 1) / side;
+    tiles_down_ = (static_cast<std::size_t>(view.height) + side - 1) / side;
     const std::size_t count = scene.polygons.size();
     if (!fits(count, 0)) {
         return;
@@ -37,7 +43,7 @@ ItemBuffer::ItemBuffer(const Scene& scene, const Camera& view, const ZBufferSett
     std::vector<double> nearest(count);
     std::uint64_t total = 0;
     for (std::uint32_t id = 0; id < count; ++id) {
-        footprints[id] = footprint(scene, id, nearest[id]);
+        footprints[id] = tiles_of(footprint(scene, id, nearest[id]));
         const PixelFootprint& f = footprints[id];
         if (!f.empty()) {
             total += static_cast<std::uint64_t>(f.x1 - f.x0 + 1) * (f.y1 - f.y0 + 1);
@@ -60,10 +66,17 @@ ItemBuffer::ItemBuffer(const Scene& scene, const Camera& view, const ZBufferSett
     fill(ranked);
 }
 
+PixelFootprint ItemBuffer::tiles_of(const PixelFootprint& f) const {
+    if (f.empty()) {
+        return f;
+    }
+    return {f.x0 / tile_side_, f.y0 / tile_side_, f.x1 / tile_side_, f.y1 / tile_side_};
+}
+
 bool ItemBuffer::fits(std::size_t polygons, std::uint64_t entries) {
-    const std::uint64_t pixels = static_cast<std::uint64_t>(view().width) * view().height;
+    const std::uint64_t tiles = static_cast<std::uint64_t>(tiles_across_) * tiles_down_;
     // Offsets and their fill cursors, the entries, and per polygon its footprint, depth and rank.
-    const double bytes = 8.0 * (static_cast<double>(pixels) + 1.0) +
+    const double bytes = 8.0 * (static_cast<double>(tiles) + 1.0) +
                          4.0 * static_cast<double>(entries) +
                          static_cast<double>(polygons) * (sizeof(PixelFootprint) + 8.0 + 8.0);
     if (bytes <= static_cast<double>(max_bytes_) && entries < (std::uint64_t{1} << 32)) {
@@ -110,13 +123,13 @@ PixelFootprint ItemBuffer::footprint(const Scene& scene, std::uint32_t id, doubl
 }
 
 void ItemBuffer::fill(const std::vector<PixelFootprint>& footprints) {
-    const int width = view().width;
-    const std::size_t pixels = static_cast<std::size_t>(width) * view().height;
-    offsets_.assign(pixels + 1, 0);
+    const auto width = tiles_across_;
+    const std::size_t tiles = width * tiles_down_;
+    offsets_.assign(tiles + 1, 0);
     for (const PixelFootprint& f : footprints) {
         for (int y = f.y0; y <= f.y1; ++y) {
             for (int x = f.x0; x <= f.x1; ++x) {
-                ++offsets_[static_cast<std::size_t>(y) * width + x + 1];
+                ++offsets_[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x) + 1];
             }
         }
     }
@@ -128,7 +141,8 @@ void ItemBuffer::fill(const std::vector<PixelFootprint>& footprints) {
         const PixelFootprint& f = footprints[rank];
         for (int y = f.y0; y <= f.y1; ++y) {
             for (int x = f.x0; x <= f.x1; ++x) {
-                entries_[cursor[static_cast<std::size_t>(y) * width + x]++] = rank;
+                entries_[cursor[static_cast<std::size_t>(y) * width +
+                                static_cast<std::size_t>(x)]++] = rank;
             }
         }
     }
@@ -143,6 +157,43 @@ std::optional<EyeRayPixel> ItemBuffer::pixel_of(const Ray& ray, Interval t) cons
         return std::nullopt;
     }
     return EyeRayPixel{pixel->x, pixel->y, length(ray.origin - view().eye)};
+}
+
+namespace {
+
+// No hit on a polygon whose reach is `nearest` from the eye is nearer than this t, for a ray
+// starting `from_eye` from the eye: |Y - O| >= |Y - E| - |O - E| (see the top). Rounded down
+// generously.
+double lowest_t(double nearest, double from_eye, double direction_length) {
+    return (nearest * (1.0 - 1e-12) - from_eye * (1.0 + 1e-12)) / direction_length * (1.0 - 1e-12);
+}
+
+}  // namespace
+
+std::optional<Hit> closest_hit_in_buffer(const Scene& scene, const ItemBuffer& buffer,
+                                         const RaySpace& space, Interval t,
+                                         const EyeRayPixel& pixel, TraceCounters& counters) {
+    const Ray& ray = space.ray();
+    const double direction_length = length(ray.direction);
+    ClosestHitSoFar nearest(t);
+    for (const std::uint32_t rank : buffer.candidates(pixel.x, pixel.y)) {
+        // Strictly beyond: a polygon that might still tie the best t could have a lower id.
+        if (nearest.best() &&
+            lowest_t(buffer.nearest(rank), pixel.from_eye, direction_length) > nearest.reach()) {
+            break;
+        }
+        const std::uint32_t id = buffer.polygon(rank);
+        if (leaves_polygon(ray, id)) {
+            continue;
+        }
+        ++counters.polygon_tests;
+        // The same t brute force computes: the interval only decides whether it counts.
+        if (const std::optional<double> hit =
+                intersect_polygon(space, scene.polygon_view(id), nearest.search_interval())) {
+            nearest.offer(*hit, id);
+        }
+    }
+    return nearest.best();
 }
 
 std::size_t ItemBuffer::longest_list() const {

@@ -19,13 +19,6 @@ ItemBuffer timed_buffer(const Scene& scene, const Camera& view, const ZBufferSet
     return buffer;
 }
 
-// No hit on a polygon whose reach is `nearest` from the eye is nearer than this t, for a ray
-// starting `from_eye` from the eye: |Y - O| >= |Y - E| - |O - E| (item_buffer.cpp). Rounded
-// down generously.
-double lowest_t(double nearest, double from_eye, double direction_length) {
-    return (nearest * (1.0 - 1e-12) - from_eye * (1.0 + 1e-12)) / direction_length * (1.0 - 1e-12);
-}
-
 }  // namespace
 
 ZBufferFirstHits::ZBufferFirstHits(const Scene& scene, const Camera& view,
@@ -42,26 +35,7 @@ std::optional<Hit> ZBufferFirstHits::eye_ray_closest_hit(const Ray& ray, Interva
     if (!pixel || !space.valid()) {
         return fallback_.eye_ray_closest_hit(ray, t, counters);
     }
-    const double direction_length = length(ray.direction);
-    ClosestHitSoFar nearest(t);
-    for (const std::uint32_t rank : buffer_.candidates(pixel->x, pixel->y)) {
-        // Strictly beyond: a polygon that might still tie the best t could have a lower id.
-        if (nearest.best() &&
-            lowest_t(buffer_.nearest(rank), pixel->from_eye, direction_length) > nearest.reach()) {
-            break;
-        }
-        const std::uint32_t id = buffer_.polygon(rank);
-        if (leaves_polygon(ray, id)) {
-            continue;
-        }
-        ++counters.polygon_tests;
-        // The same t brute force computes: the interval only decides whether it counts.
-        if (const std::optional<double> hit =
-                intersect_polygon(space, scene_.polygon_view(id), nearest.search_interval())) {
-            nearest.offer(*hit, id);
-        }
-    }
-    return nearest.best();
+    return closest_hit_in_buffer(scene_, buffer_, space, t, *pixel, counters);
 }
 
 std::size_t ZBufferFirstHits::memory_bytes() const {
