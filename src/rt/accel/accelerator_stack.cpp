@@ -76,6 +76,8 @@ AcceleratorStack::AcceleratorStack(const Scene& scene, const AcceleratorStackSet
         const bool watched =
             s.strike_check || s.strike_print || s.strike_voxels || s.log_intersections;
         culling.answers = !method_as_asked && !watched;
+        // The z-buffer above answers the eye rays first.
+        culling.eye_items = !s.zbuffer_first_hits;
         auto wrapped = std::make_unique<ExitCulling>(scene, std::move(base_), culling);
         culling_ = wrapped.get();
         base_ = std::move(wrapped);

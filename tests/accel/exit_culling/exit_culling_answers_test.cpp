@@ -2,10 +2,12 @@
 // the method would give brute force's answer: with a switch that makes the method answer
 // otherwise on purpose (-on, -of, -tv), or a debugging layer watching it (-ds, -dl), every ray the
 // layer does not cull goes to the method.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "rt/accel/accelerator_stack.h"
 
@@ -63,6 +65,22 @@ TEST(ExitCullingAnswers, OnlyWhereTheMethodGivesBruteForcesAnswers) {
         set(settings);
         EXPECT_EQ(answered(scene, settings), 0u) << name;
     }
+}
+
+// With --zbuffer the z-buffer above answers the eye rays first: exit culling keeps no item buffer.
+TEST(ExitCullingAnswers, NoItemBufferUnderTheZBuffer) {
+    const Scene scene = load_twocubes();
+    const auto mentions_item_buffer = [&](const AcceleratorStackSettings& settings) {
+        const AcceleratorStack stack(scene, settings, AccelMessages{});
+        const std::vector<std::string> lines = stack.report_lines();
+        return std::any_of(lines.begin(), lines.end(), [](const std::string& line) {
+            return line.find("item buffer") != std::string::npos;
+        });
+    };
+    EXPECT_TRUE(mentions_item_buffer({}));
+    AcceleratorStackSettings zbuffer;
+    zbuffer.zbuffer_first_hits = true;
+    EXPECT_FALSE(mentions_item_buffer(zbuffer));
 }
 
 }  // namespace
