@@ -208,7 +208,7 @@ int default_exit_culling_resolution(std::size_t polygon_count);
 /// The eye rays' item buffer: pixels a side of its tiles, the most polygons a scene may have for
 /// one, and the most memory it may take.
 inline constexpr int kEyeTileSide = 8;
-inline constexpr std::size_t kMostEyeItemPolygons = 4096;
+inline constexpr std::size_t kMostEyeItemPolygons = 8192;
 inline constexpr std::size_t kMostEyeItemBytes = std::size_t{16} << 20;
 
 }  // namespace rt
