@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "rt/accel/hit.h"
 #include "rt/geometry/ray_polygon.h"
 #include "rt/scene/scene.h"
 
@@ -22,6 +23,22 @@ namespace rt {
 /// for it.
 inline bool leaves_polygon(const Ray& ray, std::uint32_t id) {
     return id == ray.leaves;
+}
+
+/// Offers polygon `id`'s exact hit on the ray of `space` to `nearest`, as brute force finds it:
+/// nothing for the polygon the ray leaves, one test counted in `tests` otherwise, asked within
+/// nearest's search interval, so that the t is brute force's and an equal t goes to the lowest id
+/// whatever the order of the offers (the guards', a tile's nearest first).
+inline void offer_exact_hit(const Scene& scene, const RaySpace& space, std::uint32_t id,
+                            ClosestHitSoFar& nearest, std::uint64_t& tests) {
+    if (leaves_polygon(space.ray(), id)) {
+        return;
+    }
+    ++tests;
+    if (const std::optional<double> hit =
+            intersect_polygon(space, scene.polygon_view(id), nearest.search_interval())) {
+        nearest.offer(*hit, id);
+    }
 }
 
 /// In a packet's `position[0][lane]`: the lane's polygon is not a triangle (or the lane is

@@ -14,16 +14,7 @@ std::optional<Hit> closest_hit_among(const Scene& scene, const Ray& ray, Interva
     }
     ClosestHitSoFar nearest(t);
     for (const std::uint32_t id : polygons) {
-        if (leaves_polygon(ray, id)) {
-            continue;
-        }
-        ++counters.polygon_tests;
-        // The candidates come in the guards' order, not by id: the search interval keeps a hit
-        // at the best t so far, so that a lower id there still wins.
-        if (const std::optional<double> hit =
-                intersect_polygon(space, scene.polygon_view(id), nearest.search_interval())) {
-            nearest.offer(*hit, id);
-        }
+        offer_exact_hit(scene, space, id, nearest, counters.polygon_tests);
     }
     return nearest.best();
 }

@@ -182,16 +182,7 @@ std::optional<Hit> closest_hit_in_buffer(const Scene& scene, const ItemBuffer& b
             lowest_t(buffer.nearest(rank), pixel.from_eye, direction_length) > nearest.reach()) {
             break;
         }
-        const std::uint32_t id = buffer.polygon(rank);
-        if (leaves_polygon(ray, id)) {
-            continue;
-        }
-        ++counters.polygon_tests;
-        // The same t brute force computes: the interval only decides whether it counts.
-        if (const std::optional<double> hit =
-                intersect_polygon(space, scene.polygon_view(id), nearest.search_interval())) {
-            nearest.offer(*hit, id);
-        }
+        offer_exact_hit(scene, space, buffer.polygon(rank), nearest, counters.polygon_tests);
     }
     return nearest.best();
 }
