@@ -7,8 +7,9 @@
 // prove it. A packet is tested lane by lane against the tables, and its lanes that are neither
 // culled nor answered go on as one packet, so that the wrapped method's packet walk (the BVH's)
 // still serves them. Eye rays (Accelerator::eye_ray_closest_hit) are culled by the pixels the scene
-// covers instead (eye_coverage.h), and only go to the table when they are not eye rays of the
-// scene's view.
+// covers instead (eye_coverage.h), those that may hit something answered from an item buffer of
+// tiles of pixels (zbuffer/item_buffer.h), and only go to the table when they are not eye rays of
+// the scene's view.
 #pragma once
 
 #include <array>
