@@ -1,10 +1,13 @@
 // The table's build may run on several threads and skips work that cannot change it (full cells
 // in the grazing pass); neither may change a single bit of it.
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <vector>
 
 #include "rt/accel/exit_culling/exit_culling_table.h"
+#include "rt/accel/exit_culling/occupied_cells.h"
+#include "rt/accel/hit_regions/polygon_reach.h"
 #include "rt/accel/parallel_parts.h"
 
 #include <gtest/gtest.h>
@@ -35,6 +38,67 @@ TEST(ExitCullingBuild, AnyThreadCountBuildsTheSameTable) {
         }
     }
     EXPECT_GT(emptiest, 0.3) << "tables this full would prove little";
+}
+
+using BoxBits = std::array<double, 6>;
+
+BoxBits bits_of(const Box3& box) {
+    return {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
+}
+
+// The boxes of the occupied cells found by asking every cell of the grid about every reach,
+// sorted.
+std::vector<BoxBits> every_cell_asked(const ReachSource& reaches, const OccupiedCells& cells) {
+    const int resolution = cells.resolution();
+    std::vector<Box3> every(static_cast<std::size_t>(resolution) * resolution * resolution);
+    for (std::size_t id = 0; id < reaches.count(); ++id) {
+        const PolygonReach reach = reaches(id);
+        for (std::size_t cell = 0; !reach.box.empty() && cell < every.size(); ++cell) {
+            const Box3 piece = intersection(reach.box, cells.cell_box(static_cast<int>(cell)));
+            if (!piece.empty() && slab_meets_box(reach, piece)) {
+                every[cell].add(piece);
+            }
+        }
+    }
+    std::vector<BoxBits> boxes;
+    for (const Box3& box : every) {
+        if (!box.empty()) {
+            boxes.push_back(bits_of(box));
+        }
+    }
+    std::sort(boxes.begin(), boxes.end());
+    return boxes;
+}
+
+// The occupied cells' boxes as the cells keep them (the leaves of their tree), sorted.
+std::vector<BoxBits> occupied_boxes(const OccupiedCells& cells) {
+    std::vector<BoxBits> boxes;
+    for (const OccupiedCells::Node& node : cells.tree()) {
+        if (node.first_child < 0) {
+            boxes.push_back(bits_of(node.box));
+        }
+    }
+    std::sort(boxes.begin(), boxes.end());
+    return boxes;
+}
+
+// Each reach grows only the cells its box meets, found from its corners' cells and the exact
+// boundaries (OccupiedCells::cell_range): the occupied cells' boxes must be those found by asking
+// every cell of the grid about every reach.
+TEST(ExitCullingBuild, OccupiedCellsAreThoseOfEveryCellAsked) {
+    const Scene scenes[] = {make_soup(24, 800), make_sphere({1, 2, 3}, 5.0, 16, 32, false),
+                            make_boxes(14, 10), load_twocubes()};
+    for (const Scene& scene : scenes) {
+        const CullingFrame frame = culling_frame(scene);
+        const ReachSource reaches{&scene, frame.rounding};
+        for (const int resolution : {1, 5, 8, 13}) {
+            const OccupiedCells cells(frame, reaches, resolution, 1);
+            const std::vector<BoxBits> expected = every_cell_asked(reaches, cells);
+            EXPECT_EQ(occupied_boxes(cells), expected)
+                << scene.polygons.size() << " polygons, " << resolution << "^3 cells";
+            EXPECT_FALSE(expected.empty());
+        }
+    }
 }
 
 // The pass that answers most rays (every ray leaving a surface) rests on this: a cell a polygon

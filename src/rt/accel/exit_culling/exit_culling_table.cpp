@@ -92,7 +92,7 @@ void ExitCullingTable::add_grazing(const PolygonReach& reach, std::vector<std::u
         1e-12 * std::max(reach.grazing_box.magnitude(), cells_.world().magnitude());
     int first[3];
     int last[3];
-    cells_.cell_range(reach.grazing_box, first, last);
+    cells_.cell_range(reach.grazing_box, cells_.margin(), first, last);
     const int r = cells_.resolution();
     for (int z = first[2]; z <= last[2]; ++z) {
         for (int y = first[1]; y <= last[1]; ++y) {

@@ -55,9 +55,11 @@ public:
         return axis_cell(0, p.x) +
                resolution_ * (axis_cell(1, p.y) + resolution_ * axis_cell(2, p.z));
     }
-    /// The cells along each axis that may meet the box: one more each way than its corners' own,
-    /// as cells and boundaries are rounded separately.
-    void cell_range(const Box3& box, int first[3], int last[3]) const;
+    /// The cells along each axis whose boxes, grown by `grow` (as Box3::grown grows them), may meet
+    /// the box: every cell whose intersection with it is not empty, found from its corners' own
+    /// cells (one more each way, as cells and boundaries are rounded separately) and the exact
+    /// boundaries.
+    void cell_range(const Box3& box, double grow, int first[3], int last[3]) const;
     Box3 cell_box(int cell) const;
     Box3 cell_box(int x, int y, int z) const {
         return {{boundaries_[0][x], boundaries_[1][y], boundaries_[2][z]},
@@ -85,6 +87,7 @@ private:
     double boundary(int axis, int index) const;
     void fill(const ReachSource& reaches, std::vector<Box3>& cells, int threads) const;
     void add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const;
+    void check_reach(const PolygonReach& reach) const;
     void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);
 
