@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "rt/core/huge_pages.h"
@@ -157,33 +158,41 @@ bool visits_a_corner_twice(const std::vector<std::uint32_t>& loop) {
 
 }  // namespace
 
+// In place: a million-triangle model's welded copy (its polygon records alone 80 MB) was fresh
+// memory, page by page, and the old arrays lived on beside it until the end.
 void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diagnostics) {
-    std::vector<Vec3> vertices;
+    // Each vertex's place among the first vertices at each position, in order. Found before any
+    // vertex moves: the table compares positions through the vertices' old places.
     std::vector<std::uint32_t> welded(mesh.vertices.size());
+    std::uint32_t kept = 0;
     {
         FirstVertexAt first(mesh.vertices);
         for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
             const std::uint32_t f = first.first_at(v);
-            if (f == v) {
-                welded[v] = static_cast<std::uint32_t>(vertices.size());
-                vertices.push_back(mesh.vertices[v]);
-            } else {
-                welded[v] = welded[f];
-            }
+            welded[v] = f == v ? kept++ : welded[f];
         }
     }
-    SurfaceMesh out;
-    out.vertices = std::move(vertices);
-    out.materials = std::move(mesh.materials);
-    const bool has_normals = !mesh.corner_normals.empty();
-    out.polygons.reserve(mesh.polygons.size());
-    out.corners.reserve(mesh.corners.size());
-    if (has_normals) {
-        out.corner_normals.reserve(mesh.corner_normals.size());
+    // A first vertex's place is the number of first vertices before it: never above its own.
+    for (std::uint32_t v = 0, next = 0; v < mesh.vertices.size(); ++v) {
+        if (welded[v] == next) {
+            mesh.vertices[next++] = mesh.vertices[v];
+        }
     }
+    mesh.vertices.resize(kept);
+    std::vector<int>().swap(mesh.vertex_lines);  // they no longer match the vertices
+    // Each polygon's loop is read before it is written back, no higher than it was: the loops lie
+    // one after the other in polygon order (SurfaceMesh::add_polygon), and dropping corners only
+    // moves them down.
+    const bool has_normals = !mesh.corner_normals.empty();
     std::vector<std::uint32_t> loop;
     std::vector<Vec3> normals;
-    for (const MeshPolygon& p : mesh.polygons) {
+    std::size_t corners = 0;
+    std::size_t polygons = 0;
+    for (std::size_t i = 0; i < mesh.polygons.size(); ++i) {
+        MeshPolygon p = mesh.polygons[i];
+        if (p.first_corner < corners) {
+            throw std::logic_error("weld_vertices: polygon loops out of order");
+        }
         loop.clear();
         normals.clear();
         for (std::uint32_t k = 0; k < p.corner_count; ++k) {
@@ -200,10 +209,22 @@ void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diag
                             p.number));
             continue;
         }
-        out.add_polygon(p, loop);
-        out.corner_normals.insert(out.corner_normals.end(), normals.begin(), normals.end());
+        p.first_corner = static_cast<std::uint32_t>(corners);
+        p.corner_count = static_cast<std::uint32_t>(loop.size());
+        std::copy(loop.begin(), loop.end(),
+                  mesh.corners.begin() + static_cast<std::ptrdiff_t>(corners));
+        if (has_normals) {
+            std::copy(normals.begin(), normals.end(),
+                      mesh.corner_normals.begin() + static_cast<std::ptrdiff_t>(corners));
+        }
+        corners += loop.size();
+        mesh.polygons[polygons++] = p;
     }
-    mesh = std::move(out);
+    mesh.polygons.resize(polygons);
+    mesh.corners.resize(corners);
+    if (has_normals) {
+        mesh.corner_normals.resize(corners);
+    }
 }
 
 void warn_if_not_watertight(const SurfaceMesh& mesh, const std::string& name,

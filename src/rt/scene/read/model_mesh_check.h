@@ -13,7 +13,8 @@ namespace rt {
 /// Joins vertices at exactly the same position, so that neighbouring polygons share corners (and
 /// intersection stays watertight), and drops a corner that repeats the one before it (a zero-length
 /// edge). A polygon whose loop still passes through one corner twice is skipped with a warning
-/// naming `name`.
+/// naming `name`. In place: the polygons' loops must lie one after the other in polygon order, as
+/// SurfaceMesh::add_polygon lays them out. The vertices' lines are dropped (they no longer match).
 void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diagnostics);
 
 /// One warning if some edge borders one polygon only, or more than two: the model is not a closed
