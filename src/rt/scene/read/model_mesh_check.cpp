@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rt/core/huge_pages.h"
+#include "rt/core/prefetch.h"
 #include "rt/scene/read/field_reader.h"
 
 #include <fmt/format.h>
@@ -40,10 +41,12 @@ std::uint64_t position_hash(const PositionKey& k) {
     return (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
 }
 
-// The first vertex at each position, by open addressing over one array of vertex indices (a
-// position's key is its first vertex's): 4 bytes a slot, no allocation per vertex. A
-// std::unordered_map of the keys took a fifth of a million-triangle model's load, most of it in the
-// kernel handing out memory for its nodes.
+// The first vertex at each position, by open addressing over one array of slots, each a vertex
+// index and, above it, the high half of its position's hash: no allocation per vertex (a
+// std::unordered_map of the keys took a fifth of a million-triangle model's load, most of it in
+// the kernel handing out memory for its nodes). The hash's half is compared before the position:
+// a lookup passes several taken slots (the table is up to 4/5 full), and reading each one's
+// vertex was a cache miss into the whole model.
 class FirstVertexAt {
 public:
     explicit FirstVertexAt(const std::vector<Vec3>& vertices)
@@ -52,25 +55,37 @@ public:
         slots_.resize(mask_ + 1, kEmpty);
     }
 
+    /// Asks for the slot first_at(v) looks at first: a big model's positions land all over the
+    /// table, and each lookup would otherwise wait for its own cache miss.
+    void prefetch_slot(std::uint32_t v) const {
+        prefetch(&slots_[position_hash(PositionKey(vertices_[v])) & mask_]);
+    }
+
     /// The first vertex before `v` at v's position, or v itself (which is then recorded).
     std::uint32_t first_at(std::uint32_t v) {
         const PositionKey key(vertices_[v]);
-        for (std::size_t i = position_hash(key) & mask_;; i = (i + 1) & mask_) {
-            if (slots_[i] == kEmpty) {
-                slots_[i] = v;
+        const std::uint64_t hash = position_hash(key);
+        const std::uint64_t tag = hash & kTagBits;
+        for (std::size_t i = hash & mask_;; i = (i + 1) & mask_) {
+            const std::uint64_t slot = slots_[i];
+            if (slot == kEmpty) {
+                slots_[i] = tag | v;
                 return v;
             }
-            if (PositionKey(vertices_[slots_[i]]) == key) {
-                return slots_[i];
+            const auto first = static_cast<std::uint32_t>(slot);
+            if ((slot & kTagBits) == tag && PositionKey(vertices_[first]) == key) {
+                return first;
             }
         }
     }
 
 private:
-    static constexpr std::uint32_t kEmpty = 0xffffffffu;
+    static constexpr std::uint64_t kTagBits = 0xffffffff00000000ULL;
+    // Never a slot: vertex 0xffffffff does not exist (a file holds fewer vertices).
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
     const std::vector<Vec3>& vertices_;
     std::size_t mask_;
-    std::vector<std::uint32_t> slots_;
+    std::vector<std::uint64_t> slots_;
 };
 
 // How many undirected edges border one polygon only (`open`) and more than two (`crowded`). Each
@@ -158,6 +173,9 @@ bool visits_a_corner_twice(const std::vector<std::uint32_t>& loop) {
 
 }  // namespace
 
+// Vertices whose slot is asked for ahead of their lookup (FirstVertexAt::prefetch_slot).
+constexpr std::uint32_t kLookAhead = 16;
+
 // In place: a million-triangle model's welded copy (its polygon records alone 80 MB) was fresh
 // memory, page by page, and the old arrays lived on beside it until the end.
 void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diagnostics) {
@@ -167,7 +185,11 @@ void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diag
     std::uint32_t kept = 0;
     {
         FirstVertexAt first(mesh.vertices);
-        for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+        const auto count = static_cast<std::uint32_t>(mesh.vertices.size());
+        for (std::uint32_t v = 0; v < count; ++v) {
+            if (count - v > kLookAhead) {
+                first.prefetch_slot(v + kLookAhead);
+            }
             const std::uint32_t f = first.first_at(v);
             welded[v] = f == v ? kept++ : welded[f];
         }
