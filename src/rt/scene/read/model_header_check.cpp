@@ -128,13 +128,27 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
 namespace {
 
 // One PLY property as the body walk needs it: a scalar's size, or a list's count and item types.
+bool is_integer_type(const std::string& type) {
+    return type != "float" && type != "float32" && type != "double" && type != "float64";
+}
+
+bool is_signed_type(const std::string& type) {
+    return type == "char" || type == "int8" || type == "short" || type == "int16" ||
+           type == "int" || type == "int32";
+}
+
 struct PlyProperty {
     std::string name;
     bool list = false;
     std::string count_type;  ///< a list's count type
     std::uintmax_t count_bytes = 0;
-    std::string type;             ///< a scalar's type, or a list item's
-    std::uintmax_t bytes = 0;     ///< a scalar's size, or a list item's
+    bool count_signed = false;
+    std::string type;          ///< a scalar's type, or a list item's
+    std::uintmax_t bytes = 0;  ///< a scalar's size, or a list item's
+    /// What the type names say, found once: asked of every face, a million faces' string
+    /// comparisons took longer than reading the faces.
+    bool type_signed = false;
+    bool type_integer = false;
     bool vertex_numbers = false;  ///< a face's list of vertex numbers, as Assimp reads it
 };
 
@@ -186,8 +200,11 @@ bool read_ply_layout(std::istream& in, PlyLayout& layout) {
             p.list = w[1] == "list" && w.size() >= 5;
             p.count_type = p.list ? w[2] : "";
             p.count_bytes = p.list ? binary_size(w[2]) : 0;
+            p.count_signed = p.list && is_signed_type(p.count_type);
             p.type = p.list ? w[3] : w[1];
             p.bytes = binary_size(p.type);
+            p.type_signed = is_signed_type(p.type);
+            p.type_integer = is_integer_type(p.type);
             // The face list Assimp takes the polygons' corners from (its PLY parser's names).
             p.vertex_numbers = p.list && layout.elements.back().name == "face" &&
                                (p.name == "vertex_indices" || p.name == "vertex_index");
@@ -197,25 +214,16 @@ bool read_ply_layout(std::istream& in, PlyLayout& layout) {
     return false;
 }
 
-bool is_integer_type(const std::string& type) {
-    return type != "float" && type != "float32" && type != "double" && type != "float64";
-}
-
-bool is_signed_type(const std::string& type) {
-    return type == "char" || type == "int8" || type == "short" || type == "int16" ||
-           type == "int" || type == "int32";
-}
-
 // An integer of a binary PLY (a list count, or a vertex number): `bytes` long (1 to 8), signed or
-// unsigned as `type` says, in either byte order.
-std::int64_t binary_integer(const unsigned char* b, std::uintmax_t bytes, const std::string& type,
+// unsigned, in either byte order.
+std::int64_t binary_integer(const unsigned char* b, std::uintmax_t bytes, bool is_signed,
                             bool big_endian) {
     std::uint64_t raw = 0;
     for (std::uintmax_t i = 0; i < bytes; ++i) {
         const std::uintmax_t k = big_endian ? i : bytes - 1 - i;
         raw = (raw << 8) | b[k];
     }
-    if (is_signed_type(type) && bytes > 0 && bytes < 8 && (raw >> (8 * bytes - 1)) != 0) {
+    if (is_signed && bytes > 0 && bytes < 8 && (raw >> (8 * bytes - 1)) != 0) {
         return static_cast<std::int64_t>(raw) - (std::int64_t{1} << (8 * bytes));
     }
     return static_cast<std::int64_t>(raw);
@@ -298,7 +306,7 @@ bool walk_binary_vertex_numbers(ByteWalk& bytes, const PlyProperty& p, std::int6
         if (at == nullptr) {
             return false;
         }
-        const std::int64_t v = binary_integer(at, p.bytes, p.type, big_endian);
+        const std::int64_t v = binary_integer(at, p.bytes, p.type_signed, big_endian);
         if (v < 0 || v >= layout.vertices) {
             throw InputError({name, 0, 0},
                              ply_vertex_fault(face, std::to_string(v), layout.vertices));
@@ -319,13 +327,13 @@ void walk_binary_element(ByteWalk& bytes, const PlyLayout::Element& e, std::int6
             if (at == nullptr) {
                 throw InputError({name, 0, 0}, ply_truncated(e, i));
             }
-            const std::int64_t n = binary_integer(at, p.count_bytes, p.count_type, big_endian);
+            const std::int64_t n = binary_integer(at, p.count_bytes, p.count_signed, big_endian);
             if (n < 0 || n > kMaxEdgesPerPolygon) {
                 throw InputError({name, 0, 0}, ply_list_fault(e, i, n));
             }
             skip = static_cast<std::uintmax_t>(n) * p.bytes;
             // (A float type's numbers Assimp rounds: left to it.)
-            if (p.vertex_numbers && layout.vertices >= 0 && is_integer_type(p.type)) {
+            if (p.vertex_numbers && layout.vertices >= 0 && p.type_integer) {
                 if (!walk_binary_vertex_numbers(bytes, p, n, i, layout, name)) {
                     throw InputError({name, 0, 0}, ply_truncated(e, i));
                 }
