@@ -87,7 +87,6 @@ private:
     double boundary(int axis, int index) const;
     void fill(const ReachSource& reaches, std::vector<Box3>& cells, int threads) const;
     void add_reach(const PolygonReach& reach, std::vector<Box3>& cells) const;
-    void check_reach(const PolygonReach& reach) const;
     void build_node(const std::vector<Box3>& leaves, std::size_t begin, std::size_t end,
                     std::size_t slot);
 

@@ -91,8 +91,9 @@ private:
 // How many undirected edges border one polygon only (`open`) and more than two (`crowded`). Each
 // edge is listed under its lower corner (counted, then placed, as in a counting sort), and each
 // corner's short list is sorted: equal entries are one edge's uses. An open-addressing table of
-// the edges took three times as long on a million triangles, each insertion a cache miss into
-// 36 MB; the lists take 4 bytes an edge, written and read in the order of the corners.
+// the edges took a cache miss per insertion, into 36 MB for a million triangles (the soup's load
+// took 1.46 s with it, 1.22 s without); the lists take 4 bytes an edge, written and read in the
+// order of the corners.
 void count_edge_uses(const SurfaceMesh& mesh, std::size_t& open, std::size_t& crowded) {
     std::size_t corners_seen = 0;
     for (const std::uint32_t c : mesh.corners) {
@@ -171,10 +172,10 @@ bool visits_a_corner_twice(const std::vector<std::uint32_t>& loop) {
     return sorted_has_repeat(loop);
 }
 
-}  // namespace
-
 // Vertices whose slot is asked for ahead of their lookup (FirstVertexAt::prefetch_slot).
 constexpr std::uint32_t kLookAhead = 16;
+
+}  // namespace
 
 // In place: a million-triangle model's welded copy (its polygon records alone 80 MB) was fresh
 // memory, page by page, and the old arrays lived on beside it until the end.
