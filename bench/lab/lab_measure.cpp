@@ -9,6 +9,7 @@
 #include <mutex>
 #include <thread>
 
+#include "rt/accel/bvh/bvh.h"
 #include "rt/accel/make_accelerator.h"
 #include "rt/accel/octree_depth_for.h"
 #include "rt/core/error.h"
@@ -213,6 +214,9 @@ std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, 
     m.build_ms = seconds_since(start) * 1e3;
     m.bytes_per_triangle = static_cast<double>(accel->memory_bytes()) /
                            static_cast<double>(std::max<std::uint64_t>(m.triangles, 1));
+    if (const auto* tree = dynamic_cast<const Bvh*>(accel.get())) {
+        m.tree_cost = tree->tree_cost();
+    }
 
     const bool brute = kind == AccelKind::BruteForce;
     const auto budget = static_cast<std::size_t>(

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rt/accel/bvh/tree_cost.h"
 #include "rt/core/ray.h"
 #include "rt/scene/scene.h"
 
@@ -38,6 +39,8 @@ struct Measurement {
     TraceRate primary_packet_one;
     TraceRate random_packet_one;
     unsigned threads = 1;
+    /// The BVH's tree in Embree's measure of expected cost (bvh/tree_cost.h); none for the others.
+    std::optional<bvh::TreeCost> tree_cost;
 };
 
 struct LabRays {

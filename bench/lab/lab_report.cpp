@@ -28,12 +28,19 @@ void print_table_header(std::ostream& out) {
 
 void print_table_row(std::ostream& out, const Measurement& m) {
     out << fmt::format(
-               "{:<10} {:>9} {:<7} {:>10.1f} {:>9.1f} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n",
-               m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle,
-               rate_cell(m.primary_one), rate_cell(m.random_one), rate_cell(m.primary_all),
-               rate_cell(m.random_all), rate_cell(m.primary_packet_one),
-               rate_cell(m.random_packet_one))
-        << std::flush;
+        "{:<10} {:>9} {:<7} {:>10.1f} {:>9.1f} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", m.mesh,
+        m.triangles, m.accel, m.build_ms, m.bytes_per_triangle, rate_cell(m.primary_one),
+        rate_cell(m.random_one), rate_cell(m.primary_all), rate_cell(m.random_all),
+        rate_cell(m.primary_packet_one), rate_cell(m.random_packet_one));
+    if (m.tree_cost) {
+        // Embree prints its own with the device configuration "verbose=2" (docs/accelerators.md).
+        const bvh::TreeCost& c = *m.tree_cost;
+        out << fmt::format(
+            "{:<10} {:>9} {:<7} tree cost {:.2f} (nodes {:.2f} + packets {:.2f}), "
+            "{} leaves, wide nodes {:.0f} % full\n",
+            "", "", "", c.total(), c.nodes, c.leaves, c.leaf_count, 100.0 * c.fill);
+    }
+    out << std::flush;
 }
 
 void write_csv(const std::string& file, const std::vector<Measurement>& results) {
@@ -45,11 +52,11 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
            "primary_mrays_1t,random_mrays_1t,primary_mrays_nt,random_mrays_nt,"
            "rays_traced,subsampled,primary_hits,random_hits,primary_nodes_per_ray,"
            "primary_tests_per_ray,random_nodes_per_ray,random_tests_per_ray,"
-           "primary_packet_mrays_1t,random_packet_mrays_1t\n";
+           "primary_packet_mrays_1t,random_packet_mrays_1t,tree_cost_nodes,tree_cost_leaves\n";
     for (const Measurement& m : results) {
         out << fmt::format(
             "{},{},{},{:.3f},{:.2f},{},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{},{:.2f},{:.2f},{:.2f}"
-            ",{:.2f},{:.4f},{:.4f}\n",
+            ",{:.2f},{:.4f},{:.4f}",
             m.mesh, m.triangles, m.accel, m.build_ms, m.bytes_per_triangle, m.threads,
             m.primary_one.mrays_per_second, m.random_one.mrays_per_second,
             m.primary_all.mrays_per_second, m.random_all.mrays_per_second, m.primary_one.rays,
@@ -57,6 +64,10 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
             m.primary_one.nodes_per_ray, m.primary_one.tests_per_ray, m.random_one.nodes_per_ray,
             m.random_one.tests_per_ray, m.primary_packet_one.mrays_per_second,
             m.random_packet_one.mrays_per_second);
+        // Empty for every method but the BVH.
+        out << (m.tree_cost
+                    ? fmt::format(",{:.4f},{:.4f}\n", m.tree_cost->nodes, m.tree_cost->leaves)
+                    : std::string(",,\n"));
     }
     if (!out) {
         throw IoError("rt_lab: cannot write " + file);

@@ -8,6 +8,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/bvh/bvh_layout.h"
+#include "rt/accel/bvh/tree_cost.h"
 
 namespace rt {
 
@@ -33,6 +34,8 @@ public:
     /// For tests and the lab: the tree's size.
     std::size_t node_count() const { return tree_.wide.size(); }
     std::size_t packet_count() const { return tree_.packets.size(); }
+    /// The tree's expected cost in Embree's measure (tree_cost.h).
+    bvh::TreeCost tree_cost() const { return bvh::tree_cost(tree_); }
 
 private:
     const Scene& scene_;

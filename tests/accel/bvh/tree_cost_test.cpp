@@ -1,0 +1,74 @@
+// The tree's expected cost in Embree's measure, on a tree laid out by hand whose shares are
+// worked out below, and on the edge cases: no tree, and a tree that is one leaf.
+#include "rt/accel/bvh/tree_cost.h"
+
+#include <array>
+#include <cstdint>
+
+#include <gtest/gtest.h>
+
+namespace rt::bvh {
+namespace {
+
+using Bounds = std::array<float, 6>;  // lo x, y, z, hi x, y, z
+
+WideNode node_of(std::initializer_list<std::pair<std::uint32_t, Bounds>> children) {
+    WideNode node{};
+    for (int c = 0; c < 8; ++c) {
+        node.child[c] = kNoChild;
+    }
+    int c = 0;
+    for (const auto& [child, b] : children) {
+        node.child[c] = child;
+        for (int k = 0; k < 3; ++k) {
+            node.lo[k][c] = b[k];
+            node.hi[k][c] = b[3 + k];
+        }
+        ++c;
+    }
+    return node;
+}
+
+TrianglePacket packet(bool last) {
+    TrianglePacket p{};
+    p.polygon[3] = last ? kLastPacketBit : 0;
+    return p;
+}
+
+TEST(TreeCost, SharesOfTheRootsSurface) {
+    Hierarchy tree;
+    tree.packets.resize(4);
+    tree.packets[0] = packet(false);  // a leaf of two packets
+    tree.packets[1] = packet(true);
+    tree.packets[2] = packet(true);
+    tree.packets[3] = packet(true);
+    tree.wide.resize(2);
+    // The root's box is its children's union, 2 x 1 x 1: half its surface is 2 + 1 + 2 = 5.
+    tree.wide[0] = node_of({{kLeafBit | 0, {0, 0, 0, 2, 1, 1}},  // the whole root: 2 packets
+                            {1, {0, 0, 0, 1, 1, 1}}});           // a node, 3 / 5 = 0.6
+    tree.wide[1] = node_of({{kLeafBit | 2, {0, 0, 0, 1, 1, 0}},  // flat: 1 / 5 = 0.2
+                            {kLeafBit | 3, {0.5, 0.5, 0.5, 1, 1, 1}}});  // 0.75 / 5 = 0.15
+    tree.root = 0;
+    const TreeCost cost = tree_cost(tree);
+    EXPECT_DOUBLE_EQ(cost.nodes, 1.0 + 0.6);
+    EXPECT_DOUBLE_EQ(cost.leaves, 2 * 1.0 + 0.2 + 0.15);
+    EXPECT_DOUBLE_EQ(cost.total(), 3.95);
+    EXPECT_EQ(cost.leaf_count, 3u);
+    EXPECT_DOUBLE_EQ(cost.fill, 4.0 / 16.0);
+}
+
+TEST(TreeCost, NoTreeCostsNothingAndALeafItsPackets) {
+    const Hierarchy empty;
+    EXPECT_EQ(tree_cost(empty).total(), 0.0);
+    EXPECT_EQ(tree_cost(empty).leaf_count, 0u);
+
+    Hierarchy leaf;
+    leaf.packets = {packet(false), packet(false), packet(true)};
+    leaf.root = kLeafBit | 0;
+    EXPECT_EQ(tree_cost(leaf).nodes, 0.0);
+    EXPECT_EQ(tree_cost(leaf).leaves, 3.0);
+    EXPECT_EQ(tree_cost(leaf).leaf_count, 1u);
+}
+
+}  // namespace
+}  // namespace rt::bvh
