@@ -36,9 +36,9 @@ void print_table_row(std::ostream& out, const Measurement& m) {
         // Embree prints its own with the device configuration "verbose=2" (docs/accelerators.md).
         const bvh::TreeCost& c = *m.tree_cost;
         out << fmt::format(
-            "{:<10} {:>9} {:<7} tree cost {:.2f} (nodes {:.2f} + packets {:.2f}), "
-            "{} leaves, wide nodes {:.0f} % full\n",
-            "", "", "", c.total(), c.nodes, c.leaves, c.leaf_count, 100.0 * c.fill);
+            "{:<10} {:>9} {:<7} tree cost {:.2f} (nodes {:.2f} + packets {:.2f}; leaves in pairs "
+            "{:.2f}), {} leaves, wide nodes {:.0f} % full\n",
+            "", "", "", c.total(), c.nodes, c.leaves, c.leaf_pairs, c.leaf_count, 100.0 * c.fill);
     }
     out << std::flush;
 }
@@ -52,7 +52,8 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
            "primary_mrays_1t,random_mrays_1t,primary_mrays_nt,random_mrays_nt,"
            "rays_traced,subsampled,primary_hits,random_hits,primary_nodes_per_ray,"
            "primary_tests_per_ray,random_nodes_per_ray,random_tests_per_ray,"
-           "primary_packet_mrays_1t,random_packet_mrays_1t,tree_cost_nodes,tree_cost_leaves\n";
+           "primary_packet_mrays_1t,random_packet_mrays_1t,tree_cost_nodes,tree_cost_leaves,"
+           "tree_cost_leaf_pairs\n";
     for (const Measurement& m : results) {
         out << fmt::format(
             "{},{},{},{:.3f},{:.2f},{},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{},{:.2f},{:.2f},{:.2f}"
@@ -65,9 +66,9 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
             m.random_one.tests_per_ray, m.primary_packet_one.mrays_per_second,
             m.random_packet_one.mrays_per_second);
         // Empty for every method but the BVH.
-        out << (m.tree_cost
-                    ? fmt::format(",{:.4f},{:.4f}\n", m.tree_cost->nodes, m.tree_cost->leaves)
-                    : std::string(",,\n"));
+        out << (m.tree_cost ? fmt::format(",{:.4f},{:.4f},{:.4f}\n", m.tree_cost->nodes,
+                                          m.tree_cost->leaves, m.tree_cost->leaf_pairs)
+                            : std::string(",,,\n"));
     }
     if (!out) {
         throw IoError("rt_lab: cannot write " + file);

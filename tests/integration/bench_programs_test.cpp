@@ -108,11 +108,14 @@ TEST_F(BenchProgram, LabReadsEveryOption) {
     for (std::size_t row = 1; row < csv.size(); ++row) {
         EXPECT_EQ(field(csv[row], 5), "1") << csv[row];  // threads
     }
-    // The BVH's tree cost (nodes, packets) ends its rows; the other methods leave it empty.
-    EXPECT_TRUE(csv[0].ends_with(",tree_cost_nodes,tree_cost_leaves")) << csv[0];
+    // The BVH's tree cost (nodes, packets, leaves in pairs) ends its rows; the other methods
+    // leave it empty.
+    EXPECT_TRUE(csv[0].ends_with(",tree_cost_nodes,tree_cost_leaves,tree_cost_leaf_pairs"))
+        << csv[0];
     EXPECT_GE(std::stod(field(csv[1], 20)), 1.0) << csv[1];  // the root at least
     EXPECT_GT(std::stod(field(csv[1], 21)), 0.0) << csv[1];
-    EXPECT_TRUE(csv[2].ends_with(",,")) << csv[2];
+    EXPECT_GT(std::stod(field(csv[1], 22)), 0.0) << csv[1];
+    EXPECT_TRUE(csv[2].ends_with(",,,")) << csv[2];
     EXPECT_TRUE(contains(r.out, "tree cost")) << r.out;
     EXPECT_TRUE(contains(read_text(dir_.path() / "lab.svg"), "<svg"));
 }

@@ -21,6 +21,13 @@ double child_half_area(const WideNode& node, int c) {
                      node.hi[2][c]);
 }
 
+// The pair tests the walk makes of a leaf of `packets` packets: the integer division rounds up on
+// purpose.
+double pair_tests(std::size_t packets) {
+    const std::size_t pairs = (packets + 1) / 2;
+    return static_cast<double>(pairs);
+}
+
 std::size_t packets_of_leaf(const PacketArray& packets, std::uint32_t leaf) {
     std::size_t count = 0;
     for (std::uint32_t index = leaf & ~kLeafBit;; ++index) {
@@ -39,7 +46,9 @@ TreeCost tree_cost(const Hierarchy& tree) {
         return cost;
     }
     if (is_leaf(tree.root)) {
-        cost.leaves = static_cast<double>(packets_of_leaf(tree.packets, tree.root));
+        const std::size_t packets = packets_of_leaf(tree.packets, tree.root);
+        cost.leaves = static_cast<double>(packets);
+        cost.leaf_pairs = pair_tests(packets);
         cost.leaf_count = 1;
         return cost;
     }
@@ -75,7 +84,9 @@ TreeCost tree_cost(const Hierarchy& tree) {
                 continue;
             }
             ++cost.leaf_count;
-            cost.leaves += share * static_cast<double>(packets_of_leaf(tree.packets, child));
+            const std::size_t packets = packets_of_leaf(tree.packets, child);
+            cost.leaves += share * static_cast<double>(packets);
+            cost.leaf_pairs += share * pair_tests(packets);
         }
     }
     cost.fill = static_cast<double>(slots) / (8.0 * static_cast<double>(tree.wide.size()));

@@ -17,11 +17,16 @@ struct TreeCost {
     double nodes = 0.0;
     /// Expected packets tested: each leaf's share times its packets (Embree: its blocks of four).
     double leaves = 0.0;
+    /// The same counted as the walk built for AVX2 tests a leaf: two packets at once, so each
+    /// leaf's share times its packets halved, rounded up.
+    double leaf_pairs = 0.0;
     std::size_t leaf_count = 0;
     /// Of the wide nodes' eight slots, the share that holds a child.
     double fill = 0.0;
 
     double total() const { return nodes + leaves; }
+    /// With the leaves counted in pairs: our walk's own expected tests.
+    double total_in_pairs() const { return nodes + leaf_pairs; }
 };
 
 /// Of the collapsed tree (`tree.wide`); zero for an empty tree. A tree that is one leaf costs
