@@ -39,7 +39,7 @@ struct Measurement {
     TraceRate primary_packet_one;
     TraceRate random_packet_one;
     unsigned threads = 1;
-    /// The BVH's tree in Embree's measure of expected cost (bvh/tree_cost.h); none for the others.
+    /// The BVH's tree's expected cost (bvh/tree_cost.h); none for the other methods.
     std::optional<bvh::TreeCost> tree_cost;
 };
 

@@ -33,7 +33,7 @@ void print_table_row(std::ostream& out, const Measurement& m) {
         rate_cell(m.random_one), rate_cell(m.primary_all), rate_cell(m.random_all),
         rate_cell(m.primary_packet_one), rate_cell(m.random_packet_one));
     if (m.tree_cost) {
-        // Embree prints its own with the device configuration "verbose=2" (docs/accelerators.md).
+        // Embree prints its own with the device configuration "verbose=2" (bench/lab/README.md).
         const bvh::TreeCost& c = *m.tree_cost;
         out << fmt::format(
             "{:<10} {:>9} {:<7} tree cost {:.2f} (nodes {:.2f} + packets {:.2f}; leaves in pairs "
