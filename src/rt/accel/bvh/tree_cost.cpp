@@ -1,24 +1,21 @@
 #include "rt/accel/bvh/tree_cost.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
+
+#include "rt/accel/bvh/polygon_references.h"
 
 namespace rt::bvh {
 
 namespace {
 
-// Half the surface of a box (x y + y z + z x), in double from its float bounds; zero when empty.
-double half_area(double lx, double ly, double lz, double hx, double hy, double hz) {
-    const double x = std::max(hx - lx, 0.0);
-    const double y = std::max(hy - ly, 0.0);
-    const double z = std::max(hz - lz, 0.0);
-    return x * y + y * z + z * x;
-}
-
-double child_half_area(const WideNode& node, int c) {
-    return half_area(node.lo[0][c], node.lo[1][c], node.lo[2][c], node.hi[0][c], node.hi[1][c],
-                     node.hi[2][c]);
+// Child `c`'s box: bvh::Box's half_area is the SAH's own.
+Box child_box(const WideNode& node, int c) {
+    Box box;
+    for (int k = 0; k < 3; ++k) {
+        box.lo[k] = node.lo[k][c];
+        box.hi[k] = node.hi[k][c];
+    }
+    return box;
 }
 
 // The pair tests the walk makes of a leaf of `packets` packets: the integer division rounds up on
@@ -54,18 +51,13 @@ TreeCost tree_cost(const Hierarchy& tree) {
     }
     // The root's box is its children's union.
     const WideNode& root = tree.wide[tree.root];
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
-    double hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    Box root_box;
     for (int c = 0; c < 8; ++c) {
-        if (root.child[c] == kNoChild) {
-            continue;
-        }
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], static_cast<double>(root.lo[k][c]));
-            hi[k] = std::max(hi[k], static_cast<double>(root.hi[k][c]));
+        if (root.child[c] != kNoChild) {
+            root_box.grow(child_box(root, c));
         }
     }
-    const double whole = half_area(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    const double whole = root_box.half_area();
     if (!(whole > 0.0)) {
         return cost;  // a flat or degenerate scene: no shares to take
     }
@@ -78,7 +70,7 @@ TreeCost tree_cost(const Hierarchy& tree) {
                 continue;
             }
             ++slots;
-            const double share = child_half_area(node, c) / whole;
+            const double share = child_box(node, c).half_area() / whole;
             if (!is_leaf(child)) {
                 cost.nodes += share;
                 continue;
