@@ -306,6 +306,7 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
                 EXPECT_EQ(f.inverse[k], g.inverse[k]);
                 EXPECT_EQ(f.slab_margin[k], g.slab_margin[k]);
             }
+            EXPECT_EQ(f.negative, g.negative);
             EXPECT_EQ(f.kx, g.kx);
             EXPECT_EQ(f.ky, g.ky);
             EXPECT_EQ(f.kz, g.kz);

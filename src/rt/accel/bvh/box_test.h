@@ -35,9 +35,12 @@ struct BoxRay {
             const Float4 margin = Float4::broadcast(ray.slab_margin[k]);
             near_offset[k] = product + margin;
             far_offset[k] = product - margin;
-            const bool positive = !std::signbit(ray.inverse[k]);  // never 0: see FloatRay
-            near_plane[k] = positive ? 4 * k : 12 + 4 * k;
-            far_plane[k] = positive ? 12 + 4 * k : 4 * k;
+            // The planes by arithmetic on the direction's sign bits: as a choice on the
+            // inverse's sign, GCC made the first axis's a branch, a coin toss for rays in random
+            // directions (docs/accelerators.md, "Set-up without coin tosses").
+            const int negative = static_cast<int>((ray.negative >> k) & 1U);
+            near_plane[k] = 4 * k + 12 * negative;
+            far_plane[k] = 12 + 4 * k - 12 * negative;
         }
     }
 };

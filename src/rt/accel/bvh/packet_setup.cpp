@@ -3,7 +3,9 @@
 // checks it); a change there must be made here too.
 #include "rt/accel/bvh/packet_setup.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "rt/accel/float_prefilter/float_ray.h"
 
@@ -22,6 +24,7 @@ FloatRay lane_float_ray(const PacketValues& v, int lane) {
         ray.origin[k] = v.origin[k][lane];
         ray.inverse[k] = v.inverse[k][lane];
         ray.slab_margin[k] = v.margin[k][lane];
+        ray.negative |= (std::bit_cast<std::uint32_t>(ray.inverse[k]) >> 31U) << k;
     }
     ray.kx = v.kx[lane];
     ray.ky = v.ky[lane];

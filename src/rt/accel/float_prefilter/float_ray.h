@@ -25,6 +25,10 @@ struct FloatRay {
     float origin[3] = {};
     float inverse[3] = {};      ///< 1 / scaled direction, clamped to +-2^60 (never 0)
     float slab_margin[3] = {};  ///< added to each axis's slab interval
+    /// Bit k set when direction component k is negative (so is inverse[k]): taken from the
+    /// direction, not the inverse, so that the box test's choice of planes need not wait for
+    /// the division (box_test.h).
+    std::uint32_t negative = 0;
 
     // Triangle pre-filter, in the ray's sheared 2D space (as RaySpace, in float).
     int kx = 0;
