@@ -106,7 +106,7 @@ Axes axes_along(double ax, double ay, double az) {
 }
 
 // The BVH's set-up of the box tests' values, the axes and the shears, without a branch on the
-// direction: the lab's random rays ran 10-29 % faster so (docs/lab/axes-2026-12-06.md).
+// direction: the lab's random rays ran 6-29 % faster so (docs/lab/axes-2026-12-06.md).
 // `magnitude` holds |d| per axis, `scaled` d scaled to a largest |component| in [1, 2).
 void set_up_boxes_and_axes(FloatRay& r, const Vec3& d, const Vec3& magnitude, const Vec3& scaled,
                            double m) {
