@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ctime>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "rt/accel/bvh/bvh.h"
@@ -15,7 +16,11 @@
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 
+#include <fmt/format.h>
+
 #include "lab_rays.h"
+#include <pthread.h>
+#include <sched.h>
 
 namespace rt::lab {
 
@@ -34,6 +39,40 @@ double thread_cpu_seconds() {
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
     return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
+
+// Keeps the calling thread on one CPU while it lives, then gives it back the CPUs it had (--pin).
+// CPUs need not be alike: on machines with performance and efficiency cores for good, and on a
+// virtual machine for seconds at a time, when one CPU is slowed from outside
+// (docs/lab/pinned-2026-12-06.md). Pinned, a series of one-thread runs stays on one kind of CPU.
+class PinnedThread {
+public:
+    explicit PinnedThread(int cpu) {
+        if (cpu == LabOptions::kNoPin) {
+            return;
+        }
+        if (pthread_getaffinity_np(pthread_self(), sizeof before_, &before_) != 0) {
+            throw Error("--pin: cannot read this thread's CPUs");
+        }
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        CPU_SET(static_cast<std::size_t>(cpu), &one);
+        if (pthread_setaffinity_np(pthread_self(), sizeof one, &one) != 0) {
+            throw Error(fmt::format("--pin {}: this thread cannot be moved there", cpu));
+        }
+        pinned_ = true;
+    }
+    ~PinnedThread() {
+        if (pinned_) {
+            pthread_setaffinity_np(pthread_self(), sizeof before_, &before_);
+        }
+    }
+    PinnedThread(const PinnedThread&) = delete;
+    PinnedThread& operator=(const PinnedThread&) = delete;
+
+private:
+    cpu_set_t before_{};
+    bool pinned_ = false;
+};
 
 // Every k-th ray, so that brute force spends at most its budget of polygon tests.
 std::vector<Ray> subsample(const std::vector<Ray>& rays, std::size_t keep) {
@@ -227,15 +266,22 @@ std::optional<Measurement> measure(const Scene& scene, const std::string& mesh, 
     const bool primary_cut = primary.size() < rays.primary.size();
     const bool random_cut = random.size() < rays.random.size();
     const double least = options.seconds_per_run;
-    m.primary_one = time_tracing(*accel, primary, 1, least, primary_cut);
-    m.random_one = time_tracing(*accel, random, 1, least, random_cut);
+    {
+        const PinnedThread pinned(options.pin_cpu);
+        m.primary_one = time_tracing(*accel, primary, 1, least, primary_cut);
+        m.random_one = time_tracing(*accel, random, 1, least, random_cut);
+        if (options.pin_cpu != LabOptions::kNoPin) {
+            m.pinned_cpu = sched_getcpu();
+        }
+    }
     m.primary_all = time_tracing(*accel, primary, m.threads, least, primary_cut);
     m.random_all = time_tracing(*accel, random, m.threads, least, random_cut);
     if (!brute) {
-        m.primary_packet_one =
-            time_packet_tracing(*accel, packets_of(primary, kImageWidth), primary.size(), least);
-        m.random_packet_one =
-            time_packet_tracing(*accel, packets_of(random, 0), random.size(), least);
+        const std::vector<RayPacket> primary_packets = packets_of(primary, kImageWidth);
+        const std::vector<RayPacket> random_packets = packets_of(random, 0);
+        const PinnedThread pinned(options.pin_cpu);
+        m.primary_packet_one = time_packet_tracing(*accel, primary_packets, primary.size(), least);
+        m.random_packet_one = time_packet_tracing(*accel, random_packets, random.size(), least);
     }
     return m;
 }

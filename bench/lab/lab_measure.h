@@ -39,6 +39,9 @@ struct Measurement {
     TraceRate primary_packet_one;
     TraceRate random_packet_one;
     unsigned threads = 1;
+    /// The CPU the one-thread runs ended on (sched_getcpu) when --pin held them there; else
+    /// LabOptions::kNoPin.
+    int pinned_cpu = LabOptions::kNoPin;
     /// The BVH's tree's expected cost (bvh/tree_cost.h); none for the other methods.
     std::optional<bvh::TreeCost> tree_cost;
 };

@@ -6,6 +6,7 @@
 #include "rt/core/text.h"
 
 #include "command_line/command_line.h"
+#include <sched.h>
 
 namespace rt::lab {
 
@@ -28,6 +29,34 @@ CLI::Validator count() {
                     return "expected a count like 1000, 10k or 1M, found " + quote_token(word);
                 }
                 word = std::to_string(value * factor);
+                return {};
+            },
+            ""};
+}
+
+// A CPU this process may run on, as sched_getaffinity lists them.
+CLI::Validator allowed_cpu() {
+    return {[](const std::string& word) -> std::string {
+                cpu_set_t allowed;
+                CPU_ZERO(&allowed);
+                sched_getaffinity(0, sizeof allowed, &allowed);
+                std::string list;
+                for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+                    if (CPU_ISSET(static_cast<std::size_t>(cpu), &allowed)) {
+                        if (!list.empty()) {
+                            list += ',';
+                        }
+                        list += std::to_string(cpu);
+                    }
+                }
+                int cpu = 0;
+                const auto [end, error] =
+                    std::from_chars(word.data(), word.data() + word.size(), cpu);
+                if (error != std::errc{} || end != word.data() + word.size() || cpu < 0 ||
+                    cpu >= CPU_SETSIZE || !CPU_ISSET(static_cast<std::size_t>(cpu), &allowed)) {
+                    return "expected one of this process's CPUs (" + list + "), found " +
+                           quote_token(word);
+                }
                 return {};
             },
             ""};
@@ -110,6 +139,11 @@ void add_lab_options(CLI::App& app, LabOptions& o) {
     app.add_option("--time-svg", o.time_svg_file,
                    "also draw ns per ray (one thread) against triangle count (log-log)")
         ->type_name("FILE")
+        ->trigger_on_parse();
+    app.add_option("--pin", o.pin_cpu,
+                   "run the one-thread measurements on this CPU (builds and NT runs stay free)")
+        ->type_name("CPU")
+        ->check(allowed_cpu())
         ->trigger_on_parse();
     app.add_option("--source", o.source_dir, "the source tree, for scenes/twocubes.scn (default .)")
         ->type_name("DIR")

@@ -27,6 +27,9 @@ struct LabOptions {
     int seads_side = 0;            ///< SEADS voxels a side; 0: suggested_seads_resolution
     int octree_depth = 0;          ///< octree depth; 0: suggested_octree_depth
     std::string source_dir = ".";  ///< where scenes/twocubes.scn is
+    /// The CPU the one-thread measurements run on; kNoPin: wherever the system puts them.
+    static constexpr int kNoPin = -1;
+    int pin_cpu = kNoPin;
 };
 
 /// Declares the lab's options on app, writing into options. They take effect in command-line

@@ -1,5 +1,6 @@
 // rt_lab: builds every intersection method this rt has on the same meshes and traces the same
 // rays through each, printing a table (and, on request, CSV and an SVG plot). bench/lab/README.md.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -56,6 +57,13 @@ int run(const LabOptions& options) {
             rt::move_to_huge_pages(scene);  // as load_scene does
             run_scene(scene, mesh, options, results);
         }
+    }
+    if (options.pin_cpu != LabOptions::kNoPin && !results.empty()) {
+        const bool all_there = std::all_of(results.begin(), results.end(), [&](const auto& m) {
+            return m.pinned_cpu == options.pin_cpu;
+        });
+        std::cout << (all_there ? "one-thread runs on CPU " : "one-thread runs NOT all on CPU ")
+                  << options.pin_cpu << " (--pin)\n";
     }
     if (!options.csv_file.empty()) {
         rt::lab::write_csv(options.csv_file, results);

@@ -12,6 +12,7 @@
 
 #include "support/run_program.h"
 #include "support/temp_dir.h"
+#include <sched.h>
 
 namespace rt::test {
 namespace {
@@ -59,6 +60,19 @@ bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
+// The lowest-numbered CPU this process may run on, for --pin.
+int first_allowed_cpu() {
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    sched_getaffinity(0, sizeof allowed, &allowed);
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+        if (CPU_ISSET(static_cast<std::size_t>(cpu), &allowed)) {
+            return cpu;
+        }
+    }
+    return 0;
+}
+
 // Exit code 2, nothing measured, and "PROGRAM: message" with a pointer to --help.
 void expect_usage_error(const ProgramResult& r, const std::string& program,
                         const std::string& message) {
@@ -97,7 +111,9 @@ TEST_F(BenchProgram, LabReadsEveryOption) {
                                            "--svg",
                                            "lab.svg",
                                            "--source",
-                                           source_dir().string()});
+                                           source_dir().string(),
+                                           "--pin",
+                                           std::to_string(first_allowed_cpu())});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::vector<std::string> csv = lines("lab.csv");
     ASSERT_EQ(csv.size(), 5U) << r.out;  // a header, then two meshes by two methods
@@ -117,6 +133,9 @@ TEST_F(BenchProgram, LabReadsEveryOption) {
     EXPECT_GT(std::stod(field(csv[1], 22)), 0.0) << csv[1];
     EXPECT_TRUE(csv[2].ends_with(",,,")) << csv[2];
     EXPECT_TRUE(contains(r.out, "tree cost")) << r.out;
+    EXPECT_TRUE(contains(
+        r.out, "\none-thread runs on CPU " + std::to_string(first_allowed_cpu()) + " (--pin)\n"))
+        << r.out;
     EXPECT_TRUE(contains(read_text(dir_.path() / "lab.svg"), "<svg"));
 }
 
@@ -136,10 +155,17 @@ TEST_F(BenchProgram, LabRefusesBadCommandLines) {
                        "--seconds: expected a number above 0, found '0'");
     expect_usage_error(run("rt_lab", {"--threads", "0"}), "rt_lab",
                        "--threads: expected a count like 1000, 10k or 1M, found '0'");
-    expect_help_lists(
-        run("rt_lab", {"--help"}),
-        {"--quick", "--sizes LIST", "--meshes LIST", "--accels LIST", "--threads N", "--seconds S",
-         "--seads-side N", "--octree-depth N", "--csv FILE", "--svg FILE", "--source DIR"});
+    // A CPU the process may not run on (the list of those it may depends on the machine).
+    const ProgramResult pin = run("rt_lab", {"--pin", std::to_string(CPU_SETSIZE)});
+    EXPECT_EQ(pin.exit_code, 2) << pin.err;
+    EXPECT_TRUE(pin.err.starts_with("rt_lab: --pin: expected one of this process's CPUs ("))
+        << pin.err;
+    EXPECT_TRUE(contains(pin.err, "), found '" + std::to_string(CPU_SETSIZE) + "'\n")) << pin.err;
+    EXPECT_EQ(pin.out, "");
+    expect_help_lists(run("rt_lab", {"--help"}),
+                      {"--quick", "--sizes LIST", "--meshes LIST", "--accels LIST", "--threads N",
+                       "--seconds S", "--seads-side N", "--octree-depth N", "--csv FILE",
+                       "--svg FILE", "--source DIR", "--pin CPU"});
 }
 
 TEST_F(BenchProgram, SceneBenchTakesItsOptionsAndPassesTheRestToRt) {
