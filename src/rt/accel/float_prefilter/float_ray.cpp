@@ -50,141 +50,16 @@
 //    double, and so would the exact test's displaced ray (which is within an infinitesimal of
 //    the origin): rejecting needs the float E's to have mixed signs beyond
 //    8 eps L + 2^-20 L^2 + 8 eps^2.
+//
+// The set-up that computes these bounds is in float_ray_inl.h.
 #include "rt/accel/float_prefilter/float_ray.h"
-
-#include <algorithm>
-#include <array>
-#include <bit>
-#include <cmath>
-#include <cstddef>
-#include <cstdint>
-#include <limits>
 
 namespace rt {
 
-namespace {
-
-constexpr double kLargestScale = 0x1p40;
-constexpr double kSmallestScale = 0x1p-40;
-constexpr double kLargestInverse = 0x1p60;
-
-// A positive bound, rounded up: the 2^-20 spare swallows the conversion's rounding.
-float bound_up(double x) {
-    return static_cast<float>(x * (1.0 + 0x1p-20));
-}
-
-// 2^-e for the exponent e of x, so that x * result lies in [1, 2): cheap bit work for the usual
-// magnitudes, ldexp for the extremes.
-double power_of_two_below(double x, double& inverse) {
-    const auto bits = std::bit_cast<std::uint64_t>(x);
-    const int exponent = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-    if (exponent < -1000 || exponent > 1000) {
-        const int e = std::ilogb(x);
-        inverse = std::ldexp(1.0, e);
-        return std::ldexp(1.0, -e);
-    }
-    inverse = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + exponent) << 52);
-    return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - exponent) << 52);
-}
-
-// The axes of the ray's sheared frame: kz the axis of the largest of the three magnitudes (the
-// later one on a tie), kx and ky after it, as `(ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2)`
-// and then (kz + 1) % 3, (kz + 2) % 3, but by arithmetic on the comparisons. As branches (the
-// choice, and a component read by axis), each was a coin toss for rays in random directions.
-struct Axes {
-    int kx;
-    int ky;
-    int kz;
-};
-
-Axes axes_along(double ax, double ay, double az) {
-    const int x_above_y = static_cast<int>(ax > ay);
-    const int x_largest = x_above_y & static_cast<int>(ax > az);
-    const int y_largest = (1 - x_above_y) & static_cast<int>(ay > az);
-    // x largest: 1, 2, 0; y largest: 2, 0, 1; neither: 0, 1, 2.
-    return {x_largest + 2 * y_largest, 1 + x_largest - y_largest, 2 - 2 * x_largest - y_largest};
-}
-
-// The BVH's set-up of the box tests' values, the axes and the shears, without a branch on the
-// direction: the lab's random rays ran 6-29 % faster so (docs/lab/axes-2026-12-06.md).
-// `magnitude` holds |d| per axis, `scaled` d scaled to a largest |component| in [1, 2).
-void set_up_boxes_and_axes(FloatRay& r, const Vec3& d, const Vec3& magnitude, const Vec3& scaled,
-                           double m) {
-    // From the direction's sign bits, not the inverse's: known before the divisions end.
-    r.negative = static_cast<std::uint32_t>(std::signbit(d.x)) |
-                 static_cast<std::uint32_t>(std::signbit(d.y)) << 1U |
-                 static_cast<std::uint32_t>(std::signbit(d.z)) << 2U;
-    // Components read by index from an array: Vec3's operator[] picks among x, y, z by branches.
-    const std::array<double, 3> along{scaled.x, scaled.y, scaled.z};
-    std::array<double, 3> inv{};
-    for (std::size_t k = 0; k < 3; ++k) {
-        inv[k] = 1.0 / along[k];
-        if (!(std::fabs(inv[k]) <= kLargestInverse)) {
-            inv[k] = std::copysign(kLargestInverse, along[k]);
-        }
-        r.inverse[k] = static_cast<float>(inv[k]);
-        r.slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
-    }
-    const auto [kx, ky, kz] = axes_along(magnitude.x, magnitude.y, magnitude.z);
-    r.kx = kx;
-    r.ky = ky;
-    r.kz = kz;
-    // |scaled[kz]| is in [1, 2), so its inverse needs no clamp (the voxel methods' set-up takes
-    // it unclamped: the same bits either way); two roundings, well inside the 8u of the bound.
-    const double inverse_kz = inv[static_cast<std::size_t>(kz)];
-    r.shear_x = static_cast<float>(along[static_cast<std::size_t>(kx)] * inverse_kz);
-    r.shear_y = static_cast<float>(along[static_cast<std::size_t>(ky)] * inverse_kz);
-}
-
-// The set-up, with or without the box tests' values: the BVH's full one reuses its reciprocal on
-// kz for the shears.
-template <bool kBoxes>
-void set_up(FloatRay& r, const Ray& ray, double scene_scale) {
-    const Vec3& d = ray.direction;
-    const double ax = std::fabs(d.x);
-    const double ay = std::fabs(d.y);
-    const double az = std::fabs(d.z);
-    const double largest = std::max({ax, ay, az});
-    const double origin_size =
-        std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)});
-    const double m = scene_scale + origin_size;
-    // (max ignores a NaN, so finiteness is asked of every component.)
-    r.usable = is_finite(d) && is_finite(ray.origin) && largest > 0.0 && m >= kSmallestScale &&
-               m <= kLargestScale;
-    if (!r.usable) {
-        return;
-    }
-    const double shrink = power_of_two_below(largest, r.scale_t);  // D = scale_t D'; t' = t scale_t
-    const Vec3 scaled = d * shrink;                                // exact
-    for (int k = 0; k < 3; ++k) {
-        r.origin[k] = static_cast<float>(ray.origin[k]);
-    }
-    if constexpr (kBoxes) {
-        set_up_boxes_and_axes(r, d, {ax, ay, az}, scaled, m);
-    } else {
-        // The voxel methods' set-up keeps its branches: without them their camera rays ran
-        // 2-3 % slower and their random rays no faster (docs/lab/axes-2026-12-06.md).
-        r.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        r.kx = (r.kz + 1) % 3;
-        r.ky = (r.kx + 1) % 3;
-        // |scaled[kz]| is in [1, 2): the same reciprocal as the full set-up's, unclamped.
-        const double inverse_kz = 1.0 / scaled[r.kz];
-        r.shear_x = static_cast<float>(scaled[r.kx] * inverse_kz);
-        r.shear_y = static_cast<float>(scaled[r.ky] * inverse_kz);
-    }
-    const double eps = 0x1p-20 * m;
-    r.edge_margin_linear = bound_up(8.0 * eps);
-    r.edge_margin_constant = bound_up(8.0 * eps * eps);
-}
-
-}  // namespace
-
-FloatRay::FloatRay(const Ray& ray, double scene_scale) {
-    set_up<true>(*this, ray, scene_scale);
-}
-
+// Out of line: measured inline in the voxel methods' walks, their rates moved by 0.95-1.03 and
+// gained nothing (docs/lab/inline-setup-2026-12-06.md).
 FloatRay::FloatRay(const Ray& ray, double scene_scale, TrianglesOnly) {
-    set_up<false>(*this, ray, scene_scale);
+    float_ray_detail::set_up<false>(*this, ray, scene_scale);
 }
 
 }  // namespace rt

@@ -104,3 +104,5 @@ inline float FloatRay::scaled_up(double t) const {
 constexpr float kRelativeSlack = 0x1p-20f;
 
 }  // namespace rt
+
+#include "rt/accel/float_prefilter/float_ray_inl.h"  // IWYU pragma: export
