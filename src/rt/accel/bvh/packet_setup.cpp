@@ -1,4 +1,4 @@
-// Each step mirrors FloatRay::FloatRay (float_ray.cpp) operation for operation, in the same
+// Each step mirrors FloatRay::FloatRay (float_ray_inl.h) operation for operation, in the same
 // order, so that the results are bit for bit the same (tests/accel/bvh/bvh_packet_test.cpp
 // checks it); a change there must be made here too.
 #include "rt/accel/bvh/packet_setup.h"
