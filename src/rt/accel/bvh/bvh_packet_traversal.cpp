@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "rt/accel/bvh/bvh.h"
+#include "rt/accel/bvh/packet_lane.h"
 #include "rt/accel/bvh/packet_setup.h"
 #include "rt/accel/bvh/single_ray_walk.h"
 #include "rt/accel/float_prefilter/float_ray.h"
@@ -59,48 +60,7 @@ constexpr int kStackSize = 512;
 // 100k soup; random packets 15-35 % faster on the 1k meshes. 3 and 4 gave no more.
 constexpr int kFewLanes = 2;
 
-// One lane's ray, its exact form prepared on its first exact test, and its nearest hit so far
-// in brute force's order (its float form is in PacketValues). Nothing is initialised until the lane
-// is started: zeroing eight lanes of a packet took half of closest_hit_packet's own time.
-class Lane {
-public:
-    Lane() {}  // NOLINT(cppcoreguidelines-pro-type-member-init,modernize-use-equals-default)
-    /// For a nearest hit over `t`.
-    void start(const Ray& ray, Interval t) {
-        start(ray);
-        t_ = t;
-        new (&best_) ClosestHitSoFar(t);
-    }
-    /// For occlusion alone: best() is not to be used.
-    void start(const Ray& ray) {
-        ray_ = &ray;
-        has_space_ = false;
-    }
-    const RaySpace& space() {
-        if (!has_space_) {
-            new (&space_) RaySpace(*ray_);
-            has_space_ = true;
-        }
-        return space_;
-    }
-    ClosestHitSoFar& best() { return best_; }
-    const Ray& ray() const { return *ray_; }
-    /// The interval asked about (for a nearest hit).
-    Interval interval() const { return t_; }
-
-    std::uint32_t previous;  ///< the polygon last offered: fan triangles are adjacent
-
-private:
-    const Ray* ray_;
-    Interval t_;
-    bool has_space_;
-    union {
-        RaySpace space_;  ///< prepared on the lane's first exact test
-    };
-    union {
-        ClosestHitSoFar best_;
-    };
-};
+using Lane = bvh::PacketLane;
 
 using bvh::PacketValues;
 
@@ -233,8 +193,8 @@ __attribute__((target("avx2"))) void go_on_alone(const bvh::Hierarchy& tree, con
     for (std::uint32_t r = rays; r != 0; r &= r - 1) {
         const int lane = std::countr_zero(r);
         Lane& l = lanes[lane];
-        bvh::nearest_below(tree, scene, child, bvh::lane_float_ray(v, lane), l.interval(),
-                           l.space(), l.best(), counters);
+        bvh::nearest_below(tree, scene, child, bvh::lane_float_ray(v, lane), l.interval(), l,
+                           counters);
         v.t_max[lane] = bvh::lane_scaled_up(v, lane, l.best().reach());
     }
     b.t_max = lanes_max(_mm256_load_ps(v.t_max));
@@ -285,16 +245,7 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
             for_each_leaf_candidate(
                 tree.packets, scene, child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id) {
-                    Lane& l = lanes[lane];
-                    if (leaves_polygon(l.ray(), id)) {
-                        return;
-                    }
-                    ++counters.polygon_tests;
-                    const std::optional<double> hit = lane_exact_hit(
-                        l.space(), scene, packet.position, t, id, l.best().search_interval());
-                    if (hit) {
-                        l.best().offer(*hit, id);
-                    }
+                    lanes[lane].offer(scene, &packet, t, id, counters);
                 });
             for (std::uint32_t r = rays; r != 0; r &= r - 1) {
                 const int lane = std::countr_zero(r);
@@ -344,13 +295,10 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
             for_each_leaf_candidate(
                 tree.packets, scene, e.child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& p, int t, std::uint32_t id) {
-                    Lane& l = lanes[lane];
-                    if ((open >> lane & 1u) == 0 || leaves_polygon(l.ray(), id)) {
+                    if ((open >> lane & 1u) == 0) {
                         return;
                     }
-                    ++counters.polygon_tests;
-                    if (lane_exact_hit(l.space(), scene, p.position, t, id, packet.t[lane])
-                            .has_value()) {
+                    if (lanes[lane].blocks(scene, p, t, id, packet.t[lane], counters)) {
                         open &= ~(1u << lane);
                         leaf_rays &= ~(1u << lane);
                     }
@@ -392,14 +340,7 @@ void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
             continue;
         }
         for (const std::uint32_t id : unbounded_) {
-            if (leaves_polygon(l.ray(), id)) {
-                continue;
-            }
-            ++counters.polygon_tests;
-            if (const std::optional<double> hit = intersect_polygon(
-                    l.space(), scene_.polygon_view(id), l.best().search_interval())) {
-                l.best().offer(*hit, id);
-            }
+            l.offer(scene_, nullptr, 0, id, counters);
         }
         values.t_max[lane] = bvh::lane_scaled_up(values, lane, l.best().reach());
     }

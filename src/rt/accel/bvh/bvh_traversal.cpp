@@ -254,28 +254,19 @@ template <bool kAvx2>
                               simd::Float4::broadcast(t_max), out);
 }
 
-// The nearest hit so far of a ray whose exact form and nearest hit are kept by its caller (a
-// packet's lane going on alone: single_ray_walk.h).
+// The nearest hit so far of a packet's lane going on alone (single_ray_walk.h), kept by the
+// lane.
 class NearestHitElsewhere {
 public:
-    NearestHitElsewhere(const RaySpace& space, ClosestHitSoFar& best)
-        : space_(space), best_(best) {}
+    explicit NearestHitElsewhere(bvh::PacketLane& lane) : lane_(lane) {}
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
                TraceCounters& counters) {
-        if (leaves_polygon(space_.ray(), id)) {
-            return;
-        }
-        ++counters.polygon_tests;
-        if (const std::optional<double> hit = lane_exact_hit(space_, scene, packet->position, lane,
-                                                             id, best_.search_interval())) {
-            best_.offer(*hit, id);
-        }
+        lane_.offer(scene, packet, lane, id, counters);
     }
-    double reach() const { return best_.reach(); }
+    double reach() { return lane_.best().reach(); }
 
 private:
-    const RaySpace& space_;
-    ClosestHitSoFar& best_;
+    bvh::PacketLane& lane_;
 };
 
 // Front to back through the tree from `start` (the root, or a node or leaf below it), offering
@@ -413,9 +404,9 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
 }
 
 void bvh::nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t start,
-                        const FloatRay& fray, Interval t, const RaySpace& space,
-                        ClosestHitSoFar& best, TraceCounters& counters) {
-    NearestHitElsewhere nearest(space, best);
+                        const FloatRay& fray, Interval t, PacketLane& lane,
+                        TraceCounters& counters) {
+    NearestHitElsewhere nearest(lane);
 #ifdef RT_BVH_AVX2
     if (cpu_has_avx2) {
         nearest_below_avx2(tree, scene, fray, t, start, nearest, counters);

@@ -7,6 +7,7 @@
 
 #include "rt/accel/accelerator.h"
 #include "rt/accel/bvh/bvh_layout.h"
+#include "rt/accel/bvh/packet_lane.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/accel/hit.h"
 #include "rt/geometry/ray_polygon.h"
@@ -14,12 +15,11 @@
 
 namespace rt::bvh {
 
-/// Offers `best` (the ray's nearest hit so far, over t) every polygon of the subtree at `start`
-/// that the single ray's walk from the root would offer there, each decided by the exact test
-/// with `space` (the ray's). `fray` is the ray's usable float form: a packet's lane has it
-/// already (lane_float_ray, packet_setup.h), bit for bit the single ray's.
+/// Offers `lane` (its nearest hit so far over t, its exact form made on its first exact test)
+/// every polygon of the subtree at `start` that the single ray's walk from the root would offer
+/// there. `fray` is the ray's usable float form: a packet's lane has it already (lane_float_ray,
+/// packet_setup.h), bit for bit the single ray's.
 void nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t start,
-                   const FloatRay& fray, Interval t, const RaySpace& space, ClosestHitSoFar& best,
-                   TraceCounters& counters);
+                   const FloatRay& fray, Interval t, PacketLane& lane, TraceCounters& counters);
 
 }  // namespace rt::bvh
