@@ -77,6 +77,10 @@ public:
             }
         }
     }
+    /// Whether closest_hit_packet walks the packet's lanes together, so that coherent rays are
+    /// cheaper asked eight at a time than one by one (the renderer then plans rays to ask so:
+    /// RayTracer::eye_feelers). False for the lane-by-lane loop above.
+    virtual bool walks_packets() const { return false; }
     /// closest_hit_packet for eye rays (see eye_ray_closest_hit): a method that answers eye rays
     /// from something of its own (the z-buffer) asks eye_ray_closest_hit lane by lane.
     virtual void eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,

@@ -61,6 +61,9 @@ RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const Shading
             collect_point_lights(scene, scene.header.lghtick, settings_.share_light_among_points);
     }
     diffuse_rays_ = !settings_.shadow_feelers || scene.header.lghtick == 0;
+    // Only a packet walk makes feelers cheaper asked eight at a time; a method that asks the
+    // lanes one by one would pay for the planning and gain nothing.
+    feelers_ahead_ = !lights_.empty() && !settings_.fuzzy.enabled() && accel.walks_packets();
 }
 
 std::optional<Hit> RayTracer::nearest_hit(const Ray& ray, RayStart start,
@@ -126,7 +129,15 @@ Rgb RayTracer::shade(const Ray& ray, const std::optional<Hit>& hit, RayKind kind
     // distribution (manual Appendix -I: "the distributed rays are not given the full
     // illumination model treatment").
     const bool full = !distributed || settings_.sampling.illuminate_distributed;
-    const IlluminationContext context{scene_, accel_, settings_, lights_, epsilon_, &sample.stream};
+    // The eye ray's own hit may have its feelers planned and asked already (eye_feelers).
+    const IlluminationContext context{
+        scene_,
+        accel_,
+        settings_,
+        lights_,
+        epsilon_,
+        &sample.stream,
+        kind == RayKind::Eye && depth == 1 ? sample.eye_feelers : std::span<const FeelerAnswer>{}};
     TraceCounters& feelers = sample.counters[RayKind::ShadowFeeler];
     const std::uint64_t stops_before = feelers.hits;  // a feeler's hit is a polygon on its way
     Rgb result = local_illumination(context, s, -ray.direction, full, feelers);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -20,6 +21,8 @@
 #include "rt/shading/illumination.h"
 #include "rt/shading/lights.h"
 #include "rt/shading/shading_settings.h"
+#include "rt/shading/shadow_feeler.h"
+#include "rt/shading/surface_point.h"
 
 namespace rt {
 
@@ -46,6 +49,18 @@ struct SampleContext {
     KindCounters& counters;
     RayTreeCounts& tree;
     SurfaceSeen last_seen;  ///< what the last traced ray met
+    /// The feelers from the sample's eye hit, planned and asked beforehand (eye_feelers), one a
+    /// light; empty for none.
+    std::span<const FeelerAnswer> eye_feelers = {};
+};
+
+/// The room RayTracer::eye_feelers works in, kept by its caller from call to call: a render asks
+/// for every run of eye rays, several hundred thousand times.
+struct EyeFeelerRoom {
+    std::vector<SurfacePoint> points;  ///< the hits' surface points
+    std::vector<std::size_t> ray_of;   ///< the ray of each point
+    RayPacket packet;
+    PacketHits found;
 };
 
 /// Where a ray starts: from the eye, through the screen (the eye rays and the adaptive rule's
@@ -74,8 +89,21 @@ public:
     /// each answer is exactly the single ray's. The walk's counters go to `counters`.
     void eye_ray_hits(std::span<const Ray> rays, std::span<std::optional<Hit>> hits,
                       TraceCounters& counters) const;
-    /// trace for an eye ray whose nearest hit eye_ray_hits has found: the same value, random
-    /// numbers and counters, the walk's own counters apart.
+    /// The number of answers eye_feelers gives a ray: one a light, or none when the feelers are
+    /// not found beforehand (no shadow feelers; fuzzy ones, -F, which draw at random; or a
+    /// method without a packet walk, Accelerator::walks_packets).
+    std::size_t eye_feelers_per_ray() const { return feelers_ahead_ ? lights_.size() : 0; }
+    /// The answers to the first queries of the shadow feelers that shading the eye rays' `hits`
+    /// will send, asked eight at a time through the accelerator's packet walk: feelers from
+    /// neighbouring hits toward one light point are coherent rays. answers[ray *
+    /// eye_feelers_per_ray() + light] is that of the feeler from the ray's hit toward the light,
+    /// or nothing where shading sends none. The walk's counters go to `counters`.
+    void eye_feelers(std::span<const Ray> rays, std::span<const std::optional<Hit>> hits,
+                     std::span<FeelerAnswer> answers, TraceCounters& counters,
+                     EyeFeelerRoom& room) const;
+    /// trace for an eye ray whose nearest hit eye_ray_hits has found (and its feelers, if
+    /// sample.eye_feelers holds them, eye_feelers): the same value, random numbers and counters,
+    /// the walks' own counters apart.
     Rgb trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit, SampleContext& sample) const;
 
     /// What a ray meets first: its polygon, and its hit's shadow feelers, without shading it or
@@ -125,6 +153,7 @@ private:
     int max_depth_ = 1;
     double max_distributed_depth_ = 0.0;  ///< the header's maxdist
     bool diffuse_rays_ = false;           ///< no shadow feelers: light arrives by diffuse rays
+    bool feelers_ahead_ = false;          ///< eye_feelers finds answers (see eye_feelers_per_ray)
 };
 
 }  // namespace rt

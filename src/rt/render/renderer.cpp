@@ -134,8 +134,10 @@ public:
                          ? minimum_samples(job.pixel_strata.size())
                          : job.pixel_strata.size()) {}
 
-    /// Finds the first eye rays of pixels x0 to x1 (at most kPixels) of row y.
-    void find(const RenderJob& job, int x0, int x1, int y, TraceCounters& eye_counters) {
+    /// Finds the first eye rays of pixels x0 to x1 (at most kPixels) of row y, and their
+    /// feelers' first answers.
+    void find(const RenderJob& job, int x0, int x1, int y, TraceCounters& eye_counters,
+              TraceCounters& feeler_counters) {
         x0_ = x0;
         samples_.clear();
         rays_.clear();
@@ -147,11 +149,19 @@ public:
         }
         hits_.assign(rays_.size(), std::nullopt);
         job.tracer.eye_ray_hits(rays_, hits_, eye_counters);
+        feelers_per_ray_ = job.tracer.eye_feelers_per_ray();
+        if (feelers_per_ray_ != 0) {
+            feelers_.resize(rays_.size() * feelers_per_ray_);
+            job.tracer.eye_feelers(rays_, hits_, feelers_, feeler_counters, feeler_room_);
+        }
     }
 
     std::uint32_t per_pixel() const { return per_pixel_; }
     const EyeSample& sample(int x, std::uint32_t k) const { return samples_[index(x, k)]; }
     const std::optional<Hit>& hit(int x, std::uint32_t k) const { return hits_[index(x, k)]; }
+    std::span<const FeelerAnswer> feelers(int x, std::uint32_t k) const {
+        return std::span(feelers_).subspan(index(x, k) * feelers_per_ray_, feelers_per_ray_);
+    }
 
 private:
     std::size_t index(int x, std::uint32_t k) const {
@@ -163,6 +173,9 @@ private:
     std::vector<EyeSample> samples_;
     std::vector<Ray> rays_;
     std::vector<std::optional<Hit>> hits_;
+    std::size_t feelers_per_ray_ = 0;
+    std::vector<FeelerAnswer> feelers_;  ///< eye_feelers_per_ray() a ray
+    EyeFeelerRoom feeler_room_;
 };
 
 // Whether the centre rays of the four neighbouring pixels see the same surface (SurfaceSeen: one
@@ -210,6 +223,8 @@ struct EyeRaysAhead {
     std::array<EyeSample, kPacketSize> samples;
     std::array<Ray, kPacketSize> rays;
     std::array<std::optional<Hit>, kPacketSize> hits;
+    std::vector<FeelerAnswer> feelers;  ///< eye_feelers_per_ray() a ray
+    EyeFeelerRoom feeler_room;
 };
 
 Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, EyeRaysAhead& room,
@@ -222,6 +237,7 @@ Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, EyeRay
     std::array<std::optional<Hit>, kPacketSize>& ahead_hits = room.hits;
     std::uint32_t ahead_first = 0;
     std::uint32_t ahead_count = 0;
+    const std::size_t feelers_per_ray = job.tracer.eye_feelers_per_ray();
     const auto take = [&](std::uint32_t k, std::uint32_t certain) {
         if (k >= first.per_pixel() && certain - k > 1 && k - ahead_first >= ahead_count) {
             ahead_first = k;
@@ -232,6 +248,12 @@ Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, EyeRay
             }
             job.tracer.eye_ray_hits(std::span(ahead_rays).first(ahead_count), ahead_hits,
                                     counters[RayKind::Eye]);
+            if (feelers_per_ray != 0) {
+                room.feelers.resize(ahead_count * feelers_per_ray);
+                job.tracer.eye_feelers(std::span(ahead_rays).first(ahead_count),
+                                       std::span(ahead_hits).first(ahead_count), room.feelers,
+                                       counters[RayKind::ShadowFeeler], room.feeler_room);
+            }
         }
         const bool found_first = k < first.per_pixel();
         const bool found_ahead = !found_first && k - ahead_first < ahead_count;
@@ -239,6 +261,12 @@ Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, EyeRay
                         : found_ahead ? ahead[k - ahead_first]
                                       : eye_sample(job, x, y, k);
         SampleContext sample{eye.stream, counters, report.tree, {}};
+        if (found_first) {
+            sample.eye_feelers = first.feelers(x, k);
+        } else if (found_ahead && feelers_per_ray != 0) {
+            sample.eye_feelers = std::span<const FeelerAnswer>(room.feelers)
+                                     .subspan((k - ahead_first) * feelers_per_ray, feelers_per_ray);
+        }
         Rgb value = found_first ? job.tracer.trace_eye_ray(eye.ray, first.hit(x, k), sample)
                     : found_ahead
                         ? job.tracer.trace_eye_ray(eye.ray, ahead_hits[k - ahead_first], sample)
@@ -320,7 +348,7 @@ void render_rows(RenderJob& job, KindCounters& counters) {
         for (int x = w.left; x <= w.right && !job.stop_now(); ++x) {
             if ((x - w.left) % FirstEyeRays::kPixels == 0) {
                 first.find(job, x, std::min(w.right, x + FirstEyeRays::kPixels - 1), y,
-                           counters[RayKind::Eye]);
+                           counters[RayKind::Eye], counters[RayKind::ShadowFeeler]);
             }
             if (pixel_events) {
                 std::lock_guard lock(job.observer_mutex);

@@ -1,6 +1,8 @@
 #include "rt/shading/illumination.h"
 
 #include <cmath>
+#include <cstddef>
+#include <optional>
 
 #include "rt/shading/optics.h"
 #include "rt/shading/shadow_feeler.h"
@@ -55,21 +57,27 @@ Rgb local_illumination(const IlluminationContext& context, const SurfacePoint& s
     }
     const FeelerContext feeler{context.scene,   context.accel,  settings,
                                context.epsilon, context.stream, s.polygon};
-    for (const PointLight& light : context.lights) {
-        if (light.polygon == s.polygon) {
-            continue;  // an emitter does not light itself
-        }
-        const Vec3 to_light = normalize(light.position - s.position);
-        const bool viewer_side = dot(to_light, s.facing_normal) > 0.0;
-        if (!viewer_side && !(highlights && settings.far_side_feelers && s.transmission > 0.0)) {
+    for (std::size_t i = 0; i < context.lights.size(); ++i) {
+        const PointLight& light = context.lights[i];
+        const FeelerAnswer* known =
+            i < context.known_feelers.size() &&
+                    context.known_feelers[i].state != FeelerAnswer::State::NotFound
+                ? &context.known_feelers[i]
+                : nullptr;
+        const LightSide side =
+            known != nullptr ? known->side : light_side(settings, s, light, highlights);
+        if (!side.feels) {
             continue;
         }
-        const Rgb received = feel_light(feeler, s.position, light, counters);
+        const Rgb received = known != nullptr
+                                 ? feel_light_planned(feeler, s.position, light, *known, counters)
+                                 : feel_light(feeler, s.position, light, counters);
         if (max_component(received) <= 0.0) {
             continue;
         }
-        result += viewer_side ? reflected_light(settings, s, view, to_light, received, highlights)
-                              : transmitted_light(s, view, to_light, received);
+        result += side.viewer_side
+                      ? reflected_light(settings, s, view, side.to_light, received, highlights)
+                      : transmitted_light(s, view, side.to_light, received);
     }
     return result;
 }

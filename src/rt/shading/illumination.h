@@ -4,6 +4,7 @@
 // tracer's business.
 #pragma once
 
+#include <optional>
 #include <span>
 
 #include "rt/accel/accelerator.h"
@@ -12,6 +13,7 @@
 #include "rt/scene/scene.h"
 #include "rt/shading/lights.h"
 #include "rt/shading/shading_settings.h"
+#include "rt/shading/shadow_feeler.h"
 #include "rt/shading/surface_point.h"
 
 namespace rt {
@@ -23,6 +25,9 @@ struct IlluminationContext {
     std::span<const PointLight> lights;  ///< empty when shadow feeling is off
     double epsilon;                      ///< self-intersection distance
     SampleStream* stream = nullptr;      ///< the sample's random numbers (fuzzy feelers)
+    /// By light (as `lights`), the feeler toward it planned and asked beforehand (an eye hit's:
+    /// RayTracer::eye_feelers); empty for none.
+    std::span<const FeelerAnswer> known_feelers = {};
 };
 
 /// Light leaving the surface toward `view` (unit, pointing from the surface to the viewer).

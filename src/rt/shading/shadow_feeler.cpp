@@ -15,16 +15,33 @@ namespace {
 // A feeler crosses at most this many transparent polygons; beyond, the light is taken as lost.
 constexpr int kMaxTransparentLayers = 64;
 
-}  // namespace
+// What a hit on the feeler's way does to the light: false where it stops it; else the light
+// is filtered by the polygon and the feeler goes on past it.
+bool passes_through(const FeelerContext& context, const Ray& feeler, const Hit& hit, Rgb& filter,
+                    Interval& along, TraceCounters& counters) {
+    ++counters.hits;
+    const Polygon& p = context.scene.polygons[hit.polygon];
+    const Attribute& a = context.scene.attribute_of(p);
+    const bool forced_opaque = context.settings.smooth_shaded_opaque && p.smooth;
+    if (a.is_opaque() || forced_opaque || context.settings.feelers_stop_at_transparent) {
+        return false;
+    }
+    const Rgb color = surface_color(context.scene, hit.polygon, feeler.at(hit.t));
+    filter = filter * color * a.transmission;
+    along.min = hit.t;
+    return true;
+}
 
-Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const Vec3& span,
-                         std::uint32_t light_polygon, TraceCounters& counters) {
-    const double distance = length(span);
+// feeler_transmittance for a span of length `distance`. (The loop is written out twice, here and
+// in answered_transmittance: one loop taking the first answer as an argument made every
+// feeler's way slower, cornell's default render 3 % and more.)
+Rgb transmittance(const FeelerContext& context, const Vec3& from, const Vec3& span, double distance,
+                  std::uint32_t light_polygon, TraceCounters& counters) {
     if (!(distance > context.epsilon)) {
         return {};
     }
     const Ray feeler{from, span, context.leaves};
-    Interval along{context.epsilon / distance, 1.0 - context.epsilon / distance};
+    Interval along = feeler_interval(context, distance);
     Rgb filter{1.0, 1.0, 1.0};
     for (int layer = 0; layer <= kMaxTransparentLayers; ++layer) {
         ++counters.rays;
@@ -32,53 +49,82 @@ Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const V
         if (!hit || hit->polygon == light_polygon) {
             return filter;
         }
-        ++counters.hits;
-        const Polygon& p = context.scene.polygons[hit->polygon];
-        const Attribute& a = context.scene.attribute_of(p);
-        const bool forced_opaque = context.settings.smooth_shaded_opaque && p.smooth;
-        if (a.is_opaque() || forced_opaque || context.settings.feelers_stop_at_transparent) {
+        if (!passes_through(context, feeler, *hit, filter, along, counters)) {
             return {};
         }
-        const Rgb color = surface_color(context.scene, hit->polygon, feeler.at(hit->t));
-        filter = filter * color * a.transmission;
-        along.min = hit->t;
     }
     return {};
+}
+
+// transmittance for a feeler whose first query was answered beforehand.
+Rgb answered_transmittance(const FeelerContext& context, const Vec3& from, const Vec3& span,
+                           const FeelerAnswer& known, std::uint32_t light_polygon,
+                           TraceCounters& counters) {
+    const Ray feeler{from, span, context.leaves};
+    Interval along = known.along;
+    std::optional<Hit> hit;
+    if (known.state == FeelerAnswer::State::Hits) {
+        hit = known.hit;
+    }
+    Rgb filter{1.0, 1.0, 1.0};
+    for (int layer = 0; layer <= kMaxTransparentLayers; ++layer) {
+        ++counters.rays;
+        if (layer > 0) {
+            hit = context.accel.closest_hit(feeler, along, counters);
+        }
+        if (!hit || hit->polygon == light_polygon) {
+            return filter;
+        }
+        if (!passes_through(context, feeler, *hit, filter, along, counters)) {
+            return {};
+        }
+    }
+    return {};
+}
+
+// The light that arrives through a feeler's `passed` fraction.
+Rgb arriving(const ShadingSettings& settings, const PointLight& light, const FeelerAim& aim,
+             const Rgb& passed) {
+    if (max_component(passed) <= 0.0) {
+        return {};
+    }
+    const double fall_off = settings.attenuate_feelers ? settings.attenuation(aim.distance) : 1.0;
+    return light.intensity * passed * (fall_off * aim.warn);
+}
+
+}  // namespace
+
+Rgb feeler_transmittance(const FeelerContext& context, const Vec3& from, const Vec3& span,
+                         std::uint32_t light_polygon, TraceCounters& counters) {
+    return transmittance(context, from, span, length(span), light_polygon, counters);
+}
+
+bool aim_warn_feeler(const FeelerContext& context, const Vec3& from, const PointLight& light,
+                     FeelerAim& aim) {
+    // Warn lights aim the feeler (at a displaced source for -Wt) and weigh what it brings.
+    const ShadingSettings& settings = context.settings;
+    const Polygon& emitter_polygon = context.scene.polygons[light.polygon];
+    const WarnEmitter emitter{emitter_polygon.normal,
+                              context.scene.attribute_of(emitter_polygon).specular_exponent,
+                              settings.both_sides_emit};
+    aim.target = warn_feeler_target(settings.warn, emitter, light.position, from);
+    aim.target_distance = length(aim.target - from);
+    const bool crosses = settings.warn.mode == WarnMode::Thibadeau &&
+                         intersect_polygon(Ray{from, aim.target - from},
+                                           context.scene.polygon_view(light.polygon), {0.0, 1.0})
+                             .has_value();
+    aim.warn = warn_factor(settings.warn, emitter, normalize(from - aim.target), crosses);
+    return aim.warn > 0.0;
 }
 
 Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight& light,
                TraceCounters& counters) {
     const ShadingSettings& settings = context.settings;
-    const double distance = length(light.position - from);
-    if (!(distance > context.epsilon)) {
+    FeelerAim aim;
+    if (!aim_feeler(context, from, light, aim)) {
         return {};
     }
-    // -Db: "only the 'outside' surface of emissive polygons emits light" (manual Appendix). A
-    // point behind a one-sided emitter gets none of its light, as a diffuse ray (-Ds) from there
-    // would see no emission.
-    const Polygon& emitter_polygon = context.scene.polygons[light.polygon];
-    if (!settings.both_sides_emit && dot(from - light.position, emitter_polygon.normal) <= 0.0) {
-        return {};
-    }
-    // Warn lights aim the feeler (at a displaced source for -Wt) and weigh what it brings.
-    double warn = 1.0;
-    Vec3 target = light.position;
-    if (settings.warn.mode != WarnMode::None) {
-        const WarnEmitter emitter{emitter_polygon.normal,
-                                  context.scene.attribute_of(emitter_polygon).specular_exponent,
-                                  settings.both_sides_emit};
-        target = warn_feeler_target(settings.warn, emitter, light.position, from);
-        const bool crosses =
-            settings.warn.mode == WarnMode::Thibadeau &&
-            intersect_polygon(Ray{from, target - from}, context.scene.polygon_view(light.polygon),
-                              {0.0, 1.0})
-                .has_value();
-        warn = warn_factor(settings.warn, emitter, normalize(from - target), crosses);
-        if (!(warn > 0.0)) {
-            return {};
-        }
-    }
-    const Vec3 span = target - from;
+    const Vec3 span = aim.target - from;
     Rgb passed;
     const FuzzyFeelers& fuzzy = settings.fuzzy;
     if (fuzzy.enabled() && context.stream != nullptr) {
@@ -95,13 +141,19 @@ Rgb feel_light(const FeelerContext& context, const Vec3& from, const PointLight&
         }
         passed *= 1.0 / fuzzy.count;
     } else {
-        passed = feeler_transmittance(context, from, span, light.polygon, counters);
+        passed = transmittance(context, from, span, aim.target_distance, light.polygon, counters);
     }
-    if (max_component(passed) <= 0.0) {
+    return arriving(settings, light, aim, passed);
+}
+
+Rgb feel_light_planned(const FeelerContext& context, const Vec3& from, const PointLight& light,
+                       const FeelerAnswer& known, TraceCounters& counters) {
+    if (!known.answered()) {
         return {};
     }
-    const double fall_off = settings.attenuate_feelers ? settings.attenuation(distance) : 1.0;
-    return light.intensity * passed * (fall_off * warn);
+    const Vec3 span = known.aim.target - from;
+    return arriving(context.settings, light, known.aim,
+                    answered_transmittance(context, from, span, known, light.polygon, counters));
 }
 
 }  // namespace rt

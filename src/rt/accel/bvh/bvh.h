@@ -29,6 +29,8 @@ public:
     void closest_hit_packet(const RayPacket& packet, PacketHits& hits,
                             TraceCounters& counters) const override;
     std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
+    /// True where the CPU has AVX2; without it a packet is asked lane by lane.
+    bool walks_packets() const override;
     std::size_t memory_bytes() const override;
 
     /// For tests and the lab: the tree's size.

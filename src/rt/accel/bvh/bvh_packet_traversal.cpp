@@ -319,6 +319,10 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
 
 }  // namespace
 
+bool Bvh::walks_packets() const {
+    return cpu_has_avx2;
+}
+
 void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
                              TraceCounters& counters) const {
     if (!cpu_has_avx2 || tree_.root == bvh::kNoChild) {
@@ -386,6 +390,10 @@ void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
 
 std::uint32_t Bvh::occluded_packet(const RayPacket& packet, TraceCounters& counters) const {
     return Accelerator::occluded_packet(packet, counters);
+}
+
+bool Bvh::walks_packets() const {
+    return false;
 }
 
 #endif

@@ -58,6 +58,7 @@ public:
     void eye_ray_closest_hit_packet(const RayPacket& packet, PacketHits& hits,
                                     TraceCounters& counters) const override;
     std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
+    bool walks_packets() const override { return traced_.walks_packets(); }
     std::size_t memory_bytes() const override { return traced_.memory_bytes(); }
 
     /// What was recorded so far; the recorder starts again empty.

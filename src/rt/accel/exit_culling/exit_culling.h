@@ -106,6 +106,10 @@ public:
                                     TraceCounters& counters) const override;
     /// Each lane as occluded answers it, the lanes not culled in one packet.
     std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override;
+    /// False: most rays leaving a polygon (the feelers among them) are answered here from the
+    /// table, one by one; asked in packets, cornell's feelers took 21 % more of the render
+    /// (docs/lab/feeler-packets-2026-12-06.md).
+    bool walks_packets() const override { return false; }
     /// The table, the eye rays' coverage and the wrapped accelerator.
     std::size_t memory_bytes() const override;
 

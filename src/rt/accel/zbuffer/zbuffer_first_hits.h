@@ -70,6 +70,7 @@ public:
     std::uint32_t occluded_packet(const RayPacket& packet, TraceCounters& counters) const override {
         return fallback_.occluded_packet(packet, counters);
     }
+    bool walks_packets() const override { return fallback_.walks_packets(); }
     /// The item buffer plus the fallback.
     std::size_t memory_bytes() const override;
 
