@@ -121,6 +121,17 @@ EyeSample eye_sample(const RenderJob& job, int x, int y, std::uint32_t k) {
     return {stream, job.camera.primary_ray(x + px, y + py)};
 }
 
+// The feelers' answers eye_feelers keeps for each of `rays` eye rays: one a light, or none where
+// a run of rays would need more than kMostFeelerAnswers (a scene of thousands of point lights,
+// all samples of a run with -Dx): the room would grow past a few megabytes, and the feelers are
+// asked one by one instead.
+constexpr std::size_t kMostFeelerAnswers = std::size_t{1} << 15;
+
+std::size_t feelers_to_plan(const RayTracer& tracer, std::size_t rays) {
+    const std::size_t per_ray = tracer.eye_feelers_per_ray();
+    return per_ray != 0 && rays <= kMostFeelerAnswers / per_ray ? per_ray : 0;
+}
+
 // The eye rays a run of neighbouring pixels takes whatever the adaptive rule decides (the first
 // minimum_samples of each, or all with -Dx), found before the pixels are shaded so that they go
 // through the accelerator eight at a time: samples of one pixel and of its neighbours are
@@ -149,7 +160,7 @@ public:
         }
         hits_.assign(rays_.size(), std::nullopt);
         job.tracer.eye_ray_hits(rays_, hits_, eye_counters);
-        feelers_per_ray_ = job.tracer.eye_feelers_per_ray();
+        feelers_per_ray_ = feelers_to_plan(job.tracer, rays_.size());
         if (feelers_per_ray_ != 0) {
             feelers_.resize(rays_.size() * feelers_per_ray_);
             job.tracer.eye_feelers(rays_, hits_, feelers_, feeler_counters, feeler_room_);
@@ -174,7 +185,7 @@ private:
     std::vector<Ray> rays_;
     std::vector<std::optional<Hit>> hits_;
     std::size_t feelers_per_ray_ = 0;
-    std::vector<FeelerAnswer> feelers_;  ///< eye_feelers_per_ray() a ray
+    std::vector<FeelerAnswer> feelers_;  ///< feelers_per_ray_ a ray
     EyeFeelerRoom feeler_room_;
 };
 
@@ -223,7 +234,7 @@ struct EyeRaysAhead {
     std::array<EyeSample, kPacketSize> samples;
     std::array<Ray, kPacketSize> rays;
     std::array<std::optional<Hit>, kPacketSize> hits;
-    std::vector<FeelerAnswer> feelers;  ///< eye_feelers_per_ray() a ray
+    std::vector<FeelerAnswer> feelers;  ///< feelers_to_plan(tracer, kPacketSize) a ray
     EyeFeelerRoom feeler_room;
 };
 
@@ -237,7 +248,7 @@ Rgb render_pixel(RenderJob& job, int x, int y, const FirstEyeRays& first, EyeRay
     std::array<std::optional<Hit>, kPacketSize>& ahead_hits = room.hits;
     std::uint32_t ahead_first = 0;
     std::uint32_t ahead_count = 0;
-    const std::size_t feelers_per_ray = job.tracer.eye_feelers_per_ray();
+    const std::size_t feelers_per_ray = feelers_to_plan(job.tracer, kPacketSize);
     const auto take = [&](std::uint32_t k, std::uint32_t certain) {
         if (k >= first.per_pixel() && certain - k > 1 && k - ahead_first >= ahead_count) {
             ahead_first = k;
