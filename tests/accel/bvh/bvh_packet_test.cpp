@@ -1,6 +1,8 @@
 // The BVH's packets of eight (bvh_packet_traversal.cpp) against brute force: every lane's answer
 // is the single ray's, bit for bit, on random rays, camera rays, rays in a polygon's plane, rays
 // that start on polygons, and packets with only some lanes asked; inactive lanes are untouched.
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -248,9 +250,9 @@ TEST(BvhPackets, ScenesTheFloatTestsCannotCover) {
     EXPECT_EQ(none.occluded_packet(packet, counters), 0u);
 }
 
-// The packet's vectorised set-up must give each lane exactly FloatRay's values: the filters'
-// error bounds are argued for those.
-TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
+// The packet's vectorised set-up, by `path`, must give each lane exactly FloatRay's values: the
+// filters' error bounds are argued for those.
+void expect_set_up_equals_float_ray(bvh::SetUpPath path) {
     std::mt19937_64 random(17);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     std::uniform_int_distribution<int> exponent(-60, 60);
@@ -285,7 +287,7 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
         packet.t[5] = Interval{1e-9, std::nextafter(1.0, 0.0)};  // as shadow feelers
         const double scene_scale = std::ldexp(1.0, exponent(random) / 3);
         bvh::PacketValues v{};
-        const std::uint32_t lanes = bvh::set_up_packet(packet, scene_scale, v);
+        const std::uint32_t lanes = bvh::set_up_packet(packet, scene_scale, v, path);
         int first_kz = -1;
         bool same_axes = true;
         for (int lane = 0; lane < kPacketSize; ++lane) {
@@ -323,6 +325,91 @@ TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
     EXPECT_GT(checked, 3500);
     EXPECT_GT(same_axes_packets, 50);  // 82 with this seed
     EXPECT_LT(same_axes_packets, 450);
+}
+
+TEST(BvhPackets, SetUpEqualsFloatRayLaneForLane) {
+    expect_set_up_equals_float_ray(bvh::SetUpPath::FourLanes);
+}
+
+TEST(BvhPackets, EightLaneSetUpEqualsFloatRayLaneForLane) {
+    if (!bvh::set_up_path_available(bvh::SetUpPath::EightLanes)) {
+        GTEST_SKIP() << "this CPU has no AVX-512";
+    }
+    expect_set_up_equals_float_ray(bvh::SetUpPath::EightLanes);
+}
+
+// Both set-ups, on extremes as well (NaN, infinite, huge, tiny and zero values), choose the same
+// lanes and give them the same bits.
+TEST(BvhPackets, SetUpPathsAgreeOnEveryValue) {
+    if (!bvh::set_up_path_available(bvh::SetUpPath::EightLanes)) {
+        GTEST_SKIP() << "this CPU has no AVX-512";
+    }
+    std::mt19937_64 random(29);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> pick(0, 9);
+    std::uniform_int_distribution<int> exponent(-1100, 1100);
+    const auto value = [&]() {
+        switch (pick(random)) {
+            case 0:
+                return std::numeric_limits<double>::quiet_NaN();
+            case 1:
+                return unit(random) < 0.0 ? -HUGE_VAL : HUGE_VAL;
+            case 2:
+                return 0.0;
+            case 3:
+            case 4:
+                return std::ldexp(unit(random), exponent(random));
+            default:
+                return unit(random) * 10.0;
+        }
+    };
+    int set_up = 0;
+    for (int round = 0; round < 4000; ++round) {
+        RayPacket packet;
+        packet.active = round % 5 == 0 ? 0x5au : 0xffu;
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            packet.rays[lane] = {Vec3{value(), value(), value()}, Vec3{value(), value(), value()}};
+            const double a = value();
+            const double b = value();
+            packet.t[lane] = Interval{std::min(a, b), std::max(a, b)};
+        }
+        const double scene_scale = std::ldexp(1.0, exponent(random) / 20);
+        bvh::PacketValues four{};
+        bvh::PacketValues eight{};
+        const std::uint32_t lanes =
+            bvh::set_up_packet(packet, scene_scale, four, bvh::SetUpPath::FourLanes);
+        ASSERT_EQ(lanes, bvh::set_up_packet(packet, scene_scale, eight, bvh::SetUpPath::EightLanes))
+            << "round " << round;
+        if (lanes != 0) {
+            EXPECT_EQ(four.same_axes, eight.same_axes) << "round " << round;
+        }
+        const auto same = [](float x, float y) {
+            return std::bit_cast<std::uint32_t>(x) == std::bit_cast<std::uint32_t>(y);
+        };
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+            if (((lanes >> lane) & 1u) == 0) {
+                continue;
+            }
+            ++set_up;
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_TRUE(same(four.origin[k][lane], eight.origin[k][lane]));
+                EXPECT_TRUE(same(four.inverse[k][lane], eight.inverse[k][lane]));
+                EXPECT_TRUE(same(four.margin[k][lane], eight.margin[k][lane]));
+            }
+            EXPECT_TRUE(same(four.t_min[lane], eight.t_min[lane])) << "round " << round;
+            EXPECT_TRUE(same(four.t_max[lane], eight.t_max[lane])) << "round " << round;
+            EXPECT_TRUE(same(four.shear_x[lane], eight.shear_x[lane]));
+            EXPECT_TRUE(same(four.shear_y[lane], eight.shear_y[lane]));
+            EXPECT_TRUE(same(four.edge_linear[lane], eight.edge_linear[lane]));
+            EXPECT_TRUE(same(four.edge_constant[lane], eight.edge_constant[lane]));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(four.scale_t[lane]),
+                      std::bit_cast<std::uint64_t>(eight.scale_t[lane]));
+            EXPECT_EQ(four.kx[lane], eight.kx[lane]);
+            EXPECT_EQ(four.ky[lane], eight.ky[lane]);
+            EXPECT_EQ(four.kz[lane], eight.kz[lane]);
+        }
+    }
+    EXPECT_GT(set_up, 1000);
 }
 
 TEST(BvhPackets, TheFallbackLoopsOverSingleRays) {

@@ -36,9 +36,18 @@ FloatRay lane_float_ray(const PacketValues& v, int lane);
 float lane_scaled_down(const PacketValues& v, int lane, double t);
 float lane_scaled_up(const PacketValues& v, int lane, double t);
 
+/// How set_up_packet works: four lanes at a time with AVX2, eight at a time with AVX-512, or
+/// (Best) eight where the CPU has AVX-512 and four otherwise. Each gives the same values.
+enum class SetUpPath { Best, FourLanes, EightLanes };
+
+/// Whether this build and CPU can set packets up by `path`.
+bool set_up_path_available(SetUpPath path);
+
 /// Sets up the active lanes of `packet` whose FloatRay would be usable and whose direction is of
 /// an ordinary size (all but extremes), with t_min from the packet's intervals and t_max from
-/// their ends; returns them. The other active lanes need the single-ray path. Needs AVX2.
-std::uint32_t set_up_packet(const RayPacket& packet, double scene_scale, PacketValues& v);
+/// their ends; returns them. The other active lanes need the single-ray path. Needs AVX2, and
+/// for EightLanes AVX-512 (set_up_path_available).
+std::uint32_t set_up_packet(const RayPacket& packet, double scene_scale, PacketValues& v,
+                            SetUpPath path = SetUpPath::Best);
 
 }  // namespace rt::bvh
