@@ -242,16 +242,21 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
         }
         if (child != bvh::kNoChild) {
             std::uint32_t leaf_rays = rays;
+            std::uint32_t found = 0;  // lanes whose nearest hit may have moved
             for_each_leaf_candidate(
                 tree.packets, scene, child, v, lanes, leaf_rays,
                 [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id) {
-                    lanes[lane].offer(scene, &packet, t, id, counters);
+                    if (lanes[lane].offer(scene, &packet, t, id, counters)) {
+                        found |= 1u << lane;
+                    }
                 });
-            for (std::uint32_t r = rays; r != 0; r &= r - 1) {
-                const int lane = std::countr_zero(r);
-                v.t_max[lane] = bvh::lane_scaled_up(v, lane, lanes[lane].best().reach());
+            if (found != 0) {
+                for (std::uint32_t r = found; r != 0; r &= r - 1) {
+                    const int lane = std::countr_zero(r);
+                    v.t_max[lane] = bvh::lane_scaled_up(v, lane, lanes[lane].best().reach());
+                }
+                b.t_max = lanes_max(_mm256_load_ps(v.t_max));
             }
-            b.t_max = lanes_max(_mm256_load_ps(v.t_max));
         }
         child = bvh::kNoChild;
         while (size > 0 && child == bvh::kNoChild) {

@@ -48,10 +48,11 @@ public:
     /// hit, as the single ray's walk does: nothing for the polygon the ray leaves, and before
     /// the ray's first exact test the plane alone (lane_exact_hit.h), which a feeler ending on
     /// its light or a ray leaving a surface beside coplanar neighbours often needs alone.
-    void offer(const Scene& scene, const TrianglePacket* packet, int t, std::uint32_t id,
+    /// Returns whether the exact test found a hit (the nearest so far may then have moved).
+    bool offer(const Scene& scene, const TrianglePacket* packet, int t, std::uint32_t id,
                TraceCounters& counters) {
         if (leaves_polygon(*ray_, id)) {
-            return;
+            return false;
         }
         ++counters.polygon_tests;
         const Interval search = best_.search_interval();
@@ -59,7 +60,7 @@ public:
             if (packet != nullptr
                     ? lane_plane_certainly_missed(*ray_, scene, packet->position, t, id, search)
                     : polygon_plane_certainly_missed(*ray_, scene, id, search)) {
-                return;
+                return false;
             }
         }
         const std::optional<double> hit =
@@ -68,6 +69,7 @@ public:
         if (hit) {
             best_.offer(*hit, id);
         }
+        return hit.has_value();
     }
     /// Whether polygon `id` blocks the ray within the interval `t` (occlusion), with the same
     /// plane test first.

@@ -36,14 +36,6 @@ FloatRay lane_float_ray(const PacketValues& v, int lane) {
     return ray;
 }
 
-float lane_scaled_down(const PacketValues& v, int lane, double t) {
-    return float_below(t * v.scale_t[lane]);
-}
-
-float lane_scaled_up(const PacketValues& v, int lane, double t) {
-    return float_above(t * v.scale_t[lane]);
-}
-
 #ifdef RT_PACKET_SETUP_AVX2
 
 namespace {

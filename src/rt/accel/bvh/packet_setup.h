@@ -33,8 +33,12 @@ struct alignas(32) PacketValues {
 FloatRay lane_float_ray(const PacketValues& v, int lane);
 
 /// FloatRay::scaled_down and scaled_up for a lane.
-float lane_scaled_down(const PacketValues& v, int lane, double t);
-float lane_scaled_up(const PacketValues& v, int lane, double t);
+inline float lane_scaled_down(const PacketValues& v, int lane, double t) {
+    return float_below(t * v.scale_t[lane]);
+}
+inline float lane_scaled_up(const PacketValues& v, int lane, double t) {
+    return float_above(t * v.scale_t[lane]);
+}
 
 /// How set_up_packet works: four lanes at a time with AVX2, eight at a time with AVX-512, or
 /// (Best) eight where the CPU has AVX-512 and four otherwise. Each gives the same values.
