@@ -211,8 +211,8 @@ __attribute__((target("avx2"))) std::uint32_t set_up_four(const RayPacket& packe
 }
 
 // The AVX-512 form: set_up_four's steps for all eight lanes at once, in the same order per lane,
-// with masks where set_up_four has all-ones lanes. Half the instructions; used where the CPU has
-// AVX-512 (set_up_packet).
+// with masks where set_up_four has all-ones lanes. About half the instructions; used where the CPU
+// has AVX-512 (set_up_packet).
 #define RT_AVX512_TARGET __attribute__((target("avx2,fma,avx512f,avx512dq")))
 // GCC 12's AVX-512 intrinsics start their unused destinations as `__Y = __Y` (GCC bug 105593).
 #pragma GCC diagnostic push
