@@ -1,7 +1,7 @@
 // The float filter values of eight rays, one AVX2 lane each: FloatRay's values (float_ray_inl.h),
-// computed for four rays at a time in double and rounded as FloatRay rounds them, so that every
-// lane's filters are exactly the single ray's. Setting up rays one FloatRay at a time cost more
-// than the packet's whole walk.
+// computed for four rays at a time (eight with AVX-512) in double and rounded as FloatRay rounds
+// them, so that every lane's filters are exactly the single ray's. Setting up rays one FloatRay
+// at a time cost more than the packet's whole walk.
 #pragma once
 
 #include <cstdint>
