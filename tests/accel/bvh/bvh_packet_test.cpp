@@ -152,6 +152,16 @@ TEST(BvhPackets, CameraRays) {
     EXPECT_GT(expect_both_ways(cubes, Bvh(cubes), camera_queries(cubes, 64, 48)), 200);
 }
 
+// Triangles whose corners lie too far apart in the positions for the packet's 16-bit steps
+// (lane_corners.h) go to the scene for their corners; the others keep theirs.
+TEST(BvhPackets, CornersFarApartInThePositions) {
+    Scene soup = test::make_triangle_soup(2000, 31);
+    test::scatter_positions(soup, 30, 7);
+    const Bvh bvh(soup);
+    expect_both_ways(soup, bvh, test::random_queries(soup, 2000, 8));
+    EXPECT_GT(expect_both_ways(soup, bvh, camera_queries(soup, 64, 48)), 500);
+}
+
 TEST(BvhPackets, GrazingRays) {
     // Rays from corner to corner of a tilted fan lie in its plane (grazing hits), and
     // axis-parallel rays run along the faces and edges of a box of quads.

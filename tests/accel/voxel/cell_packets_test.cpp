@@ -105,7 +105,7 @@ TEST(CellPackets, PlaneGroupGoesFirst) {
 
 // A triangle's lane carries its corners' position indices in the polygon's own loop order, so that
 // its exact test (lane_exact_hit.h) sees the same polygon as Scene::polygon_view; a lane of a
-// larger polygon, and an unused lane, say kNotTriangle and leave the test to the scene.
+// larger polygon, and an unused lane, say they are not triangles and leave the test to the scene.
 TEST(CellPackets, TriangleLanesCarryTheirCornersInLoopOrder) {
     test::SceneBuilder b;
     b.add_polygon({{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}});  // 0: a quad, 2 lanes
@@ -125,13 +125,14 @@ TEST(CellPackets, TriangleLanesCarryTheirCornersInLoopOrder) {
         for (int lane = 0; lane < 4; ++lane) {
             const std::uint32_t id = packet.polygon[lane] & ~kAlwaysTestBit;
             if (packet.polygon[lane] == kUnusedLane || scene.polygons[id].corner_count != 3) {
-                EXPECT_EQ(packet.position[0][lane], kNotTriangle) << "lane " << lane;
+                EXPECT_FALSE(packet.position.is_triangle(lane)) << "lane " << lane;
                 continue;
             }
             ++triangles;
             const PolygonView view = scene.polygon_view(id);
             for (std::uint32_t v = 0; v < 3; ++v) {
-                EXPECT_EQ(packet.position[v][lane], view.corner_ids[v]) << "polygon " << id;
+                EXPECT_EQ(packet.position.corner(static_cast<int>(v), lane), view.corner_ids[v])
+                    << "polygon " << id;
             }
         }
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -115,6 +116,31 @@ Scene make_triangle_soup(std::uint32_t triangles, std::uint64_t seed) {
     scene.view.look = {0.5, 0.5, 0.5};
     scene.view.eye = {0.5, 0.5, -2.0};
     return scene;
+}
+
+void scatter_positions(Scene& scene, std::uint32_t spread, std::uint64_t seed) {
+    const std::size_t count = scene.positions.size();
+    std::vector<std::uint32_t> slot(count * spread);
+    std::iota(slot.begin(), slot.end(), 0u);
+    std::mt19937_64 random(seed);
+    std::shuffle(slot.begin(), slot.end(), random);
+    slot.resize(count);  // slot[i]: where position i goes
+    std::vector<Vec3> positions(count * spread, count > 0 ? scene.positions[0] : Vec3{});
+    std::vector<Vec3> normals;
+    if (!scene.vertex_normals.empty()) {
+        normals.assign(positions.size(), scene.vertex_normals[0]);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        positions[slot[i]] = scene.positions[i];
+        if (!normals.empty()) {
+            normals[slot[i]] = scene.vertex_normals[i];
+        }
+    }
+    for (std::uint32_t& corner : scene.corners) {
+        corner = slot[corner];
+    }
+    scene.positions = std::move(positions);
+    scene.vertex_normals = std::move(normals);
 }
 
 Scene make_cube_sphere(std::uint32_t triangles) {

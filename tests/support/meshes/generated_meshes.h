@@ -26,4 +26,9 @@ Scene make_triangle_soup(std::uint32_t triangles, std::uint64_t seed = 1);
 /// slivers meet, would measure the poles rather than the method.)
 Scene make_cube_sphere(std::uint32_t triangles);
 
+/// The same polygons with their positions spread over `spread` times as many slots in random
+/// order (the other slots copy position 0), so that a triangle's corners lie far apart in
+/// Scene::positions, as in a model whose faces index vertices anywhere.
+void scatter_positions(Scene& scene, std::uint32_t spread, std::uint64_t seed);
+
 }  // namespace rt::test

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rt/accel/lane_corners.h"
 #include "rt/core/default_init_allocator.h"
 
 namespace rt::bvh {
@@ -41,17 +42,18 @@ static_assert(offsetof(Node, hi) == offsetof(Node, lo) + 12 * sizeof(float) &&
               "BoxRay's plane offsets count on hi following lo");
 static_assert(sizeof(Node) == 128 && sizeof(WideNode) == 256);
 
-/// 208 bytes on a 16-byte boundary: four fan triangles (v0, v_i, v_i+1) of the leaf's polygons;
-/// unused lanes repeat the last triangle, so they add no candidate the exact test would not
-/// already see.
-struct alignas(16) TrianglePacket {
+/// 192 bytes, three cache lines on a 64-byte boundary: four fan triangles (v0, v_i, v_i+1) of
+/// the leaf's polygons; unused lanes repeat the last triangle, so they add no candidate the exact
+/// test would not already see.
+struct alignas(64) TrianglePacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest
     std::uint32_t polygon[4];  ///< the scene polygon each lane belongs to (| kLastPacketBit)
-    /// [vertex][lane]: a triangle polygon's corners as indices into Scene::positions, in its
-    /// Scene::corners order, so the exact test need not read Scene::corners; position[0][lane]
-    /// is kNotTriangle (lane_exact_hit.h) for a lane of a polygon of more corners.
-    std::uint32_t position[3][4];
+    /// A triangle polygon's corners as indices into Scene::positions, in its Scene::corners
+    /// order, so the exact test need not read Scene::corners; not a triangle for a lane of a
+    /// polygon of more corners.
+    LaneCorners position;
 };
+static_assert(sizeof(TrianglePacket) == 192);
 
 /// The leaves' packets: sized first, then written by every build thread (leaf_filling.cpp), so
 /// sizing them writes nothing.

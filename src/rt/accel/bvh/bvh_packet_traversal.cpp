@@ -94,9 +94,9 @@ void fill_inactive_lanes(PacketValues& v, std::uint32_t active) {
 void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) {
     for (int t = 0; t < 4; ++t) {
         prefetch(&scene.polygons[packet.polygon[t] & ~kLastPacketBit]);
-        if (packet.position[0][t] != kNotTriangle) {
+        if (packet.position.is_triangle(t)) {
             for (int c = 0; c < 3; ++c) {
-                prefetch(&scene.positions[packet.position[c][t]]);
+                prefetch(&scene.positions[packet.position.corner(c, t)]);
             }
         }
     }

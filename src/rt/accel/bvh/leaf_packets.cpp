@@ -9,8 +9,8 @@ namespace {
 
 void set_lane(TrianglePacket& packet, int lane, const Vec3 (&corners)[3], std::uint32_t polygon,
               const std::uint32_t* positions) {
+    packet.position.set(lane, positions);
     for (int v = 0; v < 3; ++v) {
-        packet.position[v][lane] = positions != nullptr ? positions[v] : kNotTriangle;
         for (int k = 0; k < 3; ++k) {
             packet.corner[v][k][lane] = static_cast<float>(corners[v][k]);
         }
@@ -19,8 +19,8 @@ void set_lane(TrianglePacket& packet, int lane, const Vec3 (&corners)[3], std::u
 }
 
 void copy_lane(TrianglePacket& packet, int from, int to) {
+    packet.position.copy_lane(from, to);
     for (int v = 0; v < 3; ++v) {
-        packet.position[v][to] = packet.position[v][from];
         for (int k = 0; k < 3; ++k) {
             packet.corner[v][k][to] = packet.corner[v][k][from];
         }

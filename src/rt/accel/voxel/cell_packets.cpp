@@ -104,14 +104,16 @@ public:
         if (lane_ == 4) {
             flush();
             std::fill(packet_.polygon, packet_.polygon + 4, kUnusedLane);
-            std::fill(&packet_.position[0][0], &packet_.position[0][0] + 12, kNotTriangle);
+            for (int lane = 0; lane < 4; ++lane) {
+                packet_.position.set(lane, nullptr);
+            }
             std::fill(&packet_.corner[0][0][0], &packet_.corner[0][0][0] + 36,
                       std::numeric_limits<float>::quiet_NaN());
             lane_ = 0;
         }
         double size = 0.0;
+        packet_.position.set(lane_, triangle);
         for (int v = 0; v < 3; ++v) {
-            packet_.position[v][lane_] = triangle != nullptr ? triangle[v] : kNotTriangle;
             for (int a = 0; a < 3; ++a) {
                 const auto f = static_cast<float>(corners[v][a]);
                 packet_.corner[v][a][lane_] = f;

@@ -35,15 +35,16 @@ namespace rt {
 inline constexpr std::uint32_t kAlwaysTestBit = 0x80000000u;
 /// CellPacket::polygon of an unused lane (the always bit clear).
 inline constexpr std::uint32_t kUnusedLane = 0x7fffffffu;
-/// 208 bytes on a 16-byte boundary: four fan triangles of a voxel's polygons.
+/// 192 bytes on a 16-byte boundary: four fan triangles of a voxel's polygons.
 struct alignas(16) CellPacket {
     float corner[3][3][4];     ///< [vertex][axis][lane], rounded to nearest; NaN in unused lanes
     std::uint32_t polygon[4];  ///< the scene polygon of each lane, | kAlwaysTestBit
-    /// [vertex][lane]: a triangle polygon's corners as indices into Scene::positions, in its
-    /// Scene::corners order, for its exact test (lane_exact_hit.h); position[0][lane] is
-    /// kNotTriangle for a lane of a polygon of more corners and for an unused lane.
-    std::uint32_t position[3][4];
+    /// A triangle polygon's corners as indices into Scene::positions, in its Scene::corners
+    /// order, for its exact test (lane_exact_hit.h); not a triangle for a lane of a polygon of
+    /// more corners and for an unused lane.
+    LaneCorners position;
 };
+static_assert(sizeof(CellPacket) == 192);
 
 /// Bit k set: lane k holds a fan triangle.
 inline unsigned used_lanes(const CellPacket& packet) {

@@ -162,7 +162,7 @@ protected:
     /// Whether the exact test of this lane's polygon certainly misses within `t` by its plane,
     /// asked while the ray has no RaySpace (lane_plane_certainly_missed): the ray then makes
     /// one only for a polygon it may hit.
-    bool missed_before_space(const std::uint32_t (&position)[3][4], int lane, std::uint32_t id,
+    bool missed_before_space(const LaneCorners& position, int lane, std::uint32_t id,
                              Interval t) const {
         return !space_ && lane_plane_certainly_missed(ray_, scene_, position, lane, id, t);
     }
@@ -210,7 +210,7 @@ private:
     // The exact test of one polygon, offering its hit. Polygons arrive in voxel order, not id
     // order: the tie rule picks among equal t.
     auto offer_to_nearest() {
-        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane)
+        return [this](std::uint32_t id, const LaneCorners& position, int lane)
             __attribute__((always_inline)) {
             const Interval within = nearest_.search_interval();
             if (missed_before_space(position, lane, id, within)) {
@@ -239,7 +239,7 @@ public:
 
 private:
     auto hit_within() {
-        return [this](std::uint32_t id, const std::uint32_t(&position)[3][4], int lane)
+        return [this](std::uint32_t id, const LaneCorners& position, int lane)
             __attribute__((always_inline)) {
             return !missed_before_space(position, lane, id, t_) &&
                    lane_exact_hit(space(), scene_, position, lane, id, t_).has_value();
