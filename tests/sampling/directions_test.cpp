@@ -221,11 +221,13 @@ TEST(Directions, CosineHemisphereIsTheCosPowerLawWithNOne) {
 }
 
 // The renderer draws all the rays of a lobe from one sampler: a sampler used many times must give
-// each draw exactly what a fresh one gives (no state carried from draw to draw).
-TEST(Directions, ReusedSamplersGiveFreshSamplersDirections) {
+// each draw exactly what a fresh one gives (no state carried from draw to draw), and so must one
+// made from a shape worked out once for its material.
+TEST(Directions, ReusedSamplersAndShapesGiveFreshSamplersDirections) {
     const Vec3 axis = normalize(Vec3{0.3, -0.8, 0.52});
     const CosPowerCone cone{20 * kDegree, 10.0};
     const ConeSampler cone_rays(cone, axis);
+    const ConeShape shape(cone);  // one material's cone, worked out once for all its lobes
     const CosineHemisphereSampler hemisphere_rays(axis);
     SampleStream stream(7, 0, 0, 0);
     for (int k = 0; k < 1000; ++k) {
@@ -234,6 +236,8 @@ TEST(Directions, ReusedSamplersGiveFreshSamplersDirections) {
         const Vec3 reused = cone_rays(u1, u2);
         const Vec3 fresh = ConeSampler(cone, axis)(u1, u2);
         ASSERT_TRUE(reused.x == fresh.x && reused.y == fresh.y && reused.z == fresh.z) << k;
+        const Vec3 shaped = ConeSampler(shape, axis)(u1, u2);
+        ASSERT_TRUE(shaped.x == fresh.x && shaped.y == fresh.y && shaped.z == fresh.z) << k;
         const Vec3 reused_diffuse = hemisphere_rays(u1, u2);
         const Vec3 fresh_diffuse = CosineHemisphereSampler(axis)(u1, u2);
         ASSERT_TRUE(reused_diffuse.x == fresh_diffuse.x && reused_diffuse.y == fresh_diffuse.y &&

@@ -46,7 +46,16 @@ struct RayTracer::Lobe {
     bool outside = true;
     bool diffuse = false;
     RayKind kind = RayKind::Reflected;
+    const ConeShape* shape = nullptr;  ///< the cone's shape, worked out once; null: from `cone`
 };
+
+const RayTracer::MaterialCones* RayTracer::cones_of(const SurfacePoint& s) const {
+    const std::uint32_t index = s.polygon < scene_.polygons.size()
+                                    ? scene_.polygons[s.polygon].attribute
+                                    : std::uint32_t{0xffffffffu};
+    return index < cones_.size() && &scene_.attributes[index] == s.attribute ? &cones_[index]
+                                                                             : nullptr;
+}
 
 RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const ShadingSettings& settings)
     : scene_(scene),
@@ -59,6 +68,11 @@ RayTracer::RayTracer(const Scene& scene, const Accelerator& accel, const Shading
     if (settings_.shadow_feelers) {
         lights_ =
             collect_point_lights(scene, scene.header.lghtick, settings_.share_light_among_points);
+    }
+    cones_.reserve(scene.attributes.size());
+    for (const Attribute& a : scene.attributes) {
+        cones_.push_back({ConeShape({radians(a.reflect_cone_degrees), a.reflect_cone_exponent}),
+                          ConeShape({radians(a.refract_cone_degrees), a.refract_cone_exponent})});
     }
     diffuse_rays_ = !settings_.shadow_feelers || scene.header.lghtick == 0;
     // Only a packet walk makes feelers cheaper asked eight at a time; a method that asks the
@@ -189,11 +203,13 @@ Rgb RayTracer::secondary_rays(const Ray& ray, const SurfacePoint& s, int depth, 
         if (settings_.correct_smoothing && dot(mirrored, s.facing_normal) <= 0.0) {
             mirrored = reflect(ray.direction, s.facing_normal);  // smoothing bent it inside
         }
+        const MaterialCones* cones = cones_of(s);
         const Lobe lobe{normalize(mirrored),
                         {radians(a.reflect_cone_degrees), a.reflect_cone_exponent},
                         true,
                         false,
-                        RayKind::Reflected};
+                        RayKind::Reflected,
+                        cones != nullptr ? &cones->reflect : nullptr};
         distributed_here = distributed_here || (distribute && lobe.cone.half_angle > 0.0);
         result += gather(lobe, s, depth, rays, sample, reflected_weight) * a.specular;
     }
@@ -223,6 +239,7 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                               SampleContext& sample, double weight) const {
     const Attribute& a = *s.attribute;
     const Rgb& index = a.refraction_index;
+    const MaterialCones* cones = cones_of(s);
     const bool split = index.r != index.g || index.g != index.b;
     Rgb result;
     for (int channel = 0; channel < (split ? 3 : 1); ++channel) {
@@ -243,7 +260,8 @@ Rgb RayTracer::refracted_rays(const Ray& ray, const SurfacePoint& s, int depth, 
                         {radians(a.refract_cone_degrees), a.refract_cone_exponent},
                         !bent,  // totally reflected light stays on the ray's side
                         false,
-                        RayKind::Refracted};
+                        RayKind::Refracted,
+                        cones != nullptr ? &cones->refract : nullptr};
         const Rgb traced = gather(lobe, s, depth, rays, sample, weight);
         if (!split) {
             return traced;
@@ -275,7 +293,7 @@ Rgb RayTracer::gather(const Lobe& lobe, const SurfacePoint& s, int depth, LobeRa
     if (lobe.diffuse) {
         hemisphere.emplace(lobe.axis);
     } else {
-        cone.emplace(lobe.cone, lobe.axis);
+        cone.emplace(lobe.shape != nullptr ? *lobe.shape : ConeShape(lobe.cone), lobe.axis);
     }
     const auto direction_of = [&](std::uint32_t k) {
         double u1 = 0.0;

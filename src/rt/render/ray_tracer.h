@@ -152,8 +152,16 @@ private:
     double epsilon_ = 1e-9;
     int max_depth_ = 1;
     double max_distributed_depth_ = 0.0;  ///< the header's maxdist
-    bool diffuse_rays_ = false;           ///< no shadow feelers: light arrives by diffuse rays
-    bool feelers_ahead_ = false;          ///< eye_feelers finds answers (see eye_feelers_per_ray)
+    /// Per attribute, its reflection and refraction cones' shapes, worked out once.
+    struct MaterialCones {
+        ConeShape reflect;
+        ConeShape refract;
+    };
+    std::vector<MaterialCones> cones_;
+    /// The cones of the attribute `s` shades with; null for an attribute not of the scene.
+    const MaterialCones* cones_of(const SurfacePoint& s) const;
+    bool diffuse_rays_ = false;   ///< no shadow feelers: light arrives by diffuse rays
+    bool feelers_ahead_ = false;  ///< eye_feelers finds answers (see eye_feelers_per_ray)
 };
 
 }  // namespace rt

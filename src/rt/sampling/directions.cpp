@@ -54,25 +54,29 @@ Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u
     return ConeSampler(cone, axis)(u1, u2);
 }
 
+ConeShape::ConeShape(const CosPowerCone& cone)
+    : below_edge(1.0 - edge_power(cone)),
+      inverse_power(1.0 / (cone.exponent + 1.0)),
+      rim_cosine(std::pow(1.0 - below_edge, inverse_power)) {}  // u1 = 1 in operator()
+
 ConeSampler::ConeSampler(const CosPowerCone& cone, const Vec3& axis)
-    : axis_(axis),
-      below_edge_(1.0 - edge_power(cone)),
-      inverse_power_(1.0 / (cone.exponent + 1.0)) {
+    : ConeSampler(ConeShape(cone), axis) {}
+
+ConeSampler::ConeSampler(const ConeShape& shape, const Vec3& axis) : axis_(axis), shape_(shape) {
     orthonormal_basis(axis, tangent_, bitangent_);
 }
 
 Vec3 ConeSampler::operator()(double u1, double u2) const {
-    const double cos_theta = std::pow(1.0 - u1 * below_edge_, inverse_power_);
+    const double cos_theta = std::pow(1.0 - u1 * shape_.below_edge, shape_.inverse_power);
     return around(axis_, tangent_, bitangent_, cos_theta, 2.0 * std::numbers::pi * u2);
 }
 
 std::array<Vec3, 4> ConeSampler::rim() const {
     static const QuarterAngles quarters;
-    const double cos_theta = std::pow(1.0 - below_edge_, inverse_power_);  // u1 = 1
     std::array<Vec3, 4> directions;
     for (std::size_t q = 0; q < 4; ++q) {
-        directions[q] =
-            around(axis_, tangent_, bitangent_, cos_theta, quarters.cosine[q], quarters.sine[q]);
+        directions[q] = around(axis_, tangent_, bitangent_, shape_.rim_cosine, quarters.cosine[q],
+                               quarters.sine[q]);
     }
     return directions;
 }
