@@ -5,12 +5,11 @@
 // first hit by this rule, so that they answer exactly as brute force does.
 #pragma once
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
 
+#include "rt/core/next_up.h"
 #include "rt/core/ray.h"
 
 namespace rt {
@@ -25,22 +24,6 @@ constexpr bool comes_before(const Hit& a, const Hit& b) {
     return a.t < b.t || (a.t == b.t && a.polygon < b.polygon);
 }
 
-/// std::nextafter(x, +inf), bit for bit, inline: the next double above x (the least subnormal
-/// above a zero; +inf and NaN as they are). The library's call was half a percent of a render's
-/// instructions, asked before nearly every exact test.
-inline double next_double_up(double x) {
-    if (!(x < HUGE_VAL)) {
-        return x;
-    }
-    if (x == 0.0) {
-        return std::numeric_limits<double>::denorm_min();
-    }
-    // Doubles of one sign are ordered as their bits: a step away from zero is +1 on the bits of
-    // a positive x, and a step towards it -1 on those of a negative one.
-    const auto bits = std::bit_cast<std::uint64_t>(x);
-    return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
-}
-
 /// The first hit in that order among the polygons asked so far along one ray, inside the
 /// interval the ray was asked about. Small and inline: the methods call it in their inner loops.
 class ClosestHitSoFar {
@@ -49,7 +32,7 @@ public:
 
     /// The interval to ask the next polygon about: up to and including the best t so far, so
     /// that a polygon at that very t comes back and can still win with a lower id.
-    Interval search_interval() const { return {t_.min, best_ ? next_double_up(best_->t) : t_.max}; }
+    Interval search_interval() const { return {t_.min, best_ ? next_up(best_->t) : t_.max}; }
     /// A hit found on `polygon` at `t`, kept if it comes before the best so far.
     void offer(double t, std::uint32_t polygon) {
         const Hit hit{t, polygon};

@@ -40,7 +40,7 @@ FloatRay lane_float_ray(const PacketValues& v, int lane) {
 
 namespace {
 
-// next_float_up and next_float_down (float_ray.h) for four floats that are finite (the only ones
+// next_up and next_down (core/next_up.h) for four floats that are finite (the only ones
 // that can have been rounded the wrong way).
 __attribute__((target("avx2"))) __m128 step_up(__m128 f, __m128 apply) {
     const __m128i bits = _mm_castps_si128(f);
@@ -49,7 +49,7 @@ __attribute__((target("avx2"))) __m128 step_up(__m128 f, __m128 apply) {
     __m128i stepped = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(_mm_add_epi32(bits, one)),
                                                      _mm_castsi128_ps(_mm_sub_epi32(bits, one)),
                                                      _mm_cmplt_ps(f, zero)));
-    // next_float_up(+-0) is the smallest denormal.
+    // next_up(+-0) is the smallest denormal.
     stepped = _mm_castps_si128(
         _mm_blendv_ps(_mm_castsi128_ps(stepped), _mm_castsi128_ps(one), _mm_cmpeq_ps(f, zero)));
     return _mm_blendv_ps(f, _mm_castsi128_ps(stepped), apply);

@@ -7,7 +7,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "rt/core/ray.h"
 
@@ -54,30 +53,14 @@ struct FloatRay {
     float scaled_up(double t) const;
 };
 
-/// The next float towards +inf (towards -inf for next_float_down); infinities and NaN stay.
-inline float next_float_up(float f) {
-    if (!(f < HUGE_VALF)) {
-        return f;
-    }
-    if (f == 0.0f) {
-        return std::numeric_limits<float>::denorm_min();
-    }
-    const auto bits = std::bit_cast<std::uint32_t>(f);
-    return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
-}
-
-inline float next_float_down(float f) {
-    return -next_float_up(-f);
-}
-
 /// x as a float rounded towards -inf (float_below) or +inf (float_above); NaN stays NaN.
 ///
 /// Whether rounding to nearest went the wrong way is a coin toss, and a branch on it mispredicted
 /// half the time (a fifth of the BVH's reference making). So the step is chosen without one: one
 /// unit towards -inf is bits + 1 for a negative float (its magnitude grows) and bits - 1 for a
-/// positive one, whose sign bit gives the step. The cases next_float_down treats apart never need
-/// a step the other way: +0 is never above x (x would have rounded to -0 or below), and +inf
-/// steps to the largest float as bits - 1 does. The same, mirrored, for float_above.
+/// positive one, whose sign bit gives the step. The cases next_down (core/next_up.h) treats apart
+/// never need a step the other way: +0 is never above x (x would have rounded to -0 or below), and
+/// +inf steps to the largest float as bits - 1 does. The same, mirrored, for float_above.
 inline float float_below(double x) {
     const auto f = static_cast<float>(x);
     const auto bits = std::bit_cast<std::uint32_t>(f);
