@@ -55,9 +55,7 @@ Vec3 sample_cone(const CosPowerCone& cone, const Vec3& axis, double u1, double u
 }
 
 ConeShape::ConeShape(const CosPowerCone& cone)
-    : below_edge(1.0 - edge_power(cone)),
-      inverse_power(1.0 / (cone.exponent + 1.0)),
-      rim_cosine(std::pow(1.0 - below_edge, inverse_power)) {}  // u1 = 1 in operator()
+    : below_edge(1.0 - edge_power(cone)), inverse_power(1.0 / (cone.exponent + 1.0)) {}
 
 ConeSampler::ConeSampler(const CosPowerCone& cone, const Vec3& axis)
     : ConeSampler(ConeShape(cone), axis) {}
@@ -73,10 +71,11 @@ Vec3 ConeSampler::operator()(double u1, double u2) const {
 
 std::array<Vec3, 4> ConeSampler::rim() const {
     static const QuarterAngles quarters;
+    const double cos_theta = std::pow(1.0 - shape_.below_edge, shape_.inverse_power);  // u1 = 1
     std::array<Vec3, 4> directions;
     for (std::size_t q = 0; q < 4; ++q) {
-        directions[q] = around(axis_, tangent_, bitangent_, shape_.rim_cosine, quarters.cosine[q],
-                               quarters.sine[q]);
+        directions[q] =
+            around(axis_, tangent_, bitangent_, cos_theta, quarters.cosine[q], quarters.sine[q]);
     }
     return directions;
 }
