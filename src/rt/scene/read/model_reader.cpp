@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 
+#include "rt/core/huge_pages.h"
 #include "rt/scene/read/assimp_functions.h"
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/gltf_check.h"
@@ -213,16 +214,17 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
     }
     const auto base = static_cast<std::uint32_t>(mesh_.vertices.size());
     // Room for the whole mesh first: growing by doubling copied a million-polygon model's arrays
-    // into fresh memory again and again.
+    // into fresh memory again and again. In huge pages: the polygon records alone are 72 MB for
+    // a million triangles, and each 4 KiB page of fresh memory is a page fault of its own.
     std::size_t corners = 0;
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
         corners += std::min<std::size_t>(m.mFaces[f].mNumIndices, kMaxEdgesPerPolygon + 1);
     }
-    mesh_.vertices.reserve(mesh_.vertices.size() + m.mNumVertices);
-    mesh_.polygons.reserve(mesh_.polygons.size() + m.mNumFaces);
-    mesh_.corners.reserve(mesh_.corners.size() + corners);
+    reserve_huge(mesh_.vertices, mesh_.vertices.size() + m.mNumVertices);
+    reserve_huge(mesh_.polygons, mesh_.polygons.size() + m.mNumFaces);
+    reserve_huge(mesh_.corners, mesh_.corners.size() + corners);
     if (any_normals_ || m.HasNormals()) {
-        mesh_.corner_normals.reserve(mesh_.corners.size() + corners);
+        reserve_huge(mesh_.corner_normals, mesh_.corners.size() + corners);
     }
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
         const aiVector3D& p = m.mVertices[v];

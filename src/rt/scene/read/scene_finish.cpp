@@ -1,4 +1,5 @@
 // The last steps of SceneBuilder: vertex normals for smooth shading and auto-centering.
+#include "rt/core/huge_pages.h"
 #include "rt/scene/polygon_geometry.h"
 #include "rt/scene/read/field_reader.h"
 #include "rt/scene/read/scene_builder.h"
@@ -8,6 +9,7 @@
 namespace rt {
 
 void compute_vertex_normals(Scene& scene) {
+    reserve_huge(scene.vertex_normals, scene.positions.size());
     scene.vertex_normals.assign(scene.positions.size(), Vec3{});
     for (const Polygon& p : scene.polygons) {
         if (!p.smooth) {
