@@ -232,7 +232,9 @@ std::int64_t binary_integer(const unsigned char* b, std::uintmax_t bytes, bool i
 // Reads a binary file forward in big blocks.
 class ByteWalk {
 public:
-    explicit ByteWalk(std::istream& in) : in_(in) {}
+    /// The buffer's room is reserved once: a block plus what one take() may keep from the last
+    /// (n <= 8), so it never moves. Growing, it moved twice into fresh memory.
+    explicit ByteWalk(std::istream& in) : in_(in) { buffer_.reserve(kBlock + 8); }
     /// The next `n` bytes (n <= 8), or null at the end of the file.
     const unsigned char* take(std::uintmax_t n) {
         if (!fill(n)) {
@@ -262,13 +264,14 @@ private:
         buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(next_));
         next_ = 0;
         const std::size_t kept = buffer_.size();
-        buffer_.resize(kept + (std::size_t{1} << 20));
+        buffer_.resize(kept + kBlock);
         in_.read(reinterpret_cast<char*>(buffer_.data() + kept),
-                 static_cast<std::streamsize>(std::size_t{1} << 20));
+                 static_cast<std::streamsize>(kBlock));
         buffer_.resize(kept + static_cast<std::size_t>(in_.gcount()));
         return buffer_.size() >= n;
     }
 
+    static constexpr std::size_t kBlock = std::size_t{1} << 20;
     std::istream& in_;
     std::vector<unsigned char> buffer_;
     std::size_t next_ = 0;
