@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -52,8 +53,12 @@ struct AccelSettings {
 
 /// The whole stack of accelerator_stack.h: the method, and the layers around it.
 struct AcceleratorStackSettings {
-    AccelSettings method;             ///< which method, and how (header, --accel, -o switches)
-    bool exit_culling = true;         ///< false with -De
+    AccelSettings method;      ///< which method, and how (header, --accel, -o switches)
+    bool exit_culling = true;  ///< false with -De
+    /// The most rays the render sends from the eye (its pixels' samples and centre probes), or 0
+    /// when not known (-r). Exit culling is left out of a scene with more polygons than that:
+    /// its table cannot pay for itself (kept with -de, which asks to check it).
+    std::uint64_t most_eye_rays = 0;
     bool check_exit_culling = false;  ///< -de: re-trace every culled ray
     bool zbuffer_first_hits = false;  ///< --zbuffer
     bool strike_check = false;        ///< -ds

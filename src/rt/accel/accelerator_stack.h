@@ -29,6 +29,10 @@ struct AccelMessages {
     TextSink trace;
 };
 
+/// Why exit culling, though not switched off, is left out of this scene's stack (its table
+/// cannot pay for itself: settings.most_eye_rays); empty when it is built or switched off.
+std::string exit_culling_left_out(const Scene& scene, const AcceleratorStackSettings& settings);
+
 class AcceleratorStack {
 public:
     /// Builds every layer; the scene must outlive the stack. Throws as make_accelerator does, and
@@ -45,6 +49,8 @@ private:
     std::unique_ptr<Accelerator> base_;  ///< the method, its debugging layers, exit culling
     const StrikeCheck* strike_ = nullptr;
     const ExitCulling* culling_ = nullptr;
+    /// Why exit culling was left out though not switched off (-p says it); empty otherwise.
+    std::string culling_left_out_;
     std::unique_ptr<ZBufferFirstHits> zbuffer_;
     const Accelerator* top_ = nullptr;
 };

@@ -283,13 +283,16 @@ void report_profile(const Options& options, const RunConsole& console, const Sce
     }
 }
 
-// The intersection method, with exit culling in front unless -De; a signal ends the program at
+// The intersection method, with exit culling in front unless -De (or unless the scene has more
+// polygons than the render has rays from the eye for it to cull); a signal ends the program at
 // once while it is built (a big build never looks at the flag).
 AcceleratorStack build_accelerator_stack(const Scene& scene, const Options& options,
-                                         const RunConsole& console) {
+                                         const RenderSettings& render, const RunConsole& console) {
     const ExitOnInterrupt nothing_to_keep;
-    return AcceleratorStack(scene, run_accelerator_stack(options),
-                            {console.note, console.warning, console.trace});
+    AcceleratorStackSettings settings = run_accelerator_stack(options);
+    // -r fires rays from anywhere, not from the eye.
+    settings.most_eye_rays = options.random_rays ? 0 : most_eye_rays(scene, render);
+    return AcceleratorStack(scene, settings, {console.note, console.warning, console.trace});
 }
 
 // The picture's window, showing the wireframe (manual 1.2.2: "First, the outline (called a
@@ -543,7 +546,7 @@ RunOutcome render_run(const Options& options, const RunConsole& console, const F
 
     warn_near_plane(scene, console);
     phase = Clock::now();
-    const AcceleratorStack stack = build_accelerator_stack(scene, options, console);
+    const AcceleratorStack stack = build_accelerator_stack(scene, options, settings, console);
     const Accelerator* accel = &stack.top();
     times.build_seconds = seconds_since(phase);
     const auto print_profile = [&](const KindCounters& counters) {

@@ -232,7 +232,9 @@ constexpr auto kSwitches = std::to_array<SwitchSpec>({
                 "regions and direction bins, built before rendering, says where nothing lies ahead, "
                 "and for eye rays a bitmap of the pixels the scene covers "
                 "(docs/exit-culling-and-zbuffer.md). It never changes the picture. -De turns it "
-                "off, e.g. when the table takes too long to build.", .section = "App.",
+                "off, e.g. when the table takes too long to build. Without -De it is left out of "
+                "a scene with more polygons than the render has rays from the eye, whose table "
+                "could not pay for itself; -p says so.", .section = "App.",
      .example = "-De"},
     {.spelling = "-Dd", .topic = Disable,
      .apply = [](Options& o, A) { o.shading.sampling.distribute = false; },

@@ -413,6 +413,16 @@ void take_finished_rows(RenderJob& job, const Film& done) {
 
 }  // namespace
 
+std::uint64_t most_eye_rays(const Scene& scene, const RenderSettings& settings) {
+    const std::uint64_t samples =
+        ProgressiveStrata(scene.view.sample_resolution_x, scene.view.sample_resolution_y).size();
+    const std::uint64_t per_pixel = samples + (samples > 1 ? 4 : 0);
+    const PixelRect& w = settings.window;
+    const auto pixels = static_cast<std::uint64_t>(std::max(w.width(), 0)) *
+                        static_cast<std::uint64_t>(std::max(w.height(), 0));
+    return pixels * per_pixel;
+}
+
 Film render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
             RenderObserver& observer, RenderStatistics& statistics) {
     Film film(scene.view.width, scene.view.height, settings.window);

@@ -92,6 +92,12 @@ struct RenderStatistics {
     std::uint64_t unrepresentable_samples = 0;
 };
 
+/// The most rays render() sends from the eye for this scene and settings: each pixel of the
+/// window takes at most its n x n samples, and with more than one it may probe its four
+/// neighbours' centres once (the adaptive rule's check). Exit culling is worth building only for
+/// scenes of fewer polygons than that (AcceleratorStackSettings::most_eye_rays).
+std::uint64_t most_eye_rays(const Scene& scene, const RenderSettings& settings);
+
 /// Renders the window into a new film. If the observer asks to stop, or settings.stop_now is set,
 /// the rows finished so far (a contiguous run from the bottom) are kept and the film says where
 /// they begin.
