@@ -22,6 +22,41 @@ TEST(HugePages, ReserveHugeMakesRoomAndKeepsTheElements) {
     EXPECT_EQ(values[big - 1], big - 1);
 }
 
+// Room that, with the 24 bytes malloc adds, fills whole 2 MiB pages: such a block is mapped on a
+// huge-page boundary, so all of it can be huge pages (huge_pages.h).
+TEST(HugePages, WholeHugePagesRoomFillsThemWithMallocsBytes) {
+    constexpr std::size_t kHugePage = std::size_t{2} << 20;
+    struct Record {
+        char bytes[72];
+    };
+    for (const std::size_t n : {kHugePageWorthwhile / sizeof(Record) + 1, std::size_t{1'000'000},
+                                std::size_t{129'127}, (std::size_t{9} << 20) / sizeof(Record)}) {
+        const std::size_t room = huge_room<Record>(n);
+        EXPECT_GE(room, n);
+        const std::size_t bytes = room * sizeof(Record) + 24;
+        const std::size_t whole = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+        EXPECT_LT(whole - bytes, sizeof(Record)) << n;  // no room for one more
+        EXPECT_LT(room * sizeof(Record), n * sizeof(Record) + kHugePage) << n;
+    }
+    EXPECT_EQ(huge_room<std::uint32_t>(1000), 1000u);  // small room: as asked
+    struct alignas(64) Line {
+        char bytes[64];
+    };
+    EXPECT_EQ(huge_room<Line>(1'000'000), 1'000'000u);  // not malloc's usual block
+    EXPECT_EQ(huge_room<Record>(kHugePageWorthwhile / sizeof(Record)),
+              kHugePageWorthwhile / sizeof(Record));  // just under 4 MiB: as asked
+
+    std::vector<std::uint64_t> v{5, 6};
+    reserve_whole_huge_pages(v, 1'000'000);
+    EXPECT_EQ(v.capacity(), huge_room<std::uint64_t>(1'000'000));
+    EXPECT_EQ(v, (std::vector<std::uint64_t>{5, 6}));
+    reserve_whole_huge_pages(v, 10);  // never shrinks
+    EXPECT_EQ(v.capacity(), huge_room<std::uint64_t>(1'000'000));
+    std::vector<std::uint64_t> exact;
+    reserve_huge(exact, 1'000'000);  // an accelerator's: its capacity is its memory
+    EXPECT_EQ(exact.capacity(), 1'000'000u);
+}
+
 TEST(HugePages, ReserveHugeNeverShrinks) {
     std::vector<double> values(100, 1.5);
     values.reserve(1000);

@@ -183,7 +183,7 @@ void weld_vertices(SurfaceMesh& mesh, const std::string& name, Diagnostics& diag
     // Each vertex's place among the first vertices at each position, in order. Found before any
     // vertex moves: the table compares positions through the vertices' old places.
     std::vector<std::uint32_t> welded;
-    reserve_huge(welded, mesh.vertices.size());
+    reserve_whole_huge_pages(welded, mesh.vertices.size());
     welded.resize(mesh.vertices.size());
     std::uint32_t kept = 0;
     {

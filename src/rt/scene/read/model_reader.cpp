@@ -220,11 +220,11 @@ void ModelFlattener::add_mesh(const aiMesh& m, const NodeTransform& t) {
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
         corners += std::min<std::size_t>(m.mFaces[f].mNumIndices, kMaxEdgesPerPolygon + 1);
     }
-    reserve_huge(mesh_.vertices, mesh_.vertices.size() + m.mNumVertices);
-    reserve_huge(mesh_.polygons, mesh_.polygons.size() + m.mNumFaces);
-    reserve_huge(mesh_.corners, mesh_.corners.size() + corners);
+    reserve_whole_huge_pages(mesh_.vertices, mesh_.vertices.size() + m.mNumVertices);
+    reserve_whole_huge_pages(mesh_.polygons, mesh_.polygons.size() + m.mNumFaces);
+    reserve_whole_huge_pages(mesh_.corners, mesh_.corners.size() + corners);
     if (any_normals_ || m.HasNormals()) {
-        reserve_huge(mesh_.corner_normals, mesh_.corners.size() + corners);
+        reserve_whole_huge_pages(mesh_.corner_normals, mesh_.corners.size() + corners);
     }
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
         const aiVector3D& p = m.mVertices[v];

@@ -50,7 +50,7 @@ void check_shape_use(const Shape& s, PolygonMark mark, const SourceLocation& use
 template <class T>
 void reserve_more(std::vector<T>& v, std::size_t more) {
     if (v.capacity() - v.size() < more) {
-        reserve_huge(v, std::max(v.size() + more, 2 * v.capacity()));
+        reserve_whole_huge_pages(v, std::max(v.size() + more, 2 * v.capacity()));
     }
 }
 

@@ -9,7 +9,7 @@
 namespace rt {
 
 void compute_vertex_normals(Scene& scene) {
-    reserve_huge(scene.vertex_normals, scene.positions.size());
+    reserve_whole_huge_pages(scene.vertex_normals, scene.positions.size());
     scene.vertex_normals.assign(scene.positions.size(), Vec3{});
     for (const Polygon& p : scene.polygons) {
         if (!p.smooth) {
