@@ -34,10 +34,10 @@ void free_huge(void* data) noexcept;
 /// For the big arrays a build writes once (the BVH's references, nodes and packets): room of
 /// kHugeAllocation bytes or more starts on a 2 MiB boundary and fills whole huge pages.
 /// std::allocator's big blocks start wherever the system maps them, so advising them left their
-/// first and last 2 MiB in small pages, each faulted in on its own (reserve_huge's huge_room now
+/// first and last 2 MiB in small pages, each faulted in on its own (reserve_whole_huge_pages
 /// mends that where Linux maps a block of whole huge pages on a boundary), and arrays under 4 MiB
-/// were not advised at all. On the virtual machine we measure on, each first
-/// touch of a 4 KiB page costs about 10 us. Smaller room comes from std::allocator, and so do
+/// were not advised at all. On the virtual machine we measure on, each first touch of a 4 KiB
+/// page costs about 10 us. Smaller room comes from std::allocator, and so do
 /// the many short-lived arrays of a build's parts (bvh_builder.cpp says why).
 template <class T>
 class HugePageAllocator {
