@@ -17,6 +17,7 @@
 #include "rt/accel/bvh/bvh.h"
 #include "rt/accel/bvh/packet_lane.h"
 #include "rt/accel/bvh/packet_setup.h"
+#include "rt/accel/bvh/prefetch_child.h"
 #include "rt/accel/bvh/single_ray_walk.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/accel/lane_exact_hit.h"
@@ -38,6 +39,7 @@ namespace rt {
 namespace {
 
 using bvh::kLastPacketBit;
+using bvh::prefetch_child;
 using bvh::packet::bound_packet;
 using bvh::packet::ChildHits;
 using bvh::packet::children_packet_may_meet;
@@ -149,18 +151,6 @@ struct alignas(32) StackEntry {
     std::uint32_t child;
     std::uint32_t rays;
 };
-
-// Asks for a child's cache lines early, as the single ray's walk does: the packet waits on memory
-// more than on arithmetic.
-void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
-    const void* at = bvh::is_leaf(child)
-                         ? static_cast<const void*>(&tree.packets[first_packet(child)])
-                         : static_cast<const void*>(&inner_node(tree, child));
-    const int lines = bvh::is_leaf(child) ? 7 : 4;
-    for (int line = 0; line < lines; ++line) {
-        prefetch(static_cast<const char*>(at) + std::ptrdiff_t{64} * line);
-    }
-}
 
 // Sorts the met children nearest first by key (insertion sort: at most eight).
 void order_children(ChildHits* hits, int count) {

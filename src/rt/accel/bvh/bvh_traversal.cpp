@@ -13,10 +13,10 @@
 #include "rt/accel/bvh/bvh.h"
 #include "rt/accel/bvh/packet_pair_prefilter.h"
 #include "rt/accel/bvh/packet_prefilter.h"
+#include "rt/accel/bvh/prefetch_child.h"
 #include "rt/accel/bvh/single_ray_walk.h"
 #include "rt/accel/float_prefilter/fused_float8.h"
 #include "rt/accel/lane_exact_hit.h"
-#include "rt/core/prefetch.h"
 #include "rt/geometry/ray_polygon.h"
 
 namespace rt {
@@ -126,18 +126,6 @@ template <bool kAvx2, class Visit>
     }
 }
 
-// Asks for a child's first cache lines early: a ray spends much of its time waiting for memory.
-void prefetch_child(const bvh::Hierarchy& tree, std::uint32_t child) {
-    const char* at = bvh::is_leaf(child)
-                         ? reinterpret_cast<const char*>(&tree.packets[child & ~kLeafBit])
-                         : reinterpret_cast<const char*>(&tree.wide[child]);
-    // A wide node fills four cache lines; two packets reach into a seventh.
-    const int lines = bvh::is_leaf(child) ? 7 : 4;
-    for (int line = 0; line < lines; ++line) {
-        prefetch(at + std::ptrdiff_t{64} * line);
-    }
-}
-
 // Orders a pair by entry, nearest first, without a branch to mispredict.
 void order_pair(StackEntry& a, StackEntry& b) {
     const bool swap = b.entry < a.entry;
@@ -182,7 +170,7 @@ void order_pair(StackEntry& a, StackEntry& b) {
         }
     }
     for (int i = count - 1; i > 0; --i) {
-        prefetch_child(tree, c[i].child);
+        bvh::prefetch_child(tree, c[i].child);
         stack[size++] = c[i];
     }
     return c[0].child;

@@ -1,0 +1,32 @@
+// The cache lines a walk asks for when it pushes or enters a child, shared by the single ray's and
+// the packet's walks: a ray spends much of its time waiting for memory.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "rt/accel/bvh/bvh_layout.h"
+#include "rt/core/prefetch.h"
+
+namespace rt::bvh {
+
+constexpr std::ptrdiff_t kCacheLine = 64;
+/// A wide node's lines: all of it, boxes and child words.
+constexpr int kWideNodeLines = static_cast<int>(sizeof(WideNode) / kCacheLine);
+/// A leaf's first two packets, which the AVX2 pre-filter reads at once; packets start on a line.
+constexpr int kLeafLines = static_cast<int>(2 * sizeof(TrianglePacket) / kCacheLine);
+static_assert(alignof(WideNode) == kCacheLine && alignof(TrianglePacket) == kCacheLine,
+              "the counts above count on nodes and packets starting on a cache line");
+
+/// Asks for the lines of child word `child` (a wide node, or a leaf's first packet).
+inline void prefetch_child(const Hierarchy& tree, std::uint32_t child) {
+    const bool leaf = is_leaf(child);
+    const char* at = leaf ? reinterpret_cast<const char*>(&tree.packets[child & ~kLeafBit])
+                          : reinterpret_cast<const char*>(&tree.wide[child]);
+    const int lines = leaf ? kLeafLines : kWideNodeLines;
+    for (int line = 0; line < lines; ++line) {
+        prefetch(at + kCacheLine * line);
+    }
+}
+
+}  // namespace rt::bvh
