@@ -56,6 +56,23 @@ inline std::optional<double> lane_exact_hit(const RaySpace& space, const Scene& 
     return intersect_polygon(space, scene.polygon_view(id), t);
 }
 
+/// lane_exact_hit's answer, without the ray's RaySpace, for a lane whose fan triangle the float
+/// pre-filter found the ray's line surely crossing (float_ray.cpp, part 4) when that triangle is
+/// the whole polygon: the exact winding number is then nonzero, and plane_decides_crossing gives
+/// the rest. Returns false, deciding nothing, for a polygon of more corners (its fan triangle
+/// says nothing of its winding number) and where plane_decides_crossing does not decide.
+inline bool lane_sure_hit(const Ray& ray, const Scene& scene, const LaneCorners& position, int lane,
+                          std::uint32_t id, Interval t, std::optional<double>& hit) {
+    const Polygon& polygon = scene.polygons[id];
+    if (position.is_triangle(lane)) {
+        return plane_decides_crossing(ray, polygon.normal, scene.positions[position.first[lane]], t,
+                                      hit);
+    }
+    return polygon.corner_count == 3 &&
+           plane_decides_crossing(ray, polygon.normal,
+                                  scene.positions[scene.corners[polygon.first_corner]], t, hit);
+}
+
 /// plane_certainly_missed for polygon `id`, read from the scene: asked before the ray's RaySpace
 /// is made (once it is, the exact test asks the same at once), and only of a ray leaving a
 /// polygon. Such rays (reflections, shadow feelers) meet the plane of coplanar neighbours at

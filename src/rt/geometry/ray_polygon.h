@@ -141,6 +141,26 @@ inline bool plane_certainly_missed(const Ray& ray, const Vec3& normal, const Vec
            !(along > t.min && along < t.max);
 }
 
+/// The exact test's answer for a polygon whose projection the ray certainly crosses (its winding
+/// number is known to be nonzero, e.g. from a float pre-filter's sure verdict, float_ray.cpp part
+/// 4): away from edge-on that test returns the plane's t when it lies strictly inside `t` and
+/// misses otherwise, and so does this, with the same operations on the same values (plane_depth),
+/// without the ray's RaySpace or a corner's projection. Returns false, deciding nothing, near
+/// edge-on, for a NaN, and for a direction so long that RaySpace could not measure it (no test
+/// hits then); otherwise sets `hit`.
+inline bool plane_decides_crossing(const Ray& ray, const Vec3& normal, const Vec3& first_corner,
+                                   Interval t, std::optional<double>& hit) {
+    const Vec3& d = ray.direction;
+    const double denominator = dot(normal, d);
+    const double along = plane_depth(ray, normal, first_corner, denominator);
+    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    if (!(largest < 0x1p1000) || !certainly_not_edge_on(denominator, d) || !std::isfinite(along)) {
+        return false;
+    }
+    hit = along > t.min && along < t.max ? std::optional<double>(along) : std::nullopt;
+    return true;
+}
+
 /// Whether two normals are the same bit for bit: the exact test's denominators of two polygons are
 /// then the same for any ray, as plane groups need.
 inline bool same_normal_bits(const Vec3& a, const Vec3& b) {

@@ -104,8 +104,9 @@ void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) 
     }
 }
 
-// Calls visit(lane, packet, t, id) for each lane in `rays` and each of the leaf's fan triangles
-// the pre-filter cannot rule out for it, once per run of equal ids per lane. Lanes whose bit
+// Calls visit(lane, packet, t, id, sure) for each lane in `rays` and each of the leaf's fan
+// triangles the pre-filter cannot rule out for it, once per run of equal ids per lane; `sure` when
+// the pre-filter found the lane's line surely crossing that triangle. Lanes whose bit
 // visit clears in `rays` are asked no further.
 template <class Visit>
 [[gnu::always_inline]] inline void for_each_leaf_candidate(const bvh::PacketArray& packets,
@@ -122,8 +123,11 @@ template <class Visit>
         for (int t = 0; t < 4 && rays != 0; ++t) {
             const std::uint32_t id = packet.polygon[t] & ~kLastPacketBit;
             std::uint32_t candidates = 0;
+            std::uint32_t sure = 0;
             if (v.same_axes) {
-                candidates = triangle_rays(packet, t, v) & rays;
+                const bvh::FanVerdicts verdicts = triangle_rays(packet, t, v);
+                candidates = verdicts.maybe & rays;
+                sure = verdicts.sure;
             } else {
                 for (std::uint32_t r = rays; r != 0; r &= r - 1) {
                     const int lane = std::countr_zero(r);
@@ -136,7 +140,7 @@ template <class Visit>
                 const int lane = std::countr_zero(candidates);
                 if (lanes[lane].previous != id) {
                     lanes[lane].previous = id;
-                    visit(lane, packet, t, id);
+                    visit(lane, packet, t, id, ((sure >> lane) & 1u) != 0);
                 }
             }
         }
@@ -235,8 +239,9 @@ __attribute__((target("avx2"), flatten)) void nearest_for_packet(
             std::uint32_t found = 0;  // lanes whose nearest hit may have moved
             for_each_leaf_candidate(
                 tree.packets, scene, child, v, lanes, leaf_rays,
-                [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id) {
-                    if (lanes[lane].offer(scene, &packet, t, id, counters)) {
+                [&](int lane, const bvh::TrianglePacket& packet, int t, std::uint32_t id,
+                    bool sure) {
+                    if (lanes[lane].offer(scene, &packet, t, id, sure, counters)) {
                         found |= 1u << lane;
                     }
                 });
@@ -289,11 +294,11 @@ __attribute__((target("avx2"), flatten)) std::uint32_t blocked_in_packet(
             std::uint32_t leaf_rays = rays;
             for_each_leaf_candidate(
                 tree.packets, scene, e.child, v, lanes, leaf_rays,
-                [&](int lane, const bvh::TrianglePacket& p, int t, std::uint32_t id) {
+                [&](int lane, const bvh::TrianglePacket& p, int t, std::uint32_t id, bool sure) {
                     if ((open >> lane & 1u) == 0) {
                         return;
                     }
-                    if (lanes[lane].blocks(scene, p, t, id, packet.t[lane], counters)) {
+                    if (lanes[lane].blocks(scene, p, t, id, sure, packet.t[lane], counters)) {
                         open &= ~(1u << lane);
                         leaf_rays &= ~(1u << lane);
                     }
@@ -339,7 +344,7 @@ void Bvh::closest_hit_packet(const RayPacket& packet, PacketHits& hits,
             continue;
         }
         for (const std::uint32_t id : unbounded_) {
-            l.offer(scene_, nullptr, 0, id, counters);
+            l.offer(scene_, nullptr, 0, id, false, counters);
         }
         values.t_max[lane] = bvh::lane_scaled_up(values, lane, l.best().reach());
     }

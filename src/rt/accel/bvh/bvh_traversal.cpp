@@ -40,16 +40,24 @@ class NearestHit {
 public:
     NearestHit(const Ray& ray, Interval t) : ray_(ray), best_(t) {}
     void offer(const Scene& scene, std::uint32_t id, TraceCounters& counters) {
-        offer(scene, nullptr, 0, id, counters);
+        offer(scene, nullptr, 0, id, false, counters);
     }
-    /// With `packet` (may be null) the lane of `id` in it.
+    /// With `packet` (may be null) the lane of `id` in it, `sure` when the pre-filter found the
+    /// ray surely crossing that lane's triangle.
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
-               TraceCounters& counters) {
+               bool sure, TraceCounters& counters) {
         if (leaves_polygon(ray_, id)) {
             return;  // before the RaySpace: often the only polygon a ray leaving a surface meets
         }
         ++counters.polygon_tests;
         const Interval search = best_.search_interval();
+        std::optional<double> hit;
+        if (sure && lane_sure_hit(ray_, scene, packet->position, lane, id, search, hit)) {
+            if (hit) {
+                best_.offer(*hit, id);
+            }
+            return;
+        }
         if (!space_) {
             // Before the RaySpace, the plane alone (lane_exact_hit.h): a ray leaving a surface
             // beside coplanar neighbours, or a feeler ending on its light, often needs no other.
@@ -60,9 +68,8 @@ public:
             }
             space_.emplace(ray_);
         }
-        const std::optional<double> hit =
-            packet != nullptr ? lane_exact_hit(*space_, scene, packet->position, lane, id, search)
-                              : intersect_polygon(*space_, scene.polygon_view(id), search);
+        hit = packet != nullptr ? lane_exact_hit(*space_, scene, packet->position, lane, id, search)
+                                : intersect_polygon(*space_, scene.polygon_view(id), search);
         if (hit) {
             best_.offer(*hit, id);
         }
@@ -81,15 +88,16 @@ private:
 #define RT_BVH_AVX2 1
 const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
 
-// packet_candidates of two consecutive packets at once. Bits 4-7: the second.
-__attribute__((target("avx2"))) inline int pair_candidates_avx2(const bvh::TrianglePacket* packet,
-                                                                const FloatRay& ray) {
-    return static_cast<int>(bvh::fan_pair_candidates(packet[0].corner, packet[1].corner, ray));
+// packet_verdicts of two consecutive packets at once. Bits 4-7: the second.
+__attribute__((target("avx2"))) inline bvh::FanVerdicts pair_verdicts_avx2(
+    const bvh::TrianglePacket* packet, const FloatRay& ray) {
+    return bvh::fan_pair_verdicts(packet[0].corner, packet[1].corner, ray);
 }
 #endif
 
-// Calls visit(packet, lane, id) for each polygon of the leaf that the pre-filter cannot rule out,
-// once per run of equal ids (a polygon's fan triangles are adjacent). Stops early when visit
+// Calls visit(packet, lane, id, sure) for each polygon of the leaf that the pre-filter cannot
+// rule out, once per run of equal ids (a polygon's fan triangles are adjacent); `sure` when the
+// pre-filter found the ray's line surely crossing that fan triangle. Stops early when visit
 // returns true. With AVX2, two packets at a time.
 template <bool kAvx2, class Visit>
 [[gnu::always_inline]] inline bool for_each_candidate(const bvh::PacketArray& packets,
@@ -99,22 +107,33 @@ template <bool kAvx2, class Visit>
     for (std::uint32_t index = leaf & ~kLeafBit;;) {
         const bvh::TrianglePacket* packet = &packets[index];
         const bool last = (packet->polygon[3] & kLastPacketBit) != 0;
-        int bits = 0;
+        unsigned bits = 0;
+        unsigned sure = 0;
 #ifdef RT_BVH_AVX2
         const bool pair = kAvx2 && !last;
-        bits = pair ? pair_candidates_avx2(packet, ray) : bvh::packet_candidates(*packet, ray);
+        if (pair) {
+            const bvh::FanVerdicts verdicts = pair_verdicts_avx2(packet, ray);
+            bits = verdicts.maybe;
+            sure = verdicts.sure;
+        } else {
+            const bvh::FanVerdicts4 verdicts = bvh::packet_verdicts(*packet, ray);
+            bits = static_cast<unsigned>(verdicts.maybe);
+            sure = static_cast<unsigned>(verdicts.sure);
+        }
 #else
         const bool pair = false;
-        bits = bvh::packet_candidates(*packet, ray);
+        const bvh::FanVerdicts4 verdicts = bvh::packet_verdicts(*packet, ray);
+        bits = static_cast<unsigned>(verdicts.maybe);
+        sure = static_cast<unsigned>(verdicts.sure);
 #endif
         for (; bits != 0; bits &= bits - 1) {
-            const int bit = std::countr_zero(static_cast<unsigned>(bits));
+            const int bit = std::countr_zero(bits);
             const bvh::TrianglePacket& p = packet[bit >> 2];
             const int lane = bit & 3;
             const std::uint32_t id = p.polygon[lane] & ~kLastPacketBit;
             if (id != previous) {
                 previous = id;
-                if (visit(p, lane, id)) {
+                if (visit(p, lane, id, ((sure >> bit) & 1u) != 0)) {
                     return true;
                 }
             }
@@ -248,8 +267,8 @@ class NearestHitElsewhere {
 public:
     explicit NearestHitElsewhere(bvh::PacketLane& lane) : lane_(lane) {}
     void offer(const Scene& scene, const bvh::TrianglePacket* packet, int lane, std::uint32_t id,
-               TraceCounters& counters) {
-        lane_.offer(scene, packet, lane, id, counters);
+               bool sure, TraceCounters& counters) {
+        lane_.offer(scene, packet, lane, id, sure, counters);
     }
     double reach() { return lane_.best().reach(); }
 
@@ -284,8 +303,8 @@ template <bool kAvx2, class Nearest>
         if (child != bvh::kNoChild) {
             for_each_candidate<kAvx2>(
                 tree.packets, child, fray,
-                [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
-                    nearest.offer(scene, &packet, lane, id, counters);
+                [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id, bool sure) {
+                    nearest.offer(scene, &packet, lane, id, sure, counters);
                     return false;
                 });
             t_max = fray.scaled_up(nearest.reach());
@@ -439,11 +458,16 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     if (tree_.root == bvh::kNoChild) {
         return false;
     }
-    const auto blocks_lane = [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id) {
+    const auto blocks_lane = [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id,
+                                 bool sure) {
         if (leaves_polygon(ray, id)) {
             return false;
         }
         ++counters.polygon_tests;
+        std::optional<double> hit;
+        if (sure && lane_sure_hit(ray, scene_, packet.position, lane, id, t, hit)) {
+            return hit.has_value();
+        }
         if (!space) {
             if (lane_plane_certainly_missed(ray, scene_, packet.position, lane, id, t)) {
                 return false;

@@ -60,6 +60,12 @@ inline Mask4 operator<=(Float4 a, Float4 b) {
 inline Mask4 operator>=(Float4 a, Float4 b) {
     return {_mm_cmpge_ps(a.v, b.v)};
 }
+inline Mask4 operator<(Float4 a, Float4 b) {
+    return {_mm_cmplt_ps(a.v, b.v)};
+}
+inline Mask4 operator>(Float4 a, Float4 b) {
+    return {_mm_cmpgt_ps(a.v, b.v)};
+}
 inline Mask4 operator&(Mask4 a, Mask4 b) {
     return {_mm_and_ps(a.v, b.v)};
 }
@@ -142,6 +148,12 @@ inline Mask4 operator<=(Float4 a, Float4 b) {
 }
 inline Mask4 operator>=(Float4 a, Float4 b) {
     return compare(a, b, [](float x, float y) { return x >= y; });
+}
+inline Mask4 operator<(Float4 a, Float4 b) {
+    return compare(a, b, [](float x, float y) { return x < y; });
+}
+inline Mask4 operator>(Float4 a, Float4 b) {
+    return compare(a, b, [](float x, float y) { return x > y; });
 }
 inline Mask4 operator&(Mask4 a, Mask4 b) {
     return {{a.v[0] && b.v[0], a.v[1] && b.v[1], a.v[2] && b.v[2], a.v[3] && b.v[3]}};

@@ -48,14 +48,23 @@ public:
     /// hit, as the single ray's walk does: nothing for the polygon the ray leaves, and before
     /// the ray's first exact test the plane alone (lane_exact_hit.h), which a feeler ending on
     /// its light or a ray leaving a surface beside coplanar neighbours often needs alone.
+    /// `sure` when the pre-filter found the ray surely crossing the lane's triangle: a triangle
+    /// polygon is then decided by its plane alone (lane_sure_hit).
     /// Returns whether the exact test found a hit (the nearest so far may then have moved).
-    bool offer(const Scene& scene, const TrianglePacket* packet, int t, std::uint32_t id,
+    bool offer(const Scene& scene, const TrianglePacket* packet, int t, std::uint32_t id, bool sure,
                TraceCounters& counters) {
         if (leaves_polygon(*ray_, id)) {
             return false;
         }
         ++counters.polygon_tests;
         const Interval search = best_.search_interval();
+        std::optional<double> hit;
+        if (sure && lane_sure_hit(*ray_, scene, packet->position, t, id, search, hit)) {
+            if (hit) {
+                best_.offer(*hit, id);
+            }
+            return hit.has_value();
+        }
         if (!has_space_) {
             if (packet != nullptr
                     ? lane_plane_certainly_missed(*ray_, scene, packet->position, t, id, search)
@@ -63,9 +72,8 @@ public:
                 return false;
             }
         }
-        const std::optional<double> hit =
-            packet != nullptr ? lane_exact_hit(space(), scene, packet->position, t, id, search)
-                              : intersect_polygon(space(), scene.polygon_view(id), search);
+        hit = packet != nullptr ? lane_exact_hit(space(), scene, packet->position, t, id, search)
+                                : intersect_polygon(space(), scene.polygon_view(id), search);
         if (hit) {
             best_.offer(*hit, id);
         }
@@ -74,11 +82,15 @@ public:
     /// Whether polygon `id` blocks the ray within the interval `t` (occlusion), with the same
     /// plane test first.
     bool blocks(const Scene& scene, const TrianglePacket& packet, int lane, std::uint32_t id,
-                Interval t, TraceCounters& counters) {
+                bool sure, Interval t, TraceCounters& counters) {
         if (leaves_polygon(*ray_, id)) {
             return false;
         }
         ++counters.polygon_tests;
+        std::optional<double> hit;
+        if (sure && lane_sure_hit(*ray_, scene, packet.position, lane, id, t, hit)) {
+            return hit.has_value();
+        }
         if (!has_space_ &&
             lane_plane_certainly_missed(*ray_, scene, packet.position, lane, id, t)) {
             return false;

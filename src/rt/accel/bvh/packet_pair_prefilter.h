@@ -24,14 +24,24 @@ __attribute__((target("avx2"))) inline __m256 load_fan_pair(const FanCorners& fi
     return _mm256_set_m128(_mm_loadu_ps(second[v][axis]), _mm_loadu_ps(first[v][axis]));
 }
 
+/// A pre-filter's verdicts on eight triangles (lane k, bit k): `maybe`, the ray may hit it and
+/// the exact test decides; `sure`, a subset, the ray's line surely crosses it (float_ray.cpp, part
+/// 4), so that for a triangle polygon the exact test's winding number is nonzero.
+struct FanVerdicts {
+    unsigned maybe;
+    unsigned sure;
+};
+
 /// The last step of every eight-wide fan-triangle pre-filter, from the corners in the ray's sheared
 /// 2D space (x, y) and their largest coordinate (size): the three edge functions, the margin
 /// (size * (linear + size * slack) + constant) and the all-positive or all-negative test, lane
-/// for lane fan_candidates' operations. Bit k: lane k's triangle may be hit.
-__attribute__((target("avx2"))) inline unsigned fan_edge_candidates(const __m256 (&x)[3],
-                                                                    const __m256 (&y)[3],
-                                                                    __m256 size, __m256 edge_linear,
-                                                                    __m256 edge_constant) {
+/// for lane fan_candidates' operations; the sure verdicts ask the same beyond the margin, and only
+/// when some lane may be hit.
+__attribute__((target("avx2"))) inline FanVerdicts fan_edge_verdicts(const __m256 (&x)[3],
+                                                                     const __m256 (&y)[3],
+                                                                     __m256 size,
+                                                                     __m256 edge_linear,
+                                                                     __m256 edge_constant) {
     const __m256 e0 = fused::mul_sub(x[1], y[2], _mm256_mul_ps(y[1], x[2]));
     const __m256 e1 = fused::mul_sub(x[2], y[0], _mm256_mul_ps(y[2], x[0]));
     const __m256 e2 = fused::mul_sub(x[0], y[1], _mm256_mul_ps(y[0], x[1]));
@@ -45,13 +55,35 @@ __attribute__((target("avx2"))) inline unsigned fan_edge_candidates(const __m256
     const __m256 all_negative = _mm256_and_ps(
         _mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_LE_OQ), _mm256_cmp_ps(e1, margin, _CMP_LE_OQ)),
         _mm256_cmp_ps(e2, margin, _CMP_LE_OQ));
-    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative)));
+    FanVerdicts verdicts{
+        static_cast<unsigned>(_mm256_movemask_ps(_mm256_or_ps(all_positive, all_negative))), 0u};
+    if (verdicts.maybe != 0) {
+        const __m256 surely_positive =
+            _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, margin, _CMP_GT_OQ),
+                                        _mm256_cmp_ps(e1, margin, _CMP_GT_OQ)),
+                          _mm256_cmp_ps(e2, margin, _CMP_GT_OQ));
+        const __m256 surely_negative =
+            _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(e0, negative_margin, _CMP_LT_OQ),
+                                        _mm256_cmp_ps(e1, negative_margin, _CMP_LT_OQ)),
+                          _mm256_cmp_ps(e2, negative_margin, _CMP_LT_OQ));
+        verdicts.sure = static_cast<unsigned>(
+            _mm256_movemask_ps(_mm256_or_ps(surely_positive, surely_negative)));
+    }
+    return verdicts;
 }
 
-/// Bits 0-3: fan_candidates(first, ray); bits 4-7: fan_candidates(second, ray).
-__attribute__((target("avx2"))) inline unsigned fan_pair_candidates(const FanCorners& first,
-                                                                    const FanCorners& second,
-                                                                    const FloatRay& ray) {
+/// fan_edge_verdicts' `maybe` alone.
+__attribute__((target("avx2"))) inline unsigned fan_edge_candidates(const __m256 (&x)[3],
+                                                                    const __m256 (&y)[3],
+                                                                    __m256 size, __m256 edge_linear,
+                                                                    __m256 edge_constant) {
+    return fan_edge_verdicts(x, y, size, edge_linear, edge_constant).maybe;
+}
+
+/// Bits 0-3: fan_verdicts(first, ray); bits 4-7: fan_verdicts(second, ray).
+__attribute__((target("avx2"))) inline FanVerdicts fan_pair_verdicts(const FanCorners& first,
+                                                                     const FanCorners& second,
+                                                                     const FloatRay& ray) {
     const __m256 ox = _mm256_set1_ps(ray.origin[ray.kx]);
     const __m256 oy = _mm256_set1_ps(ray.origin[ray.ky]);
     const __m256 oz = _mm256_set1_ps(ray.origin[ray.kz]);
@@ -68,8 +100,16 @@ __attribute__((target("avx2"))) inline unsigned fan_pair_candidates(const FanCor
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[v]), _mm256_andnot_ps(sign, y[v])));
     }
-    return fan_edge_candidates(x, y, size, _mm256_set1_ps(ray.edge_margin_linear),
-                               _mm256_set1_ps(ray.edge_margin_constant));
+    return fan_edge_verdicts(x, y, size, _mm256_set1_ps(ray.edge_margin_linear),
+                             _mm256_set1_ps(ray.edge_margin_constant));
+}
+
+/// fan_pair_verdicts' `maybe` alone: bits 0-3 fan_candidates(first, ray), bits 4-7
+/// fan_candidates(second, ray).
+__attribute__((target("avx2"))) inline unsigned fan_pair_candidates(const FanCorners& first,
+                                                                    const FanCorners& second,
+                                                                    const FloatRay& ray) {
+    return fan_pair_verdicts(first, second, ray).maybe;
 }
 
 }  // namespace rt::bvh

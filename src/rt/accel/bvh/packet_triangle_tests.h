@@ -20,9 +20,10 @@
 namespace rt::bvh::packet {
 
 // One fan triangle (lane `t` of `packet`) against the eight rays, in their common axes: lane for
-// lane triangle_candidate's operations (triangle_prefilter.h). Bit k: lane k may hit it.
-__attribute__((target("avx2"))) inline std::uint32_t triangle_rays(const TrianglePacket& packet,
-                                                                   int t, const PacketValues& v) {
+// lane triangle_candidate's operations (triangle_prefilter.h). Bit k of `maybe`: lane k may hit
+// it; of `sure`: lane k's line surely crosses it (float_ray.cpp, part 4).
+__attribute__((target("avx2"))) inline FanVerdicts triangle_rays(const TrianglePacket& packet,
+                                                                 int t, const PacketValues& v) {
     const int kx = v.kx[0];
     const int ky = v.ky[0];
     const int kz = v.kz[0];
@@ -42,8 +43,8 @@ __attribute__((target("avx2"))) inline std::uint32_t triangle_rays(const Triangl
         size = _mm256_max_ps(
             size, _mm256_max_ps(_mm256_andnot_ps(sign, x[c]), _mm256_andnot_ps(sign, y[c])));
     }
-    return fan_edge_candidates(x, y, size, _mm256_load_ps(v.edge_linear),
-                               _mm256_load_ps(v.edge_constant));
+    return fan_edge_verdicts(x, y, size, _mm256_load_ps(v.edge_linear),
+                             _mm256_load_ps(v.edge_constant));
 }
 
 // triangle_rays for one lane in its own axes: triangle_candidate's operations

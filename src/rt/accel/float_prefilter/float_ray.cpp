@@ -51,6 +51,16 @@
 //    the origin): rejecting needs the float E's to have mixed signs beyond
 //    8 eps L + 2^-20 L^2 + 8 eps^2.
 //
+// 4. Sure crossings. The same bound read the other way: when every float E is above that margin
+//    (or every one below minus it), every double E is strictly positive (or negative), so the
+//    origin lies strictly inside the triangle as projected in double, and so does the exact
+//    test's displaced ray: for a polygon that is this triangle, the exact winding number is
+//    nonzero. The exact test's answer is then its plane's t alone, when the plane is met away
+//    from edge-on (plane_decides_crossing, geometry/ray_polygon.h), and the walks take it so
+//    without the ray's RaySpace. Both the BVH's leaves and its packets' lanes ask it
+//    (bvh/packet_pair_prefilter.h); a fan triangle of a polygon of more corners says nothing of
+//    the polygon's winding number and is always tested exactly.
+//
 // The set-up that computes these bounds is in float_ray_inl.h.
 #include "rt/accel/float_prefilter/float_ray.h"
 

@@ -71,10 +71,19 @@ inline unsigned always_lanes(const CellPacket& packet) {
 #endif
 }
 
-/// Bit k set: lane k's triangle may be hit by the ray (usable), or lane k is marked "always".
-// Lane for lane the operations of triangle_candidate (float_prefilter/triangle_prefilter.h).
+/// Bit k set in `maybe`: lane k's triangle may be hit by the ray (usable), or lane k is marked
+/// "always"; in `sure`: the ray's line surely crosses lane k's triangle (float_ray.cpp, part 4),
+/// never for an "always" lane. Lane for lane the operations of triangle_candidate
+/// (float_prefilter/triangle_prefilter.h).
+inline bvh::FanVerdicts4 cell_packet_verdicts(const CellPacket& packet, const FloatRay& ray) {
+    const auto always = static_cast<int>(always_lanes(packet));
+    const bvh::FanVerdicts4 verdicts = bvh::fan_verdicts(packet.corner, ray);
+    return {verdicts.maybe | always, verdicts.sure & ~always};
+}
+
+/// cell_packet_verdicts' `maybe` alone.
 inline int cell_packet_candidates(const CellPacket& packet, const FloatRay& ray) {
-    return bvh::fan_candidates(packet.corner, ray) | static_cast<int>(always_lanes(packet));
+    return cell_packet_verdicts(packet, ray).maybe;
 }
 
 /// CellView::plane_polygon of a cell with no plane group in front.

@@ -100,18 +100,24 @@ public:
     }
 
 protected:
-    /// Calls test(id, packet.position, lane) for each polygon of a voxel's packets that passes
-    /// the sieve, counting the test, until test returns true; returns whether one did. The float
-    /// test rejects four fan triangles at a time; a polygon with a lane left is tested once (and,
-    /// for a lane marked "always", or a ray the float test cannot serve, after its box look).
+    /// Calls test(id, packet.position, lane, sure) for each polygon of a voxel's packets that
+    /// passes the sieve, counting the test, until test returns true; returns whether one did. The
+    /// float test rejects four fan triangles at a time; a polygon with a lane left is tested once
+    /// (and, for a lane marked "always", or a ray the float test cannot serve, after its box
+    /// look). `sure` when the float test found the ray's line surely crossing the lane's triangle.
     template <class Test>
     bool test_packets(std::span<const CellPacket> packets, Test&& test) {
         const FloatRay& ray = triangle_.get();
         for (const CellPacket& packet : packets) {
-            const unsigned lanes = ray.usable
-                                       ? static_cast<unsigned>(cell_packet_candidates(packet, ray))
-                                       : used_lanes(packet);
-            if (test_lanes(packet, lanes, test)) {
+            if (!ray.usable) {
+                if (test_lanes(packet, used_lanes(packet), 0u, test)) {
+                    return true;
+                }
+                continue;
+            }
+            const bvh::FanVerdicts4 verdicts = cell_packet_verdicts(packet, ray);
+            if (test_lanes(packet, static_cast<unsigned>(verdicts.maybe),
+                           static_cast<unsigned>(verdicts.sure), test)) {
                 return true;
             }
         }
@@ -130,15 +136,19 @@ protected:
         const CellPacket* packet = packets.data();
         const CellPacket* const end = packet + packets.size();
         for (; end - packet >= 2; packet += 2) {
-            const unsigned lanes = cell_pair_candidates(packet, ray);
-            if (lanes != 0 && (test_lanes(packet[0], lanes & 0xfu, test) ||
-                               test_lanes(packet[1], lanes >> 4, test))) {
+            const bvh::FanVerdicts verdicts = cell_pair_verdicts(packet, ray);
+            if (verdicts.maybe != 0 &&
+                (test_lanes(packet[0], verdicts.maybe & 0xfu, verdicts.sure & 0xfu, test) ||
+                 test_lanes(packet[1], verdicts.maybe >> 4, verdicts.sure >> 4, test))) {
                 return true;
             }
         }
-        return packet != end &&
-               test_lanes(*packet, static_cast<unsigned>(cell_packet_candidates(*packet, ray)),
-                          test);
+        if (packet == end) {
+            return false;
+        }
+        const bvh::FanVerdicts4 verdicts = cell_packet_verdicts(*packet, ray);
+        return test_lanes(*packet, static_cast<unsigned>(verdicts.maybe),
+                          static_cast<unsigned>(verdicts.sure), test);
     }
 #endif
 
@@ -167,15 +177,24 @@ protected:
         return !space_ && lane_plane_certainly_missed(ray_, scene_, position, lane, id, t);
     }
 
+    /// lane_sure_hit for a lane the float test found the ray surely crossing: true when it
+    /// decided the exact test's answer, which is then in `hit`.
+    bool decided_surely(const LaneCorners& position, int lane, std::uint32_t id, Interval t,
+                        std::optional<double>& hit) const {
+        return lane_sure_hit(ray_, scene_, position, lane, id, t, hit);
+    }
+
 private:
     const Ray& ray_;
     double scale_;
     double t_min_;
     std::optional<RaySpace> space_;
 
-    // The polygons of the packet's `lanes` (those the float test kept, or every used one).
+    // The polygons of the packet's `lanes` (those the float test kept, or every used one), `sure`
+    // those it found the ray surely crossing.
     template <class Test>
-    [[gnu::always_inline]] bool test_lanes(const CellPacket& packet, unsigned lanes, Test& test) {
+    [[gnu::always_inline]] bool test_lanes(const CellPacket& packet, unsigned lanes, unsigned sure,
+                                           Test& test) {
         const bool usable = triangle_.get().usable;
         for (; lanes != 0; lanes &= lanes - 1) {
             const int lane = __builtin_ctz(lanes);
@@ -187,7 +206,7 @@ private:
                 continue;
             }
             ++counters_.polygon_tests;
-            if (test(id, packet.position, lane)) {
+            if (test(id, packet.position, lane, ((sure >> lane) & 1u) != 0)) {
                 return true;
             }
         }
@@ -210,14 +229,20 @@ private:
     // The exact test of one polygon, offering its hit. Polygons arrive in voxel order, not id
     // order: the tie rule picks among equal t.
     auto offer_to_nearest() {
-        return [this](std::uint32_t id, const LaneCorners& position, int lane)
+        return [this](std::uint32_t id, const LaneCorners& position, int lane, bool sure)
             __attribute__((always_inline)) {
             const Interval within = nearest_.search_interval();
+            std::optional<double> t;
+            if (sure && decided_surely(position, lane, id, within, t)) {
+                if (t) {
+                    nearest_.offer(*t, id);
+                }
+                return false;
+            }
             if (missed_before_space(position, lane, id, within)) {
                 return false;
             }
-            if (const std::optional<double> t =
-                    lane_exact_hit(space(), scene_, position, lane, id, within)) {
+            if ((t = lane_exact_hit(space(), scene_, position, lane, id, within))) {
                 nearest_.offer(*t, id);
             }
             return false;
@@ -239,8 +264,12 @@ public:
 
 private:
     auto hit_within() {
-        return [this](std::uint32_t id, const LaneCorners& position, int lane)
+        return [this](std::uint32_t id, const LaneCorners& position, int lane, bool sure)
             __attribute__((always_inline)) {
+            std::optional<double> hit;
+            if (sure && decided_surely(position, lane, id, t_, hit)) {
+                return hit.has_value();
+            }
             return !missed_before_space(position, lane, id, t_) &&
                    lane_exact_hit(space(), scene_, position, lane, id, t_).has_value();
         };
