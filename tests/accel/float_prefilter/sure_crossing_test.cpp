@@ -119,8 +119,8 @@ TEST(SureCrossing, ASureLaneIsKeptAndItsWindingNumberIsNotZero) {
             lane_triangle[lane] = lane == 0 ? aimed : rng() % triangles.size();
             put_lane(corner, lane, triangles[lane_triangle[lane]]);
         }
-        const bvh::FanVerdicts4 verdicts = bvh::fan_verdicts(corner, float_ray);
-        ASSERT_EQ(verdicts.sure & ~verdicts.maybe, 0) << "case " << i;
+        const bvh::FanVerdicts verdicts = bvh::fan_verdicts(corner, float_ray);
+        ASSERT_EQ(verdicts.sure & ~verdicts.maybe, 0u) << "case " << i;
         for (int lane = 0; lane < 4; ++lane) {
             const bool is_sure = ((verdicts.sure >> lane) & 1) != 0;
             if (is_sure) {
@@ -138,12 +138,12 @@ TEST(SureCrossing, ASureLaneIsKeptAndItsWindingNumberIsNotZero) {
                 put_lane(second, lane, triangles[lane_triangle[3 - lane]]);
             }
             const bvh::FanVerdicts pair = bvh::fan_pair_verdicts(corner, second, float_ray);
-            const bvh::FanVerdicts4 second_alone = bvh::fan_verdicts(second, float_ray);
+            const bvh::FanVerdicts second_alone = bvh::fan_verdicts(second, float_ray);
             // The eight-wide form gives each lane the four-wide form's verdicts.
-            ASSERT_EQ(pair.maybe & 0xfu, static_cast<unsigned>(verdicts.maybe)) << "case " << i;
-            ASSERT_EQ(pair.sure & 0xfu, static_cast<unsigned>(verdicts.sure)) << "case " << i;
-            ASSERT_EQ(pair.maybe >> 4, static_cast<unsigned>(second_alone.maybe)) << "case " << i;
-            ASSERT_EQ(pair.sure >> 4, static_cast<unsigned>(second_alone.sure)) << "case " << i;
+            ASSERT_EQ(pair.maybe & 0xfu, verdicts.maybe) << "case " << i;
+            ASSERT_EQ(pair.sure & 0xfu, verdicts.sure) << "case " << i;
+            ASSERT_EQ(pair.maybe >> 4, second_alone.maybe) << "case " << i;
+            ASSERT_EQ(pair.sure >> 4, second_alone.sure) << "case " << i;
         }
 #endif
     }

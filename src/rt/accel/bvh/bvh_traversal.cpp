@@ -107,25 +107,16 @@ template <bool kAvx2, class Visit>
     for (std::uint32_t index = leaf & ~kLeafBit;;) {
         const bvh::TrianglePacket* packet = &packets[index];
         const bool last = (packet->polygon[3] & kLastPacketBit) != 0;
-        unsigned bits = 0;
-        unsigned sure = 0;
 #ifdef RT_BVH_AVX2
         const bool pair = kAvx2 && !last;
-        if (pair) {
-            const bvh::FanVerdicts verdicts = pair_verdicts_avx2(packet, ray);
-            bits = verdicts.maybe;
-            sure = verdicts.sure;
-        } else {
-            const bvh::FanVerdicts4 verdicts = bvh::packet_verdicts(*packet, ray);
-            bits = static_cast<unsigned>(verdicts.maybe);
-            sure = static_cast<unsigned>(verdicts.sure);
-        }
+        const bvh::FanVerdicts verdicts =
+            pair ? pair_verdicts_avx2(packet, ray) : bvh::packet_verdicts(*packet, ray);
 #else
         const bool pair = false;
-        const bvh::FanVerdicts4 verdicts = bvh::packet_verdicts(*packet, ray);
-        bits = static_cast<unsigned>(verdicts.maybe);
-        sure = static_cast<unsigned>(verdicts.sure);
+        const bvh::FanVerdicts verdicts = bvh::packet_verdicts(*packet, ray);
 #endif
+        unsigned bits = verdicts.maybe;
+        const unsigned sure = verdicts.sure;
         for (; bits != 0; bits &= bits - 1) {
             const int bit = std::countr_zero(bits);
             const bvh::TrianglePacket& p = packet[bit >> 2];

@@ -9,6 +9,7 @@
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
 #define RT_PACKET_PAIR_AVX2 1
 
+#include "rt/accel/bvh/packet_prefilter.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 #include "rt/accel/float_prefilter/fused_float8.h"
 
@@ -23,14 +24,6 @@ __attribute__((target("avx2"))) inline __m256 load_fan_pair(const FanCorners& fi
                                                             int axis) {
     return _mm256_set_m128(_mm_loadu_ps(second[v][axis]), _mm_loadu_ps(first[v][axis]));
 }
-
-/// A pre-filter's verdicts on eight triangles (lane k, bit k): `maybe`, the ray may hit it and
-/// the exact test decides; `sure`, a subset, the ray's line surely crosses it (float_ray.cpp, part
-/// 4), so that for a triangle polygon the exact test's winding number is nonzero.
-struct FanVerdicts {
-    unsigned maybe;
-    unsigned sure;
-};
 
 /// The last step of every eight-wide fan-triangle pre-filter, from the corners in the ray's sheared
 /// 2D space (x, y) and their largest coordinate (size): the three edge functions, the margin

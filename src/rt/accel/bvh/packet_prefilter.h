@@ -9,15 +9,16 @@
 
 namespace rt::bvh {
 
-/// Bit k set in `maybe`: lane k's triangle, corner[vertex][axis][lane], may be hit; in `sure`
-/// (a subset), the ray's line surely crosses it (float_ray.cpp, part 4). The eight-wide form's
-/// FanVerdicts (packet_pair_prefilter.h), four lanes wide.
-struct FanVerdicts4 {
-    int maybe;
-    int sure;
+/// A pre-filter's verdicts on four or eight triangles (lane k, bit k): `maybe`, the ray may hit
+/// it and the exact test decides; `sure`, a subset, the ray's line surely crosses it
+/// (float_ray.cpp, part 4), so that for a triangle polygon the exact winding number is nonzero.
+struct FanVerdicts {
+    unsigned maybe;
+    unsigned sure;
 };
 
-inline FanVerdicts4 fan_verdicts(const float (&corner)[3][3][4], const FloatRay& ray) {
+/// The verdicts on lane k's triangle, corner[vertex][axis][lane].
+inline FanVerdicts fan_verdicts(const float (&corner)[3][3][4], const FloatRay& ray) {
     using simd::Float4;
     const Float4 ox = Float4::broadcast(ray.origin[ray.kx]);
     const Float4 oy = Float4::broadcast(ray.origin[ray.ky]);
@@ -44,12 +45,12 @@ inline FanVerdicts4 fan_verdicts(const float (&corner)[3][3][4], const FloatRay&
     const simd::Mask4 all_positive =
         (e0 >= negative_margin) & (e1 >= negative_margin) & (e2 >= negative_margin);
     const simd::Mask4 all_negative = (e0 <= margin) & (e1 <= margin) & (e2 <= margin);
-    FanVerdicts4 verdicts{(all_positive | all_negative).bits(), 0};
+    FanVerdicts verdicts{static_cast<unsigned>((all_positive | all_negative).bits()), 0u};
     if (verdicts.maybe != 0) {
         const simd::Mask4 surely_positive = (e0 > margin) & (e1 > margin) & (e2 > margin);
         const simd::Mask4 surely_negative =
             (e0 < negative_margin) & (e1 < negative_margin) & (e2 < negative_margin);
-        verdicts.sure = (surely_positive | surely_negative).bits();
+        verdicts.sure = static_cast<unsigned>((surely_positive | surely_negative).bits());
     }
     return verdicts;
 }
@@ -58,7 +59,7 @@ inline FanVerdicts4 fan_verdicts(const float (&corner)[3][3][4], const FloatRay&
 /// Shared by the BVH's leaf packets and the voxel methods' cell packets (voxel/cell_packets.h),
 /// which lay their corners out alike.
 inline int fan_candidates(const float (&corner)[3][3][4], const FloatRay& ray) {
-    return fan_verdicts(corner, ray).maybe;
+    return static_cast<int>(fan_verdicts(corner, ray).maybe);
 }
 
 /// Bit k set: lane k's triangle may be hit.
@@ -66,7 +67,7 @@ inline int packet_candidates(const TrianglePacket& packet, const FloatRay& ray) 
     return fan_candidates(packet.corner, ray);
 }
 
-inline FanVerdicts4 packet_verdicts(const TrianglePacket& packet, const FloatRay& ray) {
+inline FanVerdicts packet_verdicts(const TrianglePacket& packet, const FloatRay& ray) {
     return fan_verdicts(packet.corner, ray);
 }
 

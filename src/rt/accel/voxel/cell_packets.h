@@ -75,15 +75,15 @@ inline unsigned always_lanes(const CellPacket& packet) {
 /// "always"; in `sure`: the ray's line surely crosses lane k's triangle (float_ray.cpp, part 4),
 /// never for an "always" lane. Lane for lane the operations of triangle_candidate
 /// (float_prefilter/triangle_prefilter.h).
-inline bvh::FanVerdicts4 cell_packet_verdicts(const CellPacket& packet, const FloatRay& ray) {
-    const auto always = static_cast<int>(always_lanes(packet));
-    const bvh::FanVerdicts4 verdicts = bvh::fan_verdicts(packet.corner, ray);
+inline bvh::FanVerdicts cell_packet_verdicts(const CellPacket& packet, const FloatRay& ray) {
+    const unsigned always = always_lanes(packet);
+    const bvh::FanVerdicts verdicts = bvh::fan_verdicts(packet.corner, ray);
     return {verdicts.maybe | always, verdicts.sure & ~always};
 }
 
 /// cell_packet_verdicts' `maybe` alone.
 inline int cell_packet_candidates(const CellPacket& packet, const FloatRay& ray) {
-    return cell_packet_verdicts(packet, ray).maybe;
+    return static_cast<int>(cell_packet_verdicts(packet, ray).maybe);
 }
 
 /// CellView::plane_polygon of a cell with no plane group in front.

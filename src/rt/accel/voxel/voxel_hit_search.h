@@ -115,9 +115,8 @@ protected:
                 }
                 continue;
             }
-            const bvh::FanVerdicts4 verdicts = cell_packet_verdicts(packet, ray);
-            if (test_lanes(packet, static_cast<unsigned>(verdicts.maybe),
-                           static_cast<unsigned>(verdicts.sure), test)) {
+            const bvh::FanVerdicts verdicts = cell_packet_verdicts(packet, ray);
+            if (test_lanes(packet, verdicts.maybe, verdicts.sure, test)) {
                 return true;
             }
         }
@@ -146,9 +145,8 @@ protected:
         if (packet == end) {
             return false;
         }
-        const bvh::FanVerdicts4 verdicts = cell_packet_verdicts(*packet, ray);
-        return test_lanes(*packet, static_cast<unsigned>(verdicts.maybe),
-                          static_cast<unsigned>(verdicts.sure), test);
+        const bvh::FanVerdicts verdicts = cell_packet_verdicts(*packet, ray);
+        return test_lanes(*packet, verdicts.maybe, verdicts.sure, test);
     }
 #endif
 
