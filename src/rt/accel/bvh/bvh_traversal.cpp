@@ -344,6 +344,7 @@ template <bool kAvx2, class Nearest>
     std::array<StackEntry, kStackSize> stack;  // NOLINT(cppcoreguidelines-pro-type-member-init)
     int size = 0;
     std::uint32_t child = start;
+    bool first_leaf = true;
     for (;;) {
         while (child != bvh::kNoChild && !bvh::is_leaf(child)) {
             ++counters.nodes_visited;
@@ -352,6 +353,10 @@ template <bool kAvx2, class Nearest>
             child = descend<kAvx2>(tree, node, hits, stack.data(), size);
         }
         if (child != bvh::kNoChild) {
+            if (first_leaf) {
+                bvh::prefetch_leaf_polygons(tree, scene, child);
+                first_leaf = false;
+            }
             for_each_candidate<kAvx2>(
                 tree.packets, child, fray,
                 [&](const bvh::TrianglePacket& packet, int lane, std::uint32_t id, bool sure) {
