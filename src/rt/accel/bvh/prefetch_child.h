@@ -31,17 +31,22 @@ inline void prefetch_child(const Hierarchy& tree, std::uint32_t child) {
 }
 
 /// Asks for the scene's record of each polygon in the first two packets of `leaf` (a child word
-/// with kLeafBit), whose normal the exact test and the sure crossing's plane read first. Asked for
-/// the first leaf a single ray enters, its pre-filter's work done while the records come: on a
-/// closed mesh that leaf usually holds the hit, whose record otherwise missed the cache once the
-/// pre-filter had found it (docs/lab/leaf-records-2026-12-07.md). Not for every leaf: on a soup
-/// most leaves hold no candidate, and their records' lines cost more than they save.
+/// with kLeafBit), and for a triangle lane its first corner's position: the normal and the point
+/// the exact test and the sure crossing's plane read first. Asked for the first leaf a single ray
+/// enters, its pre-filter's work done while they come: on a closed mesh that leaf usually holds
+/// the hit, whose record and corner otherwise missed the cache once the pre-filter had found it
+/// (docs/lab/leaf-records-2026-12-07.md). Not for every leaf: on a soup most leaves hold no
+/// candidate, and their records' lines cost more than they save.
 inline void prefetch_leaf_polygons(const Hierarchy& tree, const Scene& scene, std::uint32_t leaf) {
     const TrianglePacket* packet = &tree.packets[leaf & ~kLeafBit];
     const int packets = (packet->polygon[3] & kLastPacketBit) != 0 ? 1 : 2;
     for (int p = 0; p < packets; ++p) {
-        for (const std::uint32_t word : packet[p].polygon) {
-            prefetch(&scene.polygons[word & ~kLastPacketBit].normal);
+        for (int lane = 0; lane < 4; ++lane) {
+            prefetch(&scene.polygons[packet[p].polygon[lane] & ~kLastPacketBit].normal);
+            const std::uint32_t first = packet[p].position.first[lane];
+            if (first != kNotTriangle) {
+                prefetch(&scene.positions[first]);
+            }
         }
     }
 }
