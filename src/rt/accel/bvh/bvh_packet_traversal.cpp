@@ -90,20 +90,6 @@ void fill_inactive_lanes(PacketValues& v, std::uint32_t active) {
     }
 }
 
-// Asks for what the exact tests of a packet's triangles read (the polygon records and the
-// triangles' corners) while the pre-filter runs: they are scattered through the scene, and the
-// exact test otherwise waits for them.
-void prefetch_exact_data(const Scene& scene, const bvh::TrianglePacket& packet) {
-    for (int t = 0; t < 4; ++t) {
-        prefetch(&scene.polygons[packet.polygon[t] & ~kLastPacketBit]);
-        if (packet.position.is_triangle(t)) {
-            for (int c = 0; c < 3; ++c) {
-                prefetch(&scene.positions[packet.position.corner(c, t)]);
-            }
-        }
-    }
-}
-
 // Calls visit(lane, packet, t, id, sure) for each lane in `rays` and each of the leaf's fan
 // triangles the pre-filter cannot rule out for it, once per run of equal ids per lane; `sure` when
 // the pre-filter found the lane's line surely crossing that triangle. Lanes whose bit
@@ -119,7 +105,7 @@ template <class Visit>
     }
     for (std::uint32_t index = first_packet(leaf); rays != 0; ++index) {
         const bvh::TrianglePacket& packet = packets[index];
-        prefetch_exact_data(scene, packet);
+        bvh::prefetch_exact_data(scene, packet, 3);
         for (int t = 0; t < 4 && rays != 0; ++t) {
             const std::uint32_t id = packet.polygon[t] & ~kLastPacketBit;
             std::uint32_t candidates = 0;

@@ -30,24 +30,33 @@ inline void prefetch_child(const Hierarchy& tree, std::uint32_t child) {
     }
 }
 
-/// Asks for the scene's record of each polygon in the first two packets of `leaf` (a child word
-/// with kLeafBit), and for a triangle lane its first corner's position: the normal and the point
-/// the exact test and the sure crossing's plane read first. Asked for the first leaf a single ray
-/// enters, its pre-filter's work done while they come: on a closed mesh that leaf usually holds
-/// the hit, whose record and corner otherwise missed the cache once the pre-filter had found it
-/// (docs/lab/leaf-records-2026-12-07.md). Not for every leaf: on a soup most leaves hold no
-/// candidate, and their records' lines cost more than they save.
-inline void prefetch_leaf_polygons(const Hierarchy& tree, const Scene& scene, std::uint32_t leaf) {
-    const TrianglePacket* packet = &tree.packets[leaf & ~kLeafBit];
-    const int packets = (packet->polygon[3] & kLastPacketBit) != 0 ? 1 : 2;
-    for (int p = 0; p < packets; ++p) {
-        for (int lane = 0; lane < 4; ++lane) {
-            prefetch(&scene.polygons[packet[p].polygon[lane] & ~kLastPacketBit].normal);
-            const std::uint32_t first = packet[p].position.first[lane];
-            if (first != kNotTriangle) {
-                prefetch(&scene.positions[first]);
+/// Asks for what the exact tests of a packet's four triangles read first: each lane's polygon
+/// record (its normal) and, for a triangle lane, the positions of its first `corners` corners (the
+/// plane's point is corner 0). They are scattered through the scene, and a test would otherwise
+/// wait for them once the pre-filter had named its triangle; asked for before the pre-filter,
+/// they come while it runs.
+inline void prefetch_exact_data(const Scene& scene, const TrianglePacket& packet, int corners) {
+    for (int lane = 0; lane < 4; ++lane) {
+        prefetch(&scene.polygons[packet.polygon[lane] & ~kLastPacketBit].normal);
+        if (packet.position.is_triangle(lane)) {
+            for (int c = 0; c < corners; ++c) {
+                prefetch(&scene.positions[packet.position.corner(c, lane)]);
             }
         }
+    }
+}
+
+/// prefetch_exact_data for the first two packets of `leaf` (a child word with kLeafBit), the
+/// normals and first corners that the sure crossing's plane reads. The single ray asks it for
+/// the first leaf it enters: on a closed mesh that leaf usually holds the hit
+/// (docs/lab/leaf-records-2026-12-07.md). Not for every leaf: on a soup most leaves hold no
+/// candidate, and their records' lines cost more than they save. (The packet walk asks for every
+/// packet, all three corners: there a packet's data serve eight rays.)
+inline void prefetch_leaf_polygons(const Hierarchy& tree, const Scene& scene, std::uint32_t leaf) {
+    const TrianglePacket* packet = &tree.packets[leaf & ~kLeafBit];
+    prefetch_exact_data(scene, packet[0], 1);
+    if ((packet->polygon[3] & kLastPacketBit) == 0) {
+        prefetch_exact_data(scene, packet[1], 1);
     }
 }
 
