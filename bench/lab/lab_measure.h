@@ -28,6 +28,7 @@ struct Measurement {
     std::string mesh;
     std::uint64_t triangles = 0;  ///< fan triangles of the scene's polygons
     std::string accel;
+    unsigned round = 1;  ///< which of --rounds, from 1
     double build_ms = 0.0;
     double bytes_per_triangle = 0.0;
     TraceRate primary_one;  ///< coherent rays, one thread

@@ -34,6 +34,23 @@ CLI::Validator count() {
             ""};
 }
 
+// How many rounds the lab measures: from 1 to kMostRounds.
+constexpr unsigned kMostRounds = 1000;
+CLI::Validator round_count() {
+    return {[](const std::string& word) -> std::string {
+                unsigned value = 0;
+                const auto [end, error] =
+                    std::from_chars(word.data(), word.data() + word.size(), value);
+                if (error != std::errc{} || end != word.data() + word.size() || value == 0 ||
+                    value > kMostRounds) {
+                    return "expected a number of rounds from 1 to " + std::to_string(kMostRounds) +
+                           ", found " + quote_token(word);
+                }
+                return {};
+            },
+            ""};
+}
+
 // A CPU this process may run on, as sched_getaffinity lists them.
 CLI::Validator allowed_cpu() {
     return {[](const std::string& word) -> std::string {
@@ -111,6 +128,12 @@ void add_lab_options(CLI::App& app, LabOptions& o) {
         ->delimiter(',')
         ->allow_extra_args(false)
         ->check(accel_name())
+        ->trigger_on_parse();
+    app.add_option("--rounds", o.rounds,
+                   "measure every method N times, in turn forward and backward, and print its "
+                   "shares of Embree's figures as median (range) (default 1)")
+        ->type_name("N")
+        ->check(round_count())
         ->trigger_on_parse();
     app.add_option("--threads", o.threads, "threads for the all-cores runs (default: all)")
         ->type_name("N")

@@ -16,6 +16,8 @@ struct LabOptions {
     std::vector<std::string> meshes{"sphere", "soup", "twocubes"};
     std::vector<AccelKind> accels{AccelKind::BruteForce, AccelKind::Octree, AccelKind::Seads,
                                   AccelKind::Bvh, AccelKind::Embree};
+    /// Every method measured this many times on each mesh, in turn forward and backward.
+    unsigned rounds = 1;
     unsigned threads = 0;            ///< for the all-cores runs; 0: every hardware thread
     double seconds_per_run = 0.3;    ///< each measurement repeats its rays at least this long
     double brute_force_tests = 2e8;  ///< ray-polygon tests brute force may spend per measurement

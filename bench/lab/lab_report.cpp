@@ -53,7 +53,7 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
            "rays_traced,subsampled,primary_hits,random_hits,primary_nodes_per_ray,"
            "primary_tests_per_ray,random_nodes_per_ray,random_tests_per_ray,"
            "primary_packet_mrays_1t,random_packet_mrays_1t,tree_cost_nodes,tree_cost_leaves,"
-           "tree_cost_leaf_pairs\n";
+           "tree_cost_leaf_pairs,round\n";
     for (const Measurement& m : results) {
         out << fmt::format(
             "{},{},{},{:.3f},{:.2f},{},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{},{:.2f},{:.2f},{:.2f}"
@@ -66,9 +66,10 @@ void write_csv(const std::string& file, const std::vector<Measurement>& results)
             m.random_one.tests_per_ray, m.primary_packet_one.mrays_per_second,
             m.random_packet_one.mrays_per_second);
         // Empty for every method but the BVH.
-        out << (m.tree_cost ? fmt::format(",{:.4f},{:.4f},{:.4f}\n", m.tree_cost->nodes,
+        out << (m.tree_cost ? fmt::format(",{:.4f},{:.4f},{:.4f}", m.tree_cost->nodes,
                                           m.tree_cost->leaves, m.tree_cost->leaf_pairs)
-                            : std::string(",,,\n"));
+                            : std::string(",,,"))
+            << ',' << m.round << '\n';
     }
     if (!out) {
         throw IoError("rt_lab: cannot write " + file);

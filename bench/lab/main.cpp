@@ -16,6 +16,7 @@
 #include "lab_options.h"
 #include "lab_rays.h"
 #include "lab_report.h"
+#include "lab_shares.h"
 #include "support/meshes/generated_meshes.h"
 #include "svg_plot.h"
 
@@ -23,19 +24,31 @@ namespace {
 
 using rt::lab::LabOptions;
 
+// Every method on one scene, --rounds times. Even rounds take the methods backward, so that no
+// method always builds and runs right after the same one (docs/lab/bvh-build-order-2026-12-04.md).
 void run_scene(const rt::Scene& scene, const std::string& mesh, const LabOptions& options,
                std::vector<rt::lab::Measurement>& results) {
     rt::lab::LabRays rays;
     rays.primary = rt::lab::camera_rays(scene);
     rays.random = rt::lab::random_rays(scene, rays.primary.size());
-    for (const rt::AccelKind kind : options.accels) {
-        if (kind == rt::AccelKind::BruteForce &&
-            rt::lab::fan_triangles(scene) > options.brute_force_largest) {
-            continue;
+    for (unsigned round = 1; round <= options.rounds; ++round) {
+        std::vector<rt::AccelKind> order = options.accels;
+        if (round % 2 == 0) {
+            std::reverse(order.begin(), order.end());
         }
-        if (auto m = rt::lab::measure(scene, mesh, kind, rays, options)) {
-            rt::lab::print_table_row(std::cout, *m);
-            results.push_back(*m);
+        if (options.rounds > 1) {
+            std::cout << "round " << round << " of " << options.rounds << '\n';
+        }
+        for (const rt::AccelKind kind : order) {
+            if (kind == rt::AccelKind::BruteForce &&
+                rt::lab::fan_triangles(scene) > options.brute_force_largest) {
+                continue;
+            }
+            if (auto m = rt::lab::measure(scene, mesh, kind, rays, options)) {
+                m->round = round;
+                rt::lab::print_table_row(std::cout, *m);
+                results.push_back(*m);
+            }
         }
     }
 }
@@ -65,14 +78,17 @@ int run(const LabOptions& options) {
         std::cout << (all_there ? "one-thread runs on CPU " : "one-thread runs NOT all on CPU ")
                   << options.pin_cpu << " (--pin)\n";
     }
+    rt::lab::print_shares(std::cout, rt::lab::shares_of_embree(results), options.rounds);
     if (!options.csv_file.empty()) {
         rt::lab::write_csv(options.csv_file, results);
     }
+    // The plots draw one point a method and size: the median of the rounds.
+    const std::vector<rt::lab::Measurement> medians = rt::lab::median_over_rounds(results);
     if (!options.svg_file.empty()) {
-        rt::lab::write_svg_plot(options.svg_file, results);
+        rt::lab::write_svg_plot(options.svg_file, medians);
     }
     if (!options.time_svg_file.empty()) {
-        rt::lab::write_time_plot(options.time_svg_file, results);
+        rt::lab::write_time_plot(options.time_svg_file, medians);
     }
     return 0;
 }

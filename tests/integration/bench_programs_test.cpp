@@ -3,6 +3,7 @@
 // RT_BUILD_BENCHMARKS=ON; otherwise these tests skip. The workloads are tiny: a test checks the
 // command line, not the figures.
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -126,17 +127,80 @@ TEST_F(BenchProgram, LabReadsEveryOption) {
     }
     // The BVH's tree cost (nodes, packets, leaves in pairs) ends its rows; the other methods
     // leave it empty.
-    EXPECT_TRUE(csv[0].ends_with(",tree_cost_nodes,tree_cost_leaves,tree_cost_leaf_pairs"))
+    EXPECT_TRUE(csv[0].ends_with(",tree_cost_nodes,tree_cost_leaves,tree_cost_leaf_pairs,round"))
         << csv[0];
     EXPECT_GE(std::stod(field(csv[1], 20)), 1.0) << csv[1];  // the root at least
     EXPECT_GT(std::stod(field(csv[1], 21)), 0.0) << csv[1];
     EXPECT_GT(std::stod(field(csv[1], 22)), 0.0) << csv[1];
-    EXPECT_TRUE(csv[2].ends_with(",,,")) << csv[2];
+    EXPECT_TRUE(csv[2].ends_with(",,,,1")) << csv[2];  // and the round, the only one
     EXPECT_TRUE(contains(r.out, "tree cost")) << r.out;
     EXPECT_TRUE(contains(
         r.out, "\none-thread runs on CPU " + std::to_string(first_allowed_cpu()) + " (--pin)\n"))
         << r.out;
     EXPECT_TRUE(contains(read_text(dir_.path() / "lab.svg"), "<svg"));
+}
+
+// The numbers in a line, in order: "sphere 960 bvh 0.55 (0.03-0.67)" gives 960, 0.55, 0.03, 0.67
+// (a range's dash is not a minus sign: the shares are never negative).
+std::vector<double> numbers_in(const std::string& line) {
+    std::vector<double> out;
+    for (std::size_t i = 0; i < line.size();) {
+        if (std::isdigit(static_cast<unsigned char>(line[i])) != 0) {
+            std::size_t used = 0;
+            out.push_back(std::stod(line.substr(i), &used));
+            i += used;
+        } else {
+            ++i;
+        }
+    }
+    return out;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t middle = values.size() / 2;
+    return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+TEST_F(BenchProgram, LabRoundsGiveSharesOfEmbreeWithTheirSpread) {
+#ifndef RT_WITH_EMBREE
+    GTEST_SKIP() << "Embree is not built into this rt";
+#endif
+    const ProgramResult r =
+        run("rt_lab", {"--sizes", "1k", "--meshes", "sphere", "--accels", "bvh,embree", "--rounds",
+                       "3", "--seconds", "0.001", "--threads", "1", "--csv", "lab.csv"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // Every round measures both; even rounds take the methods backward.
+    const std::vector<std::string> csv = lines("lab.csv");
+    ASSERT_EQ(csv.size(), 7U) << r.out;
+    EXPECT_TRUE(csv[0].ends_with(",round")) << csv[0];
+    const std::vector<std::string> order{"bvh", "embree", "embree", "bvh", "bvh", "embree"};
+    std::vector<double> bvh_camera;
+    std::vector<double> embree_camera;
+    for (std::size_t row = 1; row < csv.size(); ++row) {
+        EXPECT_EQ(field(csv[row], 2), order[row - 1]) << csv[row];
+        EXPECT_EQ(field(csv[row], 23), std::to_string((row + 1) / 2)) << csv[row];
+        (field(csv[row], 2) == "bvh" ? bvh_camera : embree_camera)
+            .push_back(std::stod(field(csv[row], 6)));
+    }
+    EXPECT_TRUE(contains(r.out, "round 3 of 3\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "median (lowest-highest) of 3 rounds")) << r.out;
+    // The BVH's row: build, then camera rays over Embree's in the same round, median and range.
+    const std::size_t at = r.out.find("\nsphere           960 bvh ", r.out.find("Shares of"));
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::string row = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+    const std::vector<double> figures = numbers_in(row);
+    ASSERT_EQ(figures.size(), 1U + 6U * 3U) << row;  // the triangles, then six cells of three
+    std::vector<double> shares;
+    for (std::size_t i = 0; i < bvh_camera.size(); ++i) {
+        shares.push_back(bvh_camera[i] / embree_camera[i]);
+    }
+    // The CSV's rates have four decimals, the table's shares two.
+    EXPECT_NEAR(figures[4], median(shares), 0.006) << row;
+    EXPECT_NEAR(figures[5], *std::min_element(shares.begin(), shares.end()), 0.006) << row;
+    EXPECT_NEAR(figures[6], *std::max_element(shares.begin(), shares.end()), 0.006) << row;
+    EXPECT_LE(figures[5], figures[4]);
+    EXPECT_LE(figures[4], figures[6]);
 }
 
 TEST_F(BenchProgram, LabRefusesBadCommandLines) {
@@ -153,6 +217,10 @@ TEST_F(BenchProgram, LabRefusesBadCommandLines) {
                        "embree)");
     expect_usage_error(run("rt_lab", {"--seconds", "0"}), "rt_lab",
                        "--seconds: expected a number above 0, found '0'");
+    expect_usage_error(run("rt_lab", {"--rounds", "0"}), "rt_lab",
+                       "--rounds: expected a number of rounds from 1 to 1000, found '0'");
+    expect_usage_error(run("rt_lab", {"--rounds", "1001"}), "rt_lab",
+                       "--rounds: expected a number of rounds from 1 to 1000, found '1001'");
     expect_usage_error(run("rt_lab", {"--threads", "0"}), "rt_lab",
                        "--threads: expected a count like 1000, 10k or 1M, found '0'");
     // A CPU the process may not run on (the list of those it may depends on the machine).
@@ -165,7 +233,7 @@ TEST_F(BenchProgram, LabRefusesBadCommandLines) {
     expect_help_lists(run("rt_lab", {"--help"}),
                       {"--quick", "--sizes LIST", "--meshes LIST", "--accels LIST", "--threads N",
                        "--seconds S", "--seads-side N", "--octree-depth N", "--csv FILE",
-                       "--svg FILE", "--source DIR", "--pin CPU"});
+                       "--svg FILE", "--source DIR", "--pin CPU", "--rounds N"});
 }
 
 TEST_F(BenchProgram, SceneBenchTakesItsOptionsAndPassesTheRestToRt) {
