@@ -21,17 +21,15 @@ double ratio(double ours, double theirs) {
     return ours > 0.0 && theirs > 0.0 ? ours / theirs : std::nan("");
 }
 
-// The rounds a method was measured in on one mesh, and Embree's row of the same round.
-struct Paired {
-    std::vector<std::pair<const Measurement*, const Measurement*>> rounds;
-};
+// The rounds a method was measured in on one mesh, each with Embree's row of the same round.
+using Paired = std::vector<std::pair<const Measurement*, const Measurement*>>;
 
 using RowKey = std::tuple<std::string, std::uint64_t, std::string>;
 
 Spread spread_over(const Paired& paired, Figure figure) {
     std::vector<double> values;
-    values.reserve(paired.rounds.size());
-    for (const auto& [ours, embree] : paired.rounds) {
+    values.reserve(paired.size());
+    for (const auto& [ours, embree] : paired) {
         values.push_back(figure(*ours, *embree));
     }
     return spread_of(std::move(values));
@@ -47,7 +45,9 @@ std::string cell(const Spread& s, unsigned rounds) {
     return fmt::format("{:.2f} ({:.2f}-{:.2f})", s.median, s.lowest, s.highest);
 }
 
-double median_of(const std::vector<const Measurement*>& rows, double (*field)(const Measurement&)) {
+// The median over `rows` of what `field` reads from each.
+template <class Field>
+double median_of(const std::vector<const Measurement*>& rows, Field field) {
     std::vector<double> values;
     values.reserve(rows.size());
     for (const Measurement* m : rows) {
@@ -55,6 +55,11 @@ double median_of(const std::vector<const Measurement*>& rows, double (*field)(co
     }
     return spread_of(std::move(values)).median;
 }
+
+// Every rate a measurement holds.
+constexpr TraceRate Measurement::*kRates[] = {
+    &Measurement::primary_one, &Measurement::random_one,         &Measurement::primary_all,
+    &Measurement::random_all,  &Measurement::primary_packet_one, &Measurement::random_packet_one};
 
 }  // namespace
 
@@ -95,7 +100,7 @@ std::vector<Shares> shares_of_embree(const std::vector<Measurement>& results) {
         if (!paired.contains(key)) {
             order.push_back(key);
         }
-        paired[key].rounds.emplace_back(&m, embree->second);
+        paired[key].emplace_back(&m, embree->second);
     }
     std::vector<Shares> shares;
     shares.reserve(order.size());
@@ -144,18 +149,10 @@ std::vector<Measurement> median_over_rounds(const std::vector<Measurement>& resu
         const std::vector<const Measurement*>& of = rows[key];
         Measurement m = *of.front();
         m.build_ms = median_of(of, [](const Measurement& r) { return r.build_ms; });
-        m.primary_one.mrays_per_second =
-            median_of(of, [](const Measurement& r) { return r.primary_one.mrays_per_second; });
-        m.random_one.mrays_per_second =
-            median_of(of, [](const Measurement& r) { return r.random_one.mrays_per_second; });
-        m.primary_all.mrays_per_second =
-            median_of(of, [](const Measurement& r) { return r.primary_all.mrays_per_second; });
-        m.random_all.mrays_per_second =
-            median_of(of, [](const Measurement& r) { return r.random_all.mrays_per_second; });
-        m.primary_packet_one.mrays_per_second = median_of(
-            of, [](const Measurement& r) { return r.primary_packet_one.mrays_per_second; });
-        m.random_packet_one.mrays_per_second = median_of(
-            of, [](const Measurement& r) { return r.random_packet_one.mrays_per_second; });
+        for (TraceRate Measurement::*rate : kRates) {
+            (m.*rate).mrays_per_second =
+                median_of(of, [rate](const Measurement& r) { return (r.*rate).mrays_per_second; });
+        }
         medians.push_back(std::move(m));
     }
     return medians;
