@@ -1,7 +1,10 @@
-// The builds' one way of using several cores (exit culling, the voxel methods' packets): a range
-// cut into contiguous parts, one thread a part. Every pass that uses it writes either its own
-// slots or its own copy that the caller merges by an exact, order-free operation (box union,
-// bitwise or, maximum), so what it builds is the same bit for bit for any number of threads.
+// The builds' one way of using several cores (exit culling, the voxel methods' packets, the
+// BVH's passes): a range cut into contiguous parts, one thread a part (run_in_parts), or into
+// more pieces than threads, each thread taking the next when done with its last (share_out), so
+// that a core slowed by another program holds no other back. Every pass that uses them writes
+// either its own slots or its own copy that the caller merges by an exact, order-free operation
+// (box union, bitwise or, maximum, sum of counts), so what it builds is the same bit for bit for
+// any number of threads.
 #pragma once
 
 #include <algorithm>

@@ -307,21 +307,19 @@ void SubtreeBuilder<Allocator>::take_in_spawned() {
                   leaves_.begin() + static_cast<std::ptrdiff_t>(to),
                   leaves.begin() + static_cast<std::ptrdiff_t>(at));
     };
-    const int parts = static_cast<int>(std::min<std::size_t>(threads_, plan.size()));
-    run_in_parts(plan.size(), parts, [&](std::size_t first, std::size_t last, int) {
-        for (std::size_t i = first; i < last; ++i) {
-            const Placement& p = plan[i];
-            Subtree<std::allocator>& sub = p.subtree->subtree;
-            copy_own(p.own_from, p.own_to, p.leaf_at);
-            copy_nodes(sub.nodes, p.node_offset);
-            auto out =
-                leaves.begin() + static_cast<std::ptrdiff_t>(p.leaf_at + p.own_to - p.own_from);
-            for (PendingLeaf leaf : sub.leaves) {
-                leaf.node += p.node_offset;  // a spawned subtree's root is never a leaf
-                *out++ = leaf;
-            }
-            sub = {};
+    // A subtree at a time to each thread as it comes free: their sizes differ, and a core slowed
+    // by another program holds no other back.
+    share_out(plan.size(), static_cast<int>(threads_), [&](std::size_t i, int) {
+        const Placement& p = plan[i];
+        Subtree<std::allocator>& sub = p.subtree->subtree;
+        copy_own(p.own_from, p.own_to, p.leaf_at);
+        copy_nodes(sub.nodes, p.node_offset);
+        auto out = leaves.begin() + static_cast<std::ptrdiff_t>(p.leaf_at + p.own_to - p.own_from);
+        for (PendingLeaf leaf : sub.leaves) {
+            leaf.node += p.node_offset;  // a spawned subtree's root is never a leaf
+            *out++ = leaf;
         }
+        sub = {};
     });
     copy_own(taken, leaves_.size(), leaf_at);
     for (const Placement& p : plan) {

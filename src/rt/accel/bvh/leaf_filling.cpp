@@ -1,9 +1,10 @@
 #include "rt/accel/bvh/leaf_filling.h"
 
 #include <algorithm>
-#include <thread>
+#include <vector>
 
 #include "rt/accel/bvh/leaf_packets.h"
+#include "rt/accel/parallel_parts.h"
 #include "rt/core/error.h"
 #include "rt/core/huge_pages.h"
 #include "rt/core/prefetch.h"
@@ -17,6 +18,8 @@ namespace {
 constexpr std::size_t kRecordsAhead = 12;
 constexpr std::size_t kCornersAhead = 6;
 constexpr std::size_t kPositionsAhead = 2;
+// Runs of leaves a build thread fills, on average (fill_leaves).
+constexpr std::size_t kRunsPerThread = 8;
 
 std::span<const PolygonReference> refs_of(std::span<const PolygonReference> refs,
                                           const PendingLeaf& leaf) {
@@ -59,9 +62,11 @@ void fill_run(const Scene& scene, std::span<const PolygonReference> refs,
 
 void fill_leaves(const Scene& scene, std::span<const PolygonReference> refs,
                  std::span<const PendingLeaf> leaves, Hierarchy& tree, unsigned threads) {
-    // Runs of whole leaves, in the order given, about as many references each.
-    const std::size_t count =
-        std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(leaves.size() / 4096, 1));
+    // Runs of whole leaves, in the order given, about as many references each: several a thread,
+    // each thread taking the next when done with its last, so that a core slowed by another
+    // program holds no other back.
+    const std::size_t count = std::clamp<std::size_t>(
+        std::size_t{threads} * kRunsPerThread, 1, std::max<std::size_t>(leaves.size() / 4096, 1));
     std::vector<std::size_t> bounds{0};
     std::size_t taken = 0;
     for (std::size_t i = 0; i < leaves.size() && bounds.size() < count; ++i) {
@@ -91,14 +96,8 @@ void fill_leaves(const Scene& scene, std::span<const PolygonReference> refs,
     }
     reserve_huge(tree.packets, first[count]);
     tree.packets.resize(first[count]);
-    std::vector<std::thread> pool;
-    for (std::size_t r = 1; r < count; ++r) {
-        pool.emplace_back([&, r] { fill_run(scene, refs, run_leaves(r), first[r], tree); });
-    }
-    fill_run(scene, refs, run_leaves(0), first[0], tree);
-    for (std::thread& t : pool) {
-        t.join();
-    }
+    share_out(count, static_cast<int>(threads),
+              [&](std::size_t r, int) { fill_run(scene, refs, run_leaves(r), first[r], tree); });
 }
 
 }  // namespace rt::bvh

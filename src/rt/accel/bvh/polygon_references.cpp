@@ -21,6 +21,9 @@ namespace {
 // factor of two.
 constexpr double kPlaneDeviationGain = 0x1p21;
 
+// Runs of polygons a build thread takes, on average (make_polygon_references).
+constexpr std::uint32_t kRunsPerThread = 8;
+
 // The polygon's double box, widened for non-planarity; false if anything is not finite. Every
 // corner is asked: a NaN drops out of a minimum taken after it, so a NaN corner between finite
 // ones left a finite box that did not hold the first corner.
@@ -190,10 +193,11 @@ PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) 
         threads = std::max(1u, std::thread::hardware_concurrency());
     }
     const auto polygons = static_cast<std::uint32_t>(scene.polygons.size());
-    // Each thread takes a run of at least 16k polygons; the runs are joined in polygon order, so
-    // the result does not depend on the thread count.
-    const std::uint32_t runs =
-        std::clamp<std::uint32_t>(threads, 1, std::max<std::uint32_t>(polygons >> 14, 1));
+    // Runs of at least 16k polygons, several a thread, each thread taking the next when done with
+    // its last (so a core slowed by another program holds no other back); the runs are joined in
+    // polygon order, so the result does not depend on the thread count.
+    const std::uint32_t runs = std::clamp<std::uint32_t>(
+        threads * kRunsPerThread, 1, std::max<std::uint32_t>(polygons >> 14, 1));
     const auto bound = [&](std::uint32_t r) {
         return static_cast<std::uint32_t>(std::uint64_t{polygons} * r / runs);
     };
@@ -204,9 +208,10 @@ PolygonReferences make_polygon_references(const Scene& scene, unsigned threads) 
     reserve_huge(refs.bounded, polygons);
     refs.bounded.resize(polygons);
     std::vector<Run> parts(runs);
-    run_in_parts(polygons, static_cast<int>(runs), [&](std::size_t first, std::size_t last, int r) {
-        write_references(scene, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last),
-                         refs.bounded.data() + first, parts[static_cast<std::size_t>(r)]);
+    share_out(runs, static_cast<int>(threads), [&](std::size_t r, int) {
+        const auto run = static_cast<std::uint32_t>(r);
+        write_references(scene, bound(run), bound(run + 1), refs.bounded.data() + bound(run),
+                         parts[r]);
     });
     // A run that skipped polygons (fewer than three corners, or unbounded) left a gap before the
     // next run's part: close it.

@@ -7,12 +7,13 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
-#include <thread>
 #include <vector>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
+
+#include "rt/accel/parallel_parts.h"
 
 namespace rt::bvh {
 
@@ -208,10 +209,12 @@ void bin_references(std::span<const PolygonReference> refs, const ReferenceRange
 }
 #endif
 
-// Ranges at least this big are binned by `threads` threads, each a run of the references into
-// bins of its own, then summed: the same bins as one pass (min, max and counts do not depend on
-// the order).
+// Ranges at least this big are binned by `threads` threads, each taking the next run of
+// kBinningRun references into bins of its own when done with its last, then summed: the same bins
+// as one pass (min, max and counts do not depend on the order). Runs rather than one half a thread:
+// when another program slows one core, the other threads take more runs instead of waiting.
 constexpr std::uint32_t kParallelBinning = 1u << 18;
+constexpr std::uint32_t kBinningRun = 1u << 15;
 
 void bin_in_parallel(std::span<const PolygonReference> refs, const ReferenceRange& r,
                      const std::array<Binner, 3>& binners, int count, unsigned threads,
@@ -220,28 +223,20 @@ void bin_in_parallel(std::span<const PolygonReference> refs, const ReferenceRang
         bin_references(refs, r, binners, count, bins);
         return;
     }
-    const auto at = [&](unsigned t) {
-        return r.begin + static_cast<std::uint32_t>(std::uint64_t{r.size()} * t / threads);
-    };
+    const std::uint32_t runs = (r.size() + kBinningRun - 1) / kBinningRun;
+    // Thread 0 (the calling one) bins into `bins`, each other thread into its own.
     std::vector<std::unique_ptr<AxisBins>> parts;
-    std::vector<std::thread> pool;
     for (unsigned t = 1; t < threads; ++t) {
         parts.push_back(std::make_unique<AxisBins>());
         parts.back()->clear(count);
-        pool.emplace_back([&, t, part = parts.back().get()] {
-            ReferenceRange run;
-            run.begin = at(t);
-            run.end = at(t + 1);
-            bin_references(refs, run, binners, count, *part);
-        });
     }
-    ReferenceRange first;
-    first.begin = r.begin;
-    first.end = at(1);
-    bin_references(refs, first, binners, count, bins);
-    for (std::thread& t : pool) {
-        t.join();
-    }
+    share_out(runs, static_cast<int>(threads), [&](std::size_t i, int thread) {
+        ReferenceRange run;
+        run.begin = r.begin + static_cast<std::uint32_t>(i) * kBinningRun;
+        run.end = std::min(r.end, run.begin + kBinningRun);
+        bin_references(refs, run, binners, count,
+                       thread == 0 ? bins : *parts[static_cast<std::size_t>(thread - 1)]);
+    });
     for (const auto& part : parts) {
         bins.add(*part, count);
     }
