@@ -2,14 +2,36 @@
 // line enters each, with the conservative margins of float_ray.cpp.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "rt/accel/bvh/bvh_layout.h"
 #include "rt/accel/bvh/float4.h"
 #include "rt/accel/float_prefilter/float_ray.h"
 
 namespace rt::bvh {
+
+/// Where the planes a line enters and leaves a node's boxes through lie (BoxRay::near_plane and
+/// far_plane), for each pattern of direction signs (FloatRay::negative): lo[k] for a positive
+/// component, hi[k] for a negative one. Node stores lo[3][4] then hi[3][4].
+struct PlaneOffsets {
+    std::array<int, 3> near_plane;
+    std::array<int, 3> far_plane;
+};
+inline constexpr std::array<PlaneOffsets, 8> kPlaneOffsets = [] {
+    std::array<PlaneOffsets, 8> table{};
+    for (std::uint32_t signs = 0; signs < 8; ++signs) {
+        for (int k = 0; k < 3; ++k) {
+            const int negative = static_cast<int>((signs >> k) & 1U);
+            table[signs].near_plane[static_cast<std::size_t>(k)] = 4 * k + 12 * negative;
+            table[signs].far_plane[static_cast<std::size_t>(k)] = 12 + 4 * k - 12 * negative;
+        }
+    }
+    return table;
+}();
 
 /// A FloatRay's box-test values, each repeated in four lanes once per ray rather than per node.
 /// A plane p's t is p * inverse - offset, two operations: the origin's product with the inverse
@@ -22,8 +44,7 @@ struct BoxRay {
     /// origin * inverse - margin: subtracted from a far plane's product, so the exit is late.
     simd::Float4 far_offset[3]{};
     /// Where, from Node::lo[0] (or WideNode::lo[0], in pairs of four), the planes the ray enters
-    /// (leaves) through on each axis are: lo[k] for a positive direction component, hi[k] for a
-    /// negative one. Node stores lo[3][4] then hi[3][4].
+    /// (leaves) through on each axis are (kPlaneOffsets).
     int near_plane[3]{};
     int far_plane[3]{};
 
@@ -35,13 +56,14 @@ struct BoxRay {
             const Float4 margin = Float4::broadcast(ray.slab_margin[k]);
             near_offset[k] = product + margin;
             far_offset[k] = product - margin;
-            // The planes by arithmetic on the direction's sign bits: as a choice on the
-            // inverse's sign, GCC made the first axis's a branch, a coin toss for rays in random
-            // directions (docs/accelerators.md, "Set-up without coin tosses").
-            const int negative = static_cast<int>((ray.negative >> k) & 1U);
-            near_plane[k] = 4 * k + 12 * negative;
-            far_plane[k] = 12 + 4 * k - 12 * negative;
         }
+        // The planes looked up by the direction's sign bits: as a choice on the inverse's sign,
+        // GCC made the first axis's a branch, a coin toss for rays in random directions
+        // (docs/accelerators.md, "Set-up without coin tosses"); worked out by arithmetic, they
+        // cost 29 instructions a ray.
+        const PlaneOffsets& planes = kPlaneOffsets[ray.negative & 7U];
+        std::copy(planes.near_plane.begin(), planes.near_plane.end(), near_plane);
+        std::copy(planes.far_plane.begin(), planes.far_plane.end(), far_plane);
     }
 };
 
