@@ -331,9 +331,11 @@ private:
 // each candidate to `nearest`. Compiled twice: as is, and inlined into an AVX2 function, where
 // the box and packet tests inline into the loop (a call into an AVX2 function from plain code
 // cannot be inlined).
+// `deferred`, when not null, is the ray of a FloatRay set up BoxesFirst: its triangle values are
+// set up at the first leaf.
 template <bool kAvx2, class Nearest>
 [[gnu::always_inline]] inline void nearest_in_tree(const bvh::Hierarchy& tree, const Scene& scene,
-                                                   const FloatRay& fray, Interval t,
+                                                   FloatRay& fray, const Ray* deferred, Interval t,
                                                    std::uint32_t start, Nearest& nearest,
                                                    TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
@@ -355,6 +357,9 @@ template <bool kAvx2, class Nearest>
         if (child != bvh::kNoChild) {
             if (first_leaf) {
                 bvh::prefetch_leaf_polygons(tree, scene, child);
+                if (deferred != nullptr) {
+                    fray.set_up_triangles(*deferred);
+                }
                 first_leaf = false;
             }
             for_each_candidate<kAvx2>(
@@ -382,23 +387,26 @@ template <bool kAvx2, class Nearest>
 #ifdef RT_BVH_AVX2
 __attribute__((target("avx2"), flatten)) void nearest_in_tree_avx2(const bvh::Hierarchy& tree,
                                                                    const Scene& scene,
-                                                                   const FloatRay& fray, Interval t,
-                                                                   NearestHit& nearest,
+                                                                   FloatRay& fray, const Ray& ray,
+                                                                   Interval t, NearestHit& nearest,
                                                                    TraceCounters& counters) {
-    nearest_in_tree<true>(tree, scene, fray, t, tree.root, nearest, counters);
+    nearest_in_tree<true>(tree, scene, fray, &ray, t, tree.root, nearest, counters);
 }
 
 __attribute__((target("avx2"), flatten)) void nearest_below_avx2(
     const bvh::Hierarchy& tree, const Scene& scene, const FloatRay& fray, Interval t,
     std::uint32_t start, NearestHitElsewhere& nearest, TraceCounters& counters) {
-    nearest_in_tree<true>(tree, scene, fray, t, start, nearest, counters);
+    FloatRay lane_ray = fray;
+    nearest_in_tree<true>(tree, scene, lane_ray, nullptr, t, start, nearest, counters);
 }
 #endif
 
 // Depth first through the tree until a candidate blocks; compiled twice, as nearest_in_tree is.
+// `fray` was set up BoxesFirst from `ray`: its triangle values are set up at the first leaf.
 template <bool kAvx2, class Blocks>
-[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree, const FloatRay& fray,
-                                                   Interval t, const Blocks& blocks_lane,
+[[gnu::always_inline]] inline bool any_hit_in_tree(const bvh::Hierarchy& tree, FloatRay& fray,
+                                                   const Ray& ray, Interval t,
+                                                   const Blocks& blocks_lane,
                                                    TraceCounters& counters) {
     const bvh::BoxRay box_ray(fray);
     const float t_min = fray.scaled_down(t.min);
@@ -407,9 +415,14 @@ template <bool kAvx2, class Blocks>
     std::array<std::uint32_t, kStackSize> stack;  // NOLINT(cppcoreguidelines-pro-type-member-init)
     int size = 0;
     stack[size++] = tree.root;
+    bool first_leaf = true;
     while (size > 0) {
         const std::uint32_t child = stack[--size];
         if (bvh::is_leaf(child)) {
+            if (first_leaf) {
+                fray.set_up_triangles(ray);
+                first_leaf = false;
+            }
             if (for_each_candidate<kAvx2>(tree.packets, child, fray, blocks_lane)) {
                 return true;
             }
@@ -428,10 +441,11 @@ template <bool kAvx2, class Blocks>
 #ifdef RT_BVH_AVX2
 template <class Blocks>
 __attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hierarchy& tree,
-                                                                   const FloatRay& fray, Interval t,
+                                                                   FloatRay& fray, const Ray& ray,
+                                                                   Interval t,
                                                                    const Blocks& blocks_lane,
                                                                    TraceCounters& counters) {
-    return any_hit_in_tree<true>(tree, fray, t, blocks_lane, counters);
+    return any_hit_in_tree<true>(tree, fray, ray, t, blocks_lane, counters);
 }
 #endif
 
@@ -440,7 +454,7 @@ __attribute__((target("avx2"), flatten)) bool any_hit_in_tree_avx2(const bvh::Hi
 std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& counters) const {
     // A usable FloatRay has a finite origin and a finite nonzero direction, so RaySpace would be
     // valid too; an unusable one falls back to testing every polygon (an invalid ray misses all).
-    const FloatRay fray(ray, tree_.scale);
+    FloatRay fray(ray, tree_.scale, FloatRay::BoxesFirst{});
     NearestHit nearest(ray, t);
     if (!fray.usable) {
         if (RaySpace(ray).valid()) {
@@ -458,11 +472,11 @@ std::optional<Hit> Bvh::closest_hit(const Ray& ray, Interval t, TraceCounters& c
     }
 #ifdef RT_BVH_AVX2
     if (cpu_has_avx2) {
-        nearest_in_tree_avx2(tree_, scene_, fray, t, nearest, counters);
+        nearest_in_tree_avx2(tree_, scene_, fray, ray, t, nearest, counters);
         return nearest.best();
     }
 #endif
-    nearest_in_tree<false>(tree_, scene_, fray, t, tree_.root, nearest, counters);
+    nearest_in_tree<false>(tree_, scene_, fray, &ray, t, tree_.root, nearest, counters);
     return nearest.best();
 }
 
@@ -476,11 +490,12 @@ void bvh::nearest_below(const Hierarchy& tree, const Scene& scene, std::uint32_t
         return;
     }
 #endif
-    nearest_in_tree<false>(tree, scene, fray, t, start, nearest, counters);
+    FloatRay lane_ray = fray;
+    nearest_in_tree<false>(tree, scene, lane_ray, nullptr, t, start, nearest, counters);
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
-    const FloatRay fray(ray, tree_.scale);
+    FloatRay fray(ray, tree_.scale, FloatRay::BoxesFirst{});
     std::optional<RaySpace> space;  // prepared on the first exact test, as in closest_hit
     const auto blocks = [&](std::uint32_t id) {
         if (leaves_polygon(ray, id)) {
@@ -534,10 +549,10 @@ bool Bvh::occluded(const Ray& ray, Interval t, TraceCounters& counters) const {
     };
 #ifdef RT_BVH_AVX2
     if (cpu_has_avx2) {
-        return any_hit_in_tree_avx2(tree_, fray, t, blocks_lane, counters);
+        return any_hit_in_tree_avx2(tree_, fray, ray, t, blocks_lane, counters);
     }
 #endif
-    return any_hit_in_tree<false>(tree_, fray, t, blocks_lane, counters);
+    return any_hit_in_tree<false>(tree_, fray, ray, t, blocks_lane, counters);
 }
 
 }  // namespace rt

@@ -69,7 +69,7 @@ namespace rt {
 // Out of line: measured inline in the voxel methods' walks, their rates moved by 0.95-1.03 and
 // gained nothing (docs/lab/inline-setup-2026-12-06.md).
 FloatRay::FloatRay(const Ray& ray, double scene_scale, TrianglesOnly) {
-    float_ray_detail::set_up<false>(*this, ray, scene_scale);
+    float_ray_detail::set_up<float_ray_detail::Parts::TrianglesOnly>(*this, ray, scene_scale);
 }
 
 }  // namespace rt

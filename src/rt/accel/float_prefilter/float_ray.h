@@ -38,12 +38,24 @@ struct FloatRay {
     float edge_margin_linear = 0.0f;    ///< times the triangle's 2D size
     float edge_margin_constant = 0.0f;  ///< plus this
 
+    // Kept by a BoxesFirst set-up for set_up_triangles().
+    double shrink = 1.0;  ///< 1 / scale_t, a power of two
+    double size = 0.0;    ///< the scene's scale plus the origin's largest |coordinate|
+
     FloatRay(const Ray& ray, double scene_scale);
     /// Asks for only the triangle pre-filter's values (and origin); the box tests' stay 0. The
     /// voxel methods test boxes with their own LineProbe: setting up the box tests' values too
     /// cost them two divisions and some thirty other instructions a ray.
     struct TrianglesOnly {};
     FloatRay(const Ray& ray, double scene_scale, TrianglesOnly);
+    /// Sets up only the box tests' values (and the origin): the triangle pre-filter's wait for
+    /// set_up_triangles(), which the BVH's single-ray walk calls at its first leaf, as most of a
+    /// mesh's camera rays reach none (docs/accelerators.md, "Set-up deferred to the first leaf").
+    struct BoxesFirst {};
+    FloatRay(const Ray& ray, double scene_scale, BoxesFirst);
+    /// The triangle pre-filter's values of a usable FloatRay set up BoxesFirst from `ray`: bit
+    /// for bit those of the full set-up.
+    void set_up_triangles(const Ray& ray);
     /// Unusable until its fields are filled (a packet's lane, bvh/packet_setup.h).
     FloatRay() = default;
 

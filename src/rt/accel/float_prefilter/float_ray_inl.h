@@ -56,11 +56,11 @@ inline Axes axes_along(double ax, double ay, double az) {
     return {x_largest + 2 * y_largest, 1 + x_largest - y_largest, 2 - 2 * x_largest - y_largest};
 }
 
-// The BVH's set-up of the box tests' values, the axes and the shears, without a branch on the
-// direction: the lab's random rays ran 6-29 % faster so (docs/lab/axes-2026-12-06.md).
-// `magnitude` holds |d| per axis, `scaled` d scaled to a largest |component| in [1, 2).
-inline void set_up_boxes_and_axes(FloatRay& r, const Vec3& d, const Vec3& magnitude,
-                                  const Vec3& scaled, double m) {
+// The BVH's set-up of the box tests' values, without a branch on the direction: the lab's random
+// rays ran 6-29 % faster so (docs/lab/axes-2026-12-06.md). `scaled` is d scaled to a largest
+// |component| in [1, 2). Returns the three reciprocals, clamped.
+inline std::array<double, 3> set_up_boxes(FloatRay& r, const Vec3& d, const Vec3& scaled,
+                                          double m) {
     // From the direction's sign bits, not the inverse's: known before the divisions end.
     r.negative = static_cast<std::uint32_t>(std::signbit(d.x)) |
                  static_cast<std::uint32_t>(std::signbit(d.y)) << 1U |
@@ -76,20 +76,35 @@ inline void set_up_boxes_and_axes(FloatRay& r, const Vec3& d, const Vec3& magnit
         r.inverse[k] = static_cast<float>(inv[k]);
         r.slab_margin[k] = bound_up(0x1p-20 * m * std::fabs(inv[k]));
     }
+    return inv;
+}
+
+// The triangle pre-filter's axes and shears, given |d| per axis (`magnitude`), d scaled as above
+// and the reciprocal of its component on kz, and its edge margins from m. |scaled[kz]| is in
+// [1, 2), so that reciprocal needs no clamp (the voxel methods' set-up takes it unclamped: the
+// same bits either way); two roundings, well inside the 8u of the bound.
+template <class InverseOnKz>
+inline void set_up_triangles(FloatRay& r, const Vec3& magnitude, const Vec3& scaled, double m,
+                             InverseOnKz inverse_on) {
     const auto [kx, ky, kz] = axes_along(magnitude.x, magnitude.y, magnitude.z);
     r.kx = kx;
     r.ky = ky;
     r.kz = kz;
-    // |scaled[kz]| is in [1, 2), so its inverse needs no clamp (the voxel methods' set-up takes
-    // it unclamped: the same bits either way); two roundings, well inside the 8u of the bound.
-    const double inverse_kz = inv[static_cast<std::size_t>(kz)];
+    const std::array<double, 3> along{scaled.x, scaled.y, scaled.z};
+    const double inverse_kz = inverse_on(kz, along);
     r.shear_x = static_cast<float>(along[static_cast<std::size_t>(kx)] * inverse_kz);
     r.shear_y = static_cast<float>(along[static_cast<std::size_t>(ky)] * inverse_kz);
+    const double eps = 0x1p-20 * m;
+    r.edge_margin_linear = bound_up(8.0 * eps);
+    r.edge_margin_constant = bound_up(8.0 * eps * eps);
 }
 
-// The set-up, with or without the box tests' values: the BVH's full one reuses its reciprocal on
-// kz for the shears.
-template <bool kBoxes>
+// The set-up: the box tests' values and the triangle pre-filter's (kBoxes, the BVH's full one,
+// which reuses its reciprocal on kz for the shears), the box tests' alone (BoxesFirst: the
+// triangles' wait for FloatRay::set_up_triangles), or the triangle pre-filter's alone.
+enum class Parts { Both, BoxesFirst, TrianglesOnly };
+
+template <Parts kParts>
 inline void set_up(FloatRay& r, const Ray& ray, double scene_scale) {
     const Vec3& d = ray.direction;
     const double ax = std::fabs(d.x);
@@ -110,8 +125,15 @@ inline void set_up(FloatRay& r, const Ray& ray, double scene_scale) {
     for (int k = 0; k < 3; ++k) {
         r.origin[k] = static_cast<float>(ray.origin[k]);
     }
-    if constexpr (kBoxes) {
-        set_up_boxes_and_axes(r, d, {ax, ay, az}, scaled, m);
+    if constexpr (kParts == Parts::Both) {
+        const std::array<double, 3> inv = set_up_boxes(r, d, scaled, m);
+        set_up_triangles(r, {ax, ay, az}, scaled, m, [&](int axis, const std::array<double, 3>&) {
+            return inv[static_cast<std::size_t>(axis)];
+        });
+    } else if constexpr (kParts == Parts::BoxesFirst) {
+        set_up_boxes(r, d, scaled, m);
+        r.size = m;
+        r.shrink = shrink;
     } else {
         // The voxel methods' set-up keeps its branches: without them their camera rays ran
         // 2-3 % slower and their random rays no faster (docs/lab/axes-2026-12-06.md).
@@ -122,16 +144,31 @@ inline void set_up(FloatRay& r, const Ray& ray, double scene_scale) {
         const double inverse_kz = 1.0 / scaled[r.kz];
         r.shear_x = static_cast<float>(scaled[r.kx] * inverse_kz);
         r.shear_y = static_cast<float>(scaled[r.ky] * inverse_kz);
+        const double eps = 0x1p-20 * m;
+        r.edge_margin_linear = bound_up(8.0 * eps);
+        r.edge_margin_constant = bound_up(8.0 * eps * eps);
     }
-    const double eps = 0x1p-20 * m;
-    r.edge_margin_linear = bound_up(8.0 * eps);
-    r.edge_margin_constant = bound_up(8.0 * eps * eps);
 }
 
 }  // namespace float_ray_detail
 
 inline FloatRay::FloatRay(const Ray& ray, double scene_scale) {
-    float_ray_detail::set_up<true>(*this, ray, scene_scale);
+    float_ray_detail::set_up<float_ray_detail::Parts::Both>(*this, ray, scene_scale);
+}
+
+inline FloatRay::FloatRay(const Ray& ray, double scene_scale, BoxesFirst) {
+    float_ray_detail::set_up<float_ray_detail::Parts::BoxesFirst>(*this, ray, scene_scale);
+}
+
+inline void FloatRay::set_up_triangles(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    // The same values as the full set-up's: d times the same power of two, and its reciprocal on
+    // kz by the same division (unclamped there too: its magnitude is in [1, 2)).
+    float_ray_detail::set_up_triangles(*this, {std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)},
+                                       d * shrink, size,
+                                       [](int axis, const std::array<double, 3>& along) {
+                                           return 1.0 / along[static_cast<std::size_t>(axis)];
+                                       });
 }
 
 }  // namespace rt
