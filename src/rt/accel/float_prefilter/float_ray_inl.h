@@ -79,6 +79,13 @@ inline std::array<double, 3> set_up_boxes(FloatRay& r, const Vec3& d, const Vec3
     return inv;
 }
 
+// The triangle pre-filter's edge margins, from m (the scene's scale plus the origin's size).
+inline void set_up_edge_margins(FloatRay& r, double m) {
+    const double eps = 0x1p-20 * m;
+    r.edge_margin_linear = bound_up(8.0 * eps);
+    r.edge_margin_constant = bound_up(8.0 * eps * eps);
+}
+
 // The triangle pre-filter's axes and shears, given |d| per axis (`magnitude`), d scaled as above
 // and the reciprocal of its component on kz, and its edge margins from m. |scaled[kz]| is in
 // [1, 2), so that reciprocal needs no clamp (the voxel methods' set-up takes it unclamped: the
@@ -94,14 +101,12 @@ inline void set_up_triangles(FloatRay& r, const Vec3& magnitude, const Vec3& sca
     const double inverse_kz = inverse_on(kz, along);
     r.shear_x = static_cast<float>(along[static_cast<std::size_t>(kx)] * inverse_kz);
     r.shear_y = static_cast<float>(along[static_cast<std::size_t>(ky)] * inverse_kz);
-    const double eps = 0x1p-20 * m;
-    r.edge_margin_linear = bound_up(8.0 * eps);
-    r.edge_margin_constant = bound_up(8.0 * eps * eps);
+    set_up_edge_margins(r, m);
 }
 
-// The set-up: the box tests' values and the triangle pre-filter's (kBoxes, the BVH's full one,
-// which reuses its reciprocal on kz for the shears), the box tests' alone (BoxesFirst: the
-// triangles' wait for FloatRay::set_up_triangles), or the triangle pre-filter's alone.
+// The set-up: the box tests' values and the triangle pre-filter's (Both, the full one, which
+// reuses its reciprocal on kz for the shears), the box tests' alone (BoxesFirst: the triangles'
+// wait for FloatRay::set_up_triangles), or the triangle pre-filter's alone (the voxel methods').
 enum class Parts { Both, BoxesFirst, TrianglesOnly };
 
 template <Parts kParts>
@@ -144,9 +149,7 @@ inline void set_up(FloatRay& r, const Ray& ray, double scene_scale) {
         const double inverse_kz = 1.0 / scaled[r.kz];
         r.shear_x = static_cast<float>(scaled[r.kx] * inverse_kz);
         r.shear_y = static_cast<float>(scaled[r.ky] * inverse_kz);
-        const double eps = 0x1p-20 * m;
-        r.edge_margin_linear = bound_up(8.0 * eps);
-        r.edge_margin_constant = bound_up(8.0 * eps * eps);
+        set_up_edge_margins(r, m);
     }
 }
 
