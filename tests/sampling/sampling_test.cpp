@@ -1,5 +1,6 @@
 // Counter-based random numbers, strata, and the chi-square rule (directions_test.cpp has the
 // cone and hemisphere directions).
+#include <array>
 #include <cmath>
 #include <set>
 
@@ -72,6 +73,31 @@ TEST(ProgressiveStrata, VisitsEveryStratumOnceAndSpreadsEveryPrefix) {
     EXPECT_EQ(first_quadrants.size(), 4U);  // the first four samples: one per quadrant
     const ProgressiveStrata odd(3, 2);
     EXPECT_EQ(odd.size(), 6U);
+}
+
+// Where n is a power of two, point() multiplies by 1 / n instead of dividing: the same bits,
+// which keeps every picture as it was. Elsewhere it divides.
+TEST(ProgressiveStrata, PointsAreTheQuotientsBitForBit) {
+    const std::array<std::pair<int, int>, 5> sizes{{{4, 4}, {8, 2}, {1, 16}, {3, 3}, {5, 4}}};
+    SampleStream stream(3, 1, 2, 0);
+    for (const auto& [nx, ny] : sizes) {
+        const ProgressiveStrata strata(nx, ny);
+        for (int trial = 0; trial < 2000; ++trial) {
+            const auto k = static_cast<std::uint32_t>(trial) % strata.size();
+            // Jitters with every bit set as well as the stream's.
+            const double u1 = trial == 0 ? std::nextafter(1.0, 0.0) : stream.uniform();
+            const double u2 = trial == 1 ? std::nextafter(1.0, 0.0) : stream.uniform();
+            double x = 0.0;
+            double y = 0.0;
+            strata.point(k, u1, u2, x, y);
+            // The stratum's corner, from its point for a zero jitter.
+            double i = 0.0;
+            double j = 0.0;
+            strata.point(k, 0.0, 0.0, i, j);
+            ASSERT_EQ(x, (i * nx + u1) / nx) << nx << " x " << ny << ", trial " << trial;
+            ASSERT_EQ(y, (j * ny + u2) / ny) << nx << " x " << ny << ", trial " << trial;
+        }
+    }
 }
 
 TEST(ChiSquare, CdfMatchesTables) {

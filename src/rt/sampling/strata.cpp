@@ -1,6 +1,7 @@
 #include "rt/sampling/strata.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace rt {
 
@@ -24,7 +25,14 @@ std::uint64_t spread_key(std::uint32_t i, std::uint32_t j) {
 }  // namespace
 
 ProgressiveStrata::ProgressiveStrata(int nx, int ny)
-    : nx_(std::max(1, nx)), ny_(std::max(1, ny)), nx_real_(nx_), ny_real_(ny_) {
+    : nx_(std::max(1, nx)),
+      ny_(std::max(1, ny)),
+      nx_real_(nx_),
+      ny_real_(ny_),
+      inverse_nx_(1.0 / nx_real_),
+      inverse_ny_(1.0 / ny_real_),
+      powers_of_two_(std::has_single_bit(static_cast<unsigned>(nx_)) &&
+                     std::has_single_bit(static_cast<unsigned>(ny_))) {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
     for (int j = 0; j < ny_; ++j) {
         for (int i = 0; i < nx_; ++i) {
@@ -37,16 +45,10 @@ ProgressiveStrata::ProgressiveStrata(int nx, int ny)
     order_.reserve(keyed.size());
     for (const auto& entry : keyed) {
         const std::uint32_t stratum = entry.second;
-        order_.push_back({static_cast<double>(stratum % static_cast<std::uint32_t>(nx_)),
-                          static_cast<double>(stratum / static_cast<std::uint32_t>(nx_))});
+        const std::uint32_t column = stratum % static_cast<std::uint32_t>(nx_);
+        const std::uint32_t row = stratum / static_cast<std::uint32_t>(nx_);  // whole rows
+        order_.push_back({static_cast<double>(column), static_cast<double>(row)});
     }
-}
-
-void ProgressiveStrata::point(std::uint32_t index, double u1, double u2, double& x,
-                              double& y) const {
-    const Corner& corner = order_[index < order_.size() ? index : index % order_.size()];
-    x = (corner.i + u1) / nx_real_;
-    y = (corner.j + u2) / ny_real_;
 }
 
 }  // namespace rt
