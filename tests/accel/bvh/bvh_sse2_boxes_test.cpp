@@ -113,5 +113,46 @@ TEST(BvhSse2Boxes, ConservativeAgainstTheExactSlabTest) {
     EXPECT_GT(clear_misses, 2000);
 }
 
+// The tightest case for the margins: the line through a box's corner, from origins at the far side
+// of the scene and beyond it, where a plane's t is largest against the margin. The test widens its
+// interval by slab_margin alone, which covers the relative rounding of t (float_ray.cpp, part 2):
+// the corner's box is kept, entered no later than the exact slab test says, and left no earlier.
+TEST(BvhSse2Boxes, KeepsTheBoxWhoseCornerTheLineGrazesFarAway) {
+    std::mt19937 rng(77);
+    int kept = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const WideNode node = random_node(rng);
+        const int aimed = static_cast<int>(rng() % 7);
+        const float reach = trial % 2 == 0 ? 14.0f : 1000.0f;
+        const Vec3 origin{uniform(rng, -reach, reach), uniform(rng, -reach, reach),
+                          uniform(rng, -reach, reach)};
+        Vec3 corner;
+        for (int k = 0; k < 3; ++k) {
+            corner[k] = (rng() & 1U) != 0 ? node.lo[k][aimed] : node.hi[k][aimed];
+        }
+        const Vec3 direction = corner - origin;
+        if (length(direction) < 0.05) {
+            continue;
+        }
+        const Ray ray{origin, normalize(direction)};
+        const FloatRay fray(ray, kSceneScale);
+        ASSERT_TRUE(fray.usable);
+        const Slab s = exact_slab(node, aimed, ray);
+        if (!(s.enter <= s.exit && s.exit >= 0.0)) {
+            continue;  // the corner is behind the origin, or rounding put the line just outside
+        }
+        // The interval ends exactly where the line meets the corner.
+        const double t_corner = length(direction);
+        const BoxRay box_ray(fray);
+        WideHits out;
+        test_wide_boxes_sse2(node, box_ray, simd::Float4::broadcast(fray.scaled_down(t_corner)),
+                             simd::Float4::broadcast(fray.scaled_up(t_corner)), out);
+        ASSERT_TRUE((out.mask >> aimed & 1) != 0) << "trial " << trial;
+        EXPECT_LE(out.entry[aimed], s.enter * fray.scale_t) << "trial " << trial;
+        ++kept;
+    }
+    EXPECT_GT(kept, 10000);
+}
+
 }  // namespace
 }  // namespace rt::bvh

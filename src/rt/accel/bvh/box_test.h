@@ -101,9 +101,8 @@ inline void test_wide_boxes_sse2(const WideNode& node, const BoxRay& ray, simd::
             entry = max(near_t(k), entry);
             exit = min(far_t(k), exit);
         }
-        const Float4 slack = Float4::broadcast(kRelativeSlack);
-        entry = entry - abs(entry) * slack;
-        exit = exit + abs(exit) * slack;
+        // No relative widening: a plane's t is at most m |inverse| in size, so its relative
+        // rounding is inside slab_margin already (float_ray.cpp, part 2).
         const simd::Mask4 hit = (entry <= exit) & (entry <= t_max) & (exit >= t_min);
         out.mask |= hit.bits() << (4 * half);
         entry.store(out.entry + std::ptrdiff_t{4} * half);

@@ -284,10 +284,8 @@ RT_INLINE_IN_AVX2_BUILDS __attribute__((target("avx2"))) void test_wide_boxes_av
         entry = _mm256_max_ps(near_t, entry);
         exit = _mm256_min_ps(far_t, exit);
     }
-    const __m256 slack = _mm256_set1_ps(kRelativeSlack);
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    entry = fused::sub_mul(entry, _mm256_andnot_ps(sign, entry), slack);
-    exit = fused::mul_add(_mm256_andnot_ps(sign, exit), slack, exit);
+    // No relative widening, as in the SSE2 form: it was two steps on the chain from a node's
+    // load to the child the ray goes to next.
     const __m256 hit =
         _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(entry, exit, _CMP_LE_OQ),
                                     _mm256_cmp_ps(entry, _mm256_set1_ps(t_max), _CMP_LE_OQ)),

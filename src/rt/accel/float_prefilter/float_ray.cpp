@@ -34,8 +34,14 @@
 //      the real t -+ slab_margin by at most 3u |t| + u |O| |1/D'| (relative roundings, and the
 //      origin's rounding divided by D').
 //    slab_margin[k] = 2^-20 m |inverse[k]| = 16u m |inverse[k]| covers the 3u m |1/D'| and the
-//    2^-27 m of part 1 five times over; the 3u |t| is covered by widening the final interval by
-//    kRelativeSlack |t|. A zero direction component is clamped to 2^-60 times the largest: the
+//    2^-27 m of part 1 (u/8 m |1/D'| in t) five times over. The relative 3u |t| is bounded by
+//    the same measure: a plane is within S of the origin of coordinates and the ray's origin
+//    within |O|, so a plane's |t| = |p - O| |1/D'| <= m |1/D'| (an empty slot's infinite plane
+//    gives an infinite t, no NaN, as the inverse is never zero). In the ray's own test the whole
+//    error, 6u m |1/D'|, and part 1's distance are so covered by slab_margin alone, two and a half
+//    times over, and nothing more widens its interval (two steps fewer on the chain from a node
+//    to the next). The packet's tests widen their final interval by kRelativeSlack |t| as well.
+//    A zero direction component is clamped to 2^-60 times the largest: the
 //    pretend ray drifts by 2^-60 t, below 2^-57 m for any t at which it is still within the
 //    scene, far inside the margin (and p * inverse stays below 2^100, a finite float). The
 //    interval, so widened, holds the scaled t of every hit the exact test can find in the box,
