@@ -10,62 +10,24 @@
 
 #include <gtest/gtest.h>
 
+#include "accel/bvh/random_wide_node.h"
+
 namespace rt::bvh {
 namespace {
 
+using test::exact_slab;
+using test::random_wide_node;
+using test::Slab;
+using test::uniform;
+
 constexpr double kSceneScale = 16.0;
-
-struct Slab {
-    double enter = -std::numeric_limits<double>::infinity();
-    double exit = std::numeric_limits<double>::infinity();
-};
-
-// Where the line origin + t * direction is inside the box, in double.
-Slab exact_slab(const WideNode& node, int child, const Ray& ray) {
-    Slab s;
-    for (int k = 0; k < 3; ++k) {
-        const double lo = node.lo[k][child];
-        const double hi = node.hi[k][child];
-        const double o = ray.origin[k];
-        const double d = ray.direction[k];
-        const double a = (lo - o) / d;
-        const double b = (hi - o) / d;
-        s.enter = std::max(s.enter, std::min(a, b));
-        s.exit = std::min(s.exit, std::max(a, b));
-    }
-    return s;
-}
-
-float uniform(std::mt19937& rng, float lo, float hi) {
-    return std::uniform_real_distribution<float>(lo, hi)(rng);
-}
-
-// Eight boxes in [-10, 10]^3 of sides from 0.01 to 8, the last slot empty as the builder leaves it.
-WideNode random_node(std::mt19937& rng) {
-    WideNode node{};
-    for (int c = 0; c < 8; ++c) {
-        for (int k = 0; k < 3; ++k) {
-            const float size = std::pow(10.0f, uniform(rng, -2.0f, 0.9f));
-            const float lo = uniform(rng, -10.0f, 10.0f - size);
-            node.lo[k][c] = lo;
-            node.hi[k][c] = lo + size;
-        }
-        node.child[c] = static_cast<std::uint32_t>(c);
-    }
-    for (int k = 0; k < 3; ++k) {
-        node.lo[k][7] = std::numeric_limits<float>::infinity();
-        node.hi[k][7] = -std::numeric_limits<float>::infinity();
-    }
-    node.child[7] = kNoChild;
-    return node;
-}
 
 TEST(BvhSse2Boxes, ConservativeAgainstTheExactSlabTest) {
     std::mt19937 rng(2024);
     int hits = 0;
     int clear_misses = 0;
     for (int trial = 0; trial < 4000; ++trial) {
-        const WideNode node = random_node(rng);
+        const WideNode node = random_wide_node(rng);
         const Vec3 origin{uniform(rng, -14, 14), uniform(rng, -14, 14), uniform(rng, -14, 14)};
         // Most rays aim at a point of one of the boxes, so that many boxes are met.
         const int aimed = static_cast<int>(rng() % 9);
@@ -121,7 +83,7 @@ TEST(BvhSse2Boxes, KeepsTheBoxWhoseCornerTheLineGrazesFarAway) {
     std::mt19937 rng(77);
     int kept = 0;
     for (int trial = 0; trial < 20000; ++trial) {
-        const WideNode node = random_node(rng);
+        const WideNode node = random_wide_node(rng);
         const int aimed = static_cast<int>(rng() % 7);
         const float reach = trial % 2 == 0 ? 14.0f : 1000.0f;
         const Vec3 origin{uniform(rng, -reach, reach), uniform(rng, -reach, reach),

@@ -95,7 +95,7 @@ __attribute__((target("avx2"))) inline void bound_packet(const PacketValues& v, 
 
 // The children some lane of the packet may meet: bit c clear only when every lane's own test
 // (test_children) rejects child c. Each step of a lane's test is monotone in each operand
-// (correctly rounded operations are; the slack multiplies by a power of two, exactly), so its
+// (correctly rounded operations are), so its
 // entry is at least this entry, taken with the operands' bounds, and its exit at most this exit.
 // A NaN bound keeps the child.
 __attribute__((target("avx2"))) inline std::uint32_t children_packet_may_meet(
@@ -125,10 +125,6 @@ __attribute__((target("avx2"))) inline std::uint32_t children_packet_may_meet(
         entry = _mm256_max_ps(_mm256_sub_ps(near_low, margin), entry);
         exit = _mm256_min_ps(_mm256_add_ps(far_high, margin), exit);
     }
-    const __m256 slack = _mm256_set1_ps(rt::kRelativeSlack);
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
-    exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
     const __m256 rejected =
         _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(entry, exit, _CMP_GT_OQ),
                                   _mm256_cmp_ps(entry, _mm256_set1_ps(b.t_max), _CMP_GT_OQ)),
@@ -154,8 +150,6 @@ __attribute__((target("avx2"))) inline int test_children(const WideNode& node,
                                                          const PacketValues& v,
                                                          std::uint32_t active,
                                                          std::uint32_t children, ChildHits* out) {
-    const __m256 slack = _mm256_set1_ps(rt::kRelativeSlack);
-    const __m256 sign = _mm256_set1_ps(-0.0f);
     const __m256 t_min = _mm256_load_ps(v.t_min);
     const __m256 t_max = _mm256_load_ps(v.t_max);
     __m256 origin[3];
@@ -186,8 +180,6 @@ __attribute__((target("avx2"))) inline int test_children(const WideNode& node,
             exit =
                 _mm256_min_ps(_mm256_add_ps(_mm256_mul_ps(far_side, inverse[k]), margin[k]), exit);
         }
-        entry = _mm256_sub_ps(entry, _mm256_mul_ps(_mm256_andnot_ps(sign, entry), slack));
-        exit = _mm256_add_ps(exit, _mm256_mul_ps(_mm256_andnot_ps(sign, exit), slack));
         const __m256 hit = _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(entry, exit, _CMP_LE_OQ),
                                                        _mm256_cmp_ps(entry, t_max, _CMP_LE_OQ)),
                                          _mm256_cmp_ps(exit, t_min, _CMP_GE_OQ));

@@ -37,14 +37,13 @@
 //    2^-27 m of part 1 (u/8 m |1/D'| in t) five times over. The relative 3u |t| is bounded by
 //    the same measure: a plane is within S of the origin of coordinates and the ray's origin
 //    within |O|, so a plane's |t| = |p - O| |1/D'| <= m |1/D'| (an empty slot's infinite plane
-//    gives an infinite t, no NaN, as the inverse is never zero). In the ray's own test the whole
-//    error, 6u m |1/D'|, and part 1's distance are so covered by slab_margin alone, two and a half
-//    times over, and nothing more widens its interval (two steps fewer on the chain from a node
-//    to the next). The packet's tests widen their final interval by kRelativeSlack |t| as well.
-//    A zero direction component is clamped to 2^-60 times the largest: the
-//    pretend ray drifts by 2^-60 t, below 2^-57 m for any t at which it is still within the
-//    scene, far inside the margin (and p * inverse stays below 2^100, a finite float). The
-//    interval, so widened, holds the scaled t of every hit the exact test can find in the box,
+//    gives an infinite t, no NaN, as the inverse is never zero). So the whole error, 6u m |1/D'| in
+//    the ray's own test and 4u m |1/D'| in a packet's, and part 1's distance are covered by
+//    slab_margin alone, at least two and a half times over, and nothing more widens the interval
+//    (two steps fewer on the chain from a node to the next). A zero direction component is
+//    clamped to 2^-60 times the largest: the pretend ray drifts by 2^-60 t, below 2^-57 m for any
+//    t at which it is still within the scene, far inside the margin (and p * inverse stays below
+//    2^100, a finite float). The interval, so widened, holds the scaled t of every hit the exact test can find in the box,
 //    and t_min and t_max are rounded outward (scaled_down, scaled_up) before they are compared.
 //
 // 3. Triangle pre-filter. The float projection of a corner (stored rounded to nearest) differs
