@@ -2,8 +2,6 @@
 // machine's renders may never run it), against the slab test in double: it never rejects a box the
 // ray's line meets within the t interval, rejects boxes clearly missed, never enters an empty
 // slot, and reports entries no later than the exact ones.
-#include <cmath>
-#include <limits>
 #include <random>
 
 #include "rt/accel/bvh/box_test.h"

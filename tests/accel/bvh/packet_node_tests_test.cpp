@@ -8,6 +8,7 @@
 #include "rt/accel/bvh/packet_node_tests.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <random>
 

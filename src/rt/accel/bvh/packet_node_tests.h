@@ -95,9 +95,8 @@ __attribute__((target("avx2"))) inline void bound_packet(const PacketValues& v, 
 
 // The children some lane of the packet may meet: bit c clear only when every lane's own test
 // (test_children) rejects child c. Each step of a lane's test is monotone in each operand
-// (correctly rounded operations are), so its
-// entry is at least this entry, taken with the operands' bounds, and its exit at most this exit.
-// A NaN bound keeps the child.
+// (correctly rounded operations are), so its entry is at least this entry, taken with the
+// operands' bounds, and its exit at most this exit. A NaN bound keeps the child.
 __attribute__((target("avx2"))) inline std::uint32_t children_packet_may_meet(
     const WideNode& node, const PacketBounds& b) {
     __m256 entry = _mm256_set1_ps(-HUGE_VALF);

@@ -43,8 +43,9 @@
 //    (two steps fewer on the chain from a node to the next). A zero direction component is
 //    clamped to 2^-60 times the largest: the pretend ray drifts by 2^-60 t, below 2^-57 m for any
 //    t at which it is still within the scene, far inside the margin (and p * inverse stays below
-//    2^100, a finite float). The interval, so widened, holds the scaled t of every hit the exact test can find in the box,
-//    and t_min and t_max are rounded outward (scaled_down, scaled_up) before they are compared.
+//    2^100, a finite float). The interval, so taken, holds the scaled t of every hit the exact
+//    test can find in the box, and t_min and t_max are rounded outward (scaled_down, scaled_up)
+//    before they are compared.
 //
 // 3. Triangle pre-filter. The float projection of a corner (stored rounded to nearest) differs
 //    from the double one by at most eps = 2^-20 m (about 8u m: the corner's and origin's
