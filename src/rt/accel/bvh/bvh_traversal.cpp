@@ -220,24 +220,49 @@ template <bool kAvx2>
         }
     }
 #endif
+    // Two and three children without loops, whose exits the predictor misses as the count
+    // changes from node to node. Adjacent compare-exchanges sort stably, as the insertion sort.
+    {
+        int rest = bits;
+        const int k0 = std::countr_zero(static_cast<unsigned>(rest));
+        rest &= rest - 1;
+        const int k1 = std::countr_zero(static_cast<unsigned>(rest));
+        rest &= rest - 1;
+        StackEntry a{node.child[k0], hits.entry[k0]};
+        StackEntry b{node.child[k1], hits.entry[k1]};
+        if (rest == 0) {
+            order_pair(a, b);
+            bvh::prefetch_child(tree, b.child);
+            stack[size++] = b;
+            return a.child;
+        }
+        if ((rest & (rest - 1)) == 0) {
+            const int k2 = std::countr_zero(static_cast<unsigned>(rest));
+            StackEntry c{node.child[k2], hits.entry[k2]};
+            order_pair(a, b);
+            order_pair(b, c);
+            order_pair(a, b);
+            bvh::prefetch_child(tree, c.child);
+            stack[size++] = c;
+            bvh::prefetch_child(tree, b.child);
+            stack[size++] = b;
+            return a.child;
+        }
+    }
     std::array<StackEntry, 8> c;  // NOLINT(cppcoreguidelines-pro-type-member-init): filled below
     int count = 0;
     for (; bits != 0; bits &= bits - 1) {
         const int k = std::countr_zero(static_cast<unsigned>(bits));
         c[count++] = {node.child[k], hits.entry[k]};
     }
-    if (count == 2) {
-        order_pair(c[0], c[1]);
-    } else {
-        // Insertion sort: at most eight, usually two to four.
-        for (int i = 1; i < count; ++i) {
-            const StackEntry x = c[i];
-            int j = i;
-            for (; j > 0 && x.entry < c[j - 1].entry; --j) {
-                c[j] = c[j - 1];
-            }
-            c[j] = x;
+    // Insertion sort of four to eight (without AVX2; with it, descend_sorted takes them).
+    for (int i = 1; i < count; ++i) {
+        const StackEntry x = c[i];
+        int j = i;
+        for (; j > 0 && x.entry < c[j - 1].entry; --j) {
+            c[j] = c[j - 1];
         }
+        c[j] = x;
     }
     for (int i = count - 1; i > 0; --i) {
         bvh::prefetch_child(tree, c[i].child);
