@@ -14,6 +14,8 @@ namespace rt::bvh {
 namespace {
 
 using test::exact_slab;
+using test::random_corner;
+using test::random_point;
 using test::random_wide_node;
 using test::Slab;
 using test::uniform;
@@ -84,12 +86,8 @@ TEST(BvhSse2Boxes, KeepsTheBoxWhoseCornerTheLineGrazesFarAway) {
         const WideNode node = random_wide_node(rng);
         const int aimed = static_cast<int>(rng() % 7);
         const float reach = trial % 2 == 0 ? 14.0f : 1000.0f;
-        const Vec3 origin{uniform(rng, -reach, reach), uniform(rng, -reach, reach),
-                          uniform(rng, -reach, reach)};
-        Vec3 corner;
-        for (int k = 0; k < 3; ++k) {
-            corner[k] = (rng() & 1U) != 0 ? node.lo[k][aimed] : node.hi[k][aimed];
-        }
+        const Vec3 origin = random_point(rng, reach);
+        const Vec3 corner = random_corner(rng, node, aimed);
         const Vec3 direction = corner - origin;
         if (length(direction) < 0.05) {
             continue;

@@ -20,8 +20,9 @@ namespace rt::bvh::packet {
 namespace {
 
 using test::exact_slab;
+using test::random_corner;
+using test::random_point;
 using test::random_wide_node;
-using test::uniform;
 
 constexpr double kSceneScale = 16.0;
 
@@ -37,13 +38,8 @@ __attribute__((target("avx2"))) void check_packet(std::mt19937& rng, const WideN
                                                   Tally& tally) {
     RayPacket packet;
     for (int lane = 0; lane < kPacketSize; ++lane) {
-        const Vec3 origin =
-            centre + Vec3{uniform(rng, -spread, spread), uniform(rng, -spread, spread),
-                          uniform(rng, -spread, spread)};
-        Vec3 corner;
-        for (int k = 0; k < 3; ++k) {
-            corner[k] = (rng() & 1U) != 0 ? node.lo[k][aimed] : node.hi[k][aimed];
-        }
+        const Vec3 origin = centre + random_point(rng, spread);
+        const Vec3 corner = random_corner(rng, node, aimed);
         packet.rays[lane] = Ray{origin, normalize(corner - origin)};
         // Half the lanes' intervals end exactly where the line meets the corner.
         const double reach = lane % 2 == 0 ? length(corner - origin) : 1e30;
@@ -106,8 +102,7 @@ TEST(PacketNodeTests, KeepEveryBoxWhoseCornerALaneGrazes) {
         const int aimed = static_cast<int>(rng() % 7);
         // Coherent packets from inside and far outside the scene, and scattered ones.
         const float reach = trial % 3 == 0 ? 14.0f : 1000.0f;
-        const Vec3 centre{uniform(rng, -reach, reach), uniform(rng, -reach, reach),
-                          uniform(rng, -reach, reach)};
+        const Vec3 centre = random_point(rng, reach);
         const float spread = trial % 4 == 0 ? 0.0f : trial % 2 == 0 ? 0.01f : 2.0f;
         check_packet(rng, node, aimed, centre, spread, tally);
     }

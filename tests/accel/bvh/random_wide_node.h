@@ -37,6 +37,23 @@ inline WideNode random_wide_node(std::mt19937& rng) {
     return node;
 }
 
+/// One of the eight corners of box `child`, drawn at random.
+inline Vec3 random_corner(std::mt19937& rng, const WideNode& node, int child) {
+    Vec3 corner;
+    for (int k = 0; k < 3; ++k) {
+        corner[k] = (rng() & 1U) != 0 ? node.lo[k][child] : node.hi[k][child];
+    }
+    return corner;
+}
+
+/// A point drawn uniformly in [-reach, reach]^3.
+inline Vec3 random_point(std::mt19937& rng, float reach) {
+    const float x = uniform(rng, -reach, reach);
+    const float y = uniform(rng, -reach, reach);
+    const float z = uniform(rng, -reach, reach);
+    return {x, y, z};
+}
+
 struct Slab {
     double enter = -std::numeric_limits<double>::infinity();
     double exit = std::numeric_limits<double>::infinity();
