@@ -63,6 +63,8 @@ TEST(TreeCost, SharesOfTheRootsSurface) {
     EXPECT_DOUBLE_EQ(cost.total_in_pairs(), 2.95);
     EXPECT_EQ(cost.leaf_count, 3u);
     EXPECT_DOUBLE_EQ(cost.fill, 4.0 / 16.0);
+    // The leaves' shares alone, whatever their packets: 1 + 0.2 + 0.15.
+    EXPECT_DOUBLE_EQ(leaves_a_line_crosses(tree), 1.35);
 }
 
 TEST(TreeCost, NoTreeCostsNothingAndALeafItsPackets) {
@@ -77,6 +79,8 @@ TEST(TreeCost, NoTreeCostsNothingAndALeafItsPackets) {
     EXPECT_EQ(tree_cost(leaf).leaves, 3.0);
     EXPECT_EQ(tree_cost(leaf).leaf_pairs, 2.0);
     EXPECT_EQ(tree_cost(leaf).leaf_count, 1u);
+    EXPECT_EQ(leaves_a_line_crosses(empty), 0.0);
+    EXPECT_EQ(leaves_a_line_crosses(leaf), 1.0);
 }
 
 TEST(TreeCost, TheLabsMeshesCostNoMoreThanWhenMeasured) {
@@ -92,6 +96,19 @@ TEST(TreeCost, TheLabsMeshesCostNoMoreThanWhenMeasured) {
     EXPECT_LE(soup.total(), 35.40 * 1.01);
     EXPECT_LE(sphere.total_in_pairs(), 10.39 * 1.01);
     EXPECT_LE(soup.total_in_pairs(), 26.56 * 1.01);
+}
+
+TEST(TreeCost, OnlyRaysThroughASurfaceAskForTheirFirstLeafsRecords) {
+    // A line crosses about two of a sphere's leaves, and the first a ray enters usually holds its
+    // hit; it crosses a dozen of the 10k soup's, where the records would be asked for in vain.
+    const Scene sphere_scene = test::make_tessellated_sphere(10000);
+    const Scene soup_scene = test::make_triangle_soup(10000);
+    const Bvh sphere(sphere_scene);
+    const Bvh soup(soup_scene);
+    EXPECT_LT(sphere.leaves_a_line_crosses(), 4.0);
+    EXPECT_TRUE(sphere.asks_first_leaf_records());
+    EXPECT_GT(soup.leaves_a_line_crosses(), 9.0);
+    EXPECT_FALSE(soup.asks_first_leaf_records());
 }
 
 }  // namespace

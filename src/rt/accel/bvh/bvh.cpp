@@ -6,11 +6,25 @@
 
 namespace rt {
 
+namespace {
+
+// Past this many leaves a line crosses, the first leaf's records are not asked for. A line
+// crosses 2.4-2.6 of the lab's spheres' leaves (their camera rays ran 4-13 % slower without the
+// records), 0.8 of twocubes', and 5.1, 11.2, 24.4 and 52.7 of the 1k, 10k, 100k and 1M soups'.
+constexpr double kFirstLeafRecordsMostLeaves = 8.0;
+
+}  // namespace
+
 Bvh::Bvh(const Scene& scene, const BvhSettings& settings) : scene_(scene) {
     bvh::PolygonReferences refs = bvh::make_polygon_references(scene, settings.build_threads);
     unbounded_ = std::move(refs.unbounded);
     tree_ = bvh::build_hierarchy(scene, refs, settings.build_threads);
     bvh::collapse_to_wide(tree_, settings.build_threads);
+    // The first leaf's polygon records are asked for on the bet that the first leaf a ray enters
+    // holds its hit: so it does on a surface, where a line crosses two or three leaves, but not
+    // where it crosses dozens, as in a soup of long triangles, and there the records' sixteen
+    // misses only hold up the walk's own (docs/lab/ray-cost-2026-12-08.md).
+    tree_.first_leaf_records = bvh::leaves_a_line_crosses(tree_) <= kFirstLeafRecordsMostLeaves;
 }
 
 std::size_t Bvh::memory_bytes() const {

@@ -38,6 +38,10 @@ public:
     std::size_t packet_count() const { return tree_.packets.size(); }
     /// The tree's expected cost in Embree's measure (tree_cost.h).
     bvh::TreeCost tree_cost() const { return bvh::tree_cost(tree_); }
+    /// How many leaves a line through the scene crosses on average (tree_cost.h), and whether a
+    /// single ray therefore asks for the polygon records of the first leaf it enters.
+    double leaves_a_line_crosses() const { return bvh::leaves_a_line_crosses(tree_); }
+    bool asks_first_leaf_records() const { return tree_.first_leaf_records; }
 
 private:
     const Scene& scene_;

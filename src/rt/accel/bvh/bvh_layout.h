@@ -74,6 +74,9 @@ struct Hierarchy {
     std::uint32_t root = kNoChild;  ///< a child word; kNoChild for an empty scene
     /// Largest |coordinate| of any (inflated) box: the scale the float error bounds are taken at.
     double scale = 0.0;
+    /// Whether a single ray asks for the polygon records of the first leaf it enters
+    /// (prefetch_child.h): only where a line crosses few leaves (Bvh's constructor).
+    bool first_leaf_records = true;
 };
 
 }  // namespace rt::bvh

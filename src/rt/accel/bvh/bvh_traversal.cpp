@@ -379,7 +379,9 @@ template <bool kAvx2, class Nearest>
         }
         if (child != bvh::kNoChild) {
             if (first_leaf) {
-                bvh::prefetch_leaf_polygons(tree, scene, child);
+                if (tree.first_leaf_records) {
+                    bvh::prefetch_leaf_polygons(tree, scene, child);
+                }
                 if (deferred != nullptr) {
                     fray.set_up_triangles(*deferred);
                 }

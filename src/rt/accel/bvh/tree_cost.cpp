@@ -35,7 +35,38 @@ std::size_t packets_of_leaf(const PacketArray& packets, std::uint32_t leaf) {
     }
 }
 
+// The half area of the root's box, its children's union, for a tree whose root is a node.
+double root_half_area(const Hierarchy& tree) {
+    const WideNode& root = tree.wide[tree.root];
+    Box root_box;
+    for (int c = 0; c < 8; ++c) {
+        if (root.child[c] != kNoChild) {
+            root_box.grow(child_box(root, c));
+        }
+    }
+    return root_box.half_area();
+}
+
 }  // namespace
+
+double leaves_a_line_crosses(const Hierarchy& tree) {
+    if (tree.root == kNoChild || is_leaf(tree.root)) {
+        return tree.root == kNoChild ? 0.0 : 1.0;
+    }
+    const double whole = root_half_area(tree);
+    if (!(whole > 0.0)) {
+        return 0.0;
+    }
+    double leaves = 0.0;
+    for (const WideNode& node : tree.wide) {
+        for (int c = 0; c < 8; ++c) {
+            if (node.child[c] != kNoChild && is_leaf(node.child[c])) {
+                leaves += child_box(node, c).half_area() / whole;
+            }
+        }
+    }
+    return leaves;
+}
 
 TreeCost tree_cost(const Hierarchy& tree) {
     TreeCost cost;
@@ -49,15 +80,7 @@ TreeCost tree_cost(const Hierarchy& tree) {
         cost.leaf_count = 1;
         return cost;
     }
-    // The root's box is its children's union.
-    const WideNode& root = tree.wide[tree.root];
-    Box root_box;
-    for (int c = 0; c < 8; ++c) {
-        if (root.child[c] != kNoChild) {
-            root_box.grow(child_box(root, c));
-        }
-    }
-    const double whole = root_box.half_area();
+    const double whole = root_half_area(tree);
     if (!(whole > 0.0)) {
         return cost;  // a flat or degenerate scene: no shares to take
     }

@@ -33,4 +33,10 @@ struct TreeCost {
 /// its packets.
 TreeCost tree_cost(const Hierarchy& tree);
 
+/// Of the collapsed tree: how many leaves a line through the root's box, in a uniformly random
+/// direction and place, crosses on average (each leaf's box surface over the root's). About two
+/// or three on a closed surface, dozens in a soup of long overlapping triangles. Reads the wide
+/// nodes alone, not the packets. Zero for an empty or flat tree, one for a tree that is one leaf.
+double leaves_a_line_crosses(const Hierarchy& tree);
+
 }  // namespace rt::bvh
