@@ -33,7 +33,8 @@ const Scene& soup() {
 std::vector<Ray> rays(const Scene& scene, bool leaving) {
     const auto [lo, hi] = scene.bounds();
     const Vec3 middle = (lo + hi) * 0.5;
-    const double size = length(hi - lo);
+    const Vec3 extent = hi - lo;
+    const double size = length(extent);
     std::mt19937_64 random(11);
     std::normal_distribution<double> normal;
     std::uniform_real_distribution<double> unit(-0.5, 0.5);
@@ -48,9 +49,8 @@ std::vector<Ray> rays(const Scene& scene, bool leaving) {
         if (leaving) {
             out.push_back({middle + out_of_middle * (3.0 * size), out_of_middle});
         } else {
-            const Vec3 inside =
-                middle + Vec3{(hi - lo).x * unit(random), (hi - lo).y * unit(random),
-                              (hi - lo).z * unit(random)};
+            const Vec3 inside = middle + Vec3{extent.x * unit(random), extent.y * unit(random),
+                                              extent.z * unit(random)};
             out.push_back({inside, out_of_middle});
         }
     }
